@@ -1,0 +1,41 @@
+"""The ``actors`` command line: ros2-style verbs, ``actors <group> <verb> ...``."""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Sequence
+
+from actors.errors import ActorsError
+
+__all__ = ["main"]
+
+# Each group module exposes ``register(subparsers)``, which adds its parser and
+# sets ``func(args) -> int | None`` on every verb.  Imports inside the verbs stay
+# lazy so that ``actors --help`` is quick.
+GROUPS = ("interface",)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The full argument parser, every group registered."""
+    parser = argparse.ArgumentParser(
+        prog="actors", description="ros2-style command line for actors graphs"
+    )
+    groups = parser.add_subparsers(dest="group", metavar="GROUP", required=True)
+    for group in GROUPS:
+        importlib.import_module(f"actors.cli.{group}").register(groups)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run one command; return its exit code (2 for misuse, with one line on stderr)."""
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return args.func(args) or 0
+    except ActorsError as exc:
+        print(f"actors: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        return 0

@@ -1,0 +1,1 @@
+"""Message, service and their generated Python types: ``interfaces.<pkg>.msg`` and ``.srv``."""
