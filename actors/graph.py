@@ -1,0 +1,134 @@
+"""The graph file (``graph.toml``): its schema, loading, and spawning its nodes.
+
+Every key is optional except each node's ``use``::
+
+    [runtime]
+    clock = "wall"            # or "virtual"
+    duration = 0.0            # seconds; 0 runs until stopped
+    log_level = "info"
+
+    [supervisor]
+    strategy = "one_for_one"  # one_for_all, rest_for_one
+    intensity = 3
+    period = 5.0
+    backoff = 0.1
+    max_backoff = 2.0
+
+    [[nodes]]
+    use = "nodes.talker:MinimalPublisher"
+    name = "talker"
+    namespace = ""
+    params = { }
+    remap = { topic = "chatter" }
+    restart = "transient"     # permanent, temporary
+
+Any error names the file, the key path and the problem, as one line.
+"""
+
+from __future__ import annotations
+
+import importlib
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+import msgspec
+
+from actors.config import load_toml
+from actors.errors import GraphFileError, InvalidNameError
+from actors.names import expand, normalize_namespace, validate_node_name
+from actors.node import Node
+from actors.supervisor import RestartType, Strategy, SupervisorPolicy
+
+__all__ = ["RuntimeSection", "SupervisorSection", "NodeEntry", "GraphFile", "load_graph", "import_node_class"]
+
+NonNegative = Annotated[float, msgspec.Meta(ge=0)]
+
+
+class RuntimeSection(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
+    """``[runtime]``: how the graph runs."""
+
+    clock: Literal["wall", "virtual"] = "wall"
+    duration: NonNegative = 0.0
+    log_level: Literal["debug", "info", "warn", "warning", "error", "fatal"] = "info"
+
+
+class SupervisorSection(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
+    """``[supervisor]``: restart strategy, intensity and backoff."""
+
+    strategy: Strategy = Strategy.ONE_FOR_ONE
+    intensity: Annotated[int, msgspec.Meta(ge=0)] = 3
+    period: Annotated[float, msgspec.Meta(gt=0)] = 5.0
+    backoff: NonNegative = 0.1
+    max_backoff: NonNegative = 2.0
+
+    def policy(self) -> SupervisorPolicy:
+        """These settings as the runtime's SupervisorPolicy."""
+        return SupervisorPolicy(**msgspec.structs.asdict(self))
+
+
+class NodeEntry(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
+    """``[[nodes]]``: one node to start."""
+
+    use: str
+    name: str | None = None
+    namespace: str = ""
+    params: dict[str, Any] = {}
+    remap: dict[str, str] = {}
+    restart: RestartType = RestartType.TRANSIENT
+
+
+class GraphFile(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
+    """A whole graph file."""
+
+    runtime: RuntimeSection = RuntimeSection()
+    supervisor: SupervisorSection = SupervisorSection()
+    nodes: list[NodeEntry] = []
+
+
+def import_node_class(use: str) -> type[Node]:
+    """Import ``"module:Class"`` and check it is a Node subclass; ValueError says why not."""
+    module_name, sep, attr = use.partition(":")
+    if not sep or not module_name or not attr:
+        raise ValueError(f"expected 'module:Class', got {use!r}")
+    try:
+        module = importlib.import_module(module_name)
+    except Exception as exc:  # an import error or whatever the module raised while importing
+        raise ValueError(f"cannot import {module_name!r}: {exc}") from None
+    cls = module
+    for part in attr.split("."):
+        cls = getattr(cls, part, None)
+        if cls is None:
+            raise ValueError(f"module {module_name!r} has no {attr!r}")
+    if not (isinstance(cls, type) and issubclass(cls, Node)):
+        raise ValueError(f"{use!r} is not a subclass of actors.Node")
+    return cls
+
+
+def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
+    """Load and check a graph file: schema, names, and that every ``use`` imports.
+
+    Returns the decoded file and the node classes, in file order.  Raises
+    GraphFileError naming the file, the key path and the problem.
+    """
+    graph = load_toml(path, GraphFile, GraphFileError)
+    classes = []
+    for i, entry in enumerate(graph.nodes):
+        key = f"nodes[{i}]"
+        try:
+            classes.append(import_node_class(entry.use))
+        except ValueError as exc:
+            raise GraphFileError(f"{path}: {key}.use: {exc}") from None
+        try:
+            if entry.name is not None:
+                validate_node_name(entry.name)
+            namespace = normalize_namespace(entry.namespace)
+        except InvalidNameError as exc:
+            field = "name" if entry.name is not None and "node name" in str(exc) else "namespace"
+            raise GraphFileError(f"{path}: {key}.{field}: {exc}") from None
+        for source, target in entry.remap.items():
+            try:
+                expand(source, namespace, entry.name or "node", what="remap source")
+                expand(target, namespace, entry.name or "node", what="remap target")
+            except InvalidNameError as exc:
+                raise GraphFileError(f"{path}: {key}.remap.{source}: {exc}") from None
+    return graph, classes

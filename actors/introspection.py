@@ -1,0 +1,115 @@
+"""A read-only view of a running graph: nodes, topics, endpoints, drop counts.
+
+The command line and ``doctor`` read the graph only through these frozen
+snapshots, which encode to msgpack as they are.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import msgspec
+
+from actors.topics import QoSProfile, type_name
+
+if TYPE_CHECKING:
+    from actors.runtime import Runtime
+    from actors.topics import Topic
+
+__all__ = ["EndpointInfo", "TopicInfo", "NodeInfo", "GraphView"]
+
+
+class EndpointInfo(msgspec.Struct, frozen=True, kw_only=True):
+    """A publisher or subscription: its node, type and QoS; for a subscription, its mailbox."""
+
+    node: str
+    type: str
+    qos: QoSProfile
+    queued: int = 0
+    dropped: int = 0
+
+
+class TopicInfo(msgspec.Struct, frozen=True, kw_only=True):
+    """A topic, its type and endpoints."""
+
+    name: str
+    type: str
+    publishers: tuple[EndpointInfo, ...]
+    subscriptions: tuple[EndpointInfo, ...]
+
+
+class NodeInfo(msgspec.Struct, frozen=True, kw_only=True):
+    """A node: full name, class, supervision state and what it uses."""
+
+    name: str
+    cls: str
+    state: str
+    restart: str
+    restarts: int
+    crashes: int
+    last_error: str | None
+    publishes: tuple[str, ...]
+    subscribes: tuple[str, ...]
+    timers: int
+
+
+class GraphView:
+    """Snapshots of a runtime's graph, made on request."""
+
+    __slots__ = ("_rt",)
+
+    def __init__(self, runtime: Runtime) -> None:
+        self._rt = runtime
+
+    def nodes(self) -> list[NodeInfo]:
+        """Every node of the graph, in start order, including those being restarted."""
+        infos = []
+        for child in self._rt.supervisor.children:
+            core = child.core
+            if core is None:
+                continue
+            infos.append(
+                NodeInfo(
+                    name=core.fqn,
+                    cls=f"{child.cls.__module__}:{child.cls.__qualname__}",
+                    state=child.state,
+                    restart=child.restart.value,
+                    restarts=child.restarts,
+                    crashes=child.crashes,
+                    last_error=child.last_error,
+                    publishes=tuple(sorted({p.topic_name for p in core.publishers})),
+                    subscribes=tuple(sorted({s.topic_name for s in core.subscriptions})),
+                    timers=sum(not t.is_canceled() for t in core.timers),
+                )
+            )
+        return infos
+
+    def topics(self) -> list[TopicInfo]:
+        """Every topic with its endpoints, sorted by name."""
+        return [self._topic_info(t) for _, t in sorted(self._rt.topics.topics.items())]
+
+    def topic(self, name: str) -> TopicInfo | None:
+        """One topic, or None."""
+        topic = self._rt.topics.topics.get(name)
+        return None if topic is None else self._topic_info(topic)
+
+    @staticmethod
+    def _topic_info(topic: Topic) -> TopicInfo:
+        return TopicInfo(
+            name=topic.name,
+            type=type_name(topic.msg_type),
+            publishers=tuple(
+                EndpointInfo(node=p.node.fqn, type=type_name(p.msg_type), qos=p.qos)
+                for p in topic.publishers
+            ),
+            subscriptions=tuple(
+                EndpointInfo(
+                    node=s.node.fqn,
+                    type=type_name(s.msg_type),
+                    qos=s.qos,
+                    queued=s.queued,
+                    dropped=s.dropped,
+                )
+                for s in topic.subscriptions
+            ),
+        )

@@ -1,0 +1,98 @@
+"""ROS 2 name rules: validating node names and namespaces, resolving topic and service names."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+
+from actors.errors import InvalidNameError
+
+__all__ = [
+    "validate_node_name",
+    "normalize_namespace",
+    "fully_qualified",
+    "expand",
+    "Resolver",
+]
+
+_NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
+_TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
+
+
+def validate_node_name(name: str) -> str:
+    """Return ``name`` if it is a valid ROS node name, else raise InvalidNameError."""
+    if not isinstance(name, str) or not _NODE_NAME.match(name):
+        raise InvalidNameError(
+            f"invalid node name {name!r}: use letters, digits and underscores, "
+            f"not starting with a digit"
+        )
+    return name
+
+
+def _check_absolute(name: str, what: str) -> str:
+    if name == "/":
+        return name
+    tokens = name[1:].split("/")
+    for token in tokens:
+        if not _TOKEN.match(token):
+            raise InvalidNameError(
+                f"invalid {what} {name!r}: each part between '/' must be letters, digits "
+                f"and underscores, not empty and not starting with a digit"
+            )
+    return name
+
+
+def normalize_namespace(namespace: str | None) -> str:
+    """``""``/``None`` -> ``"/"``; ``"robot1"`` -> ``"/robot1"``; validated, no trailing slash."""
+    if not namespace:
+        return "/"
+    if not namespace.startswith("/"):
+        namespace = "/" + namespace
+    if len(namespace) > 1 and namespace.endswith("/"):
+        namespace = namespace[:-1]
+    return _check_absolute(namespace, "namespace")
+
+
+def fully_qualified(namespace: str, name: str) -> str:
+    """The node's full name: ``/ns/name``."""
+    return f"/{name}" if namespace == "/" else f"{namespace}/{name}"
+
+
+def expand(name: str, namespace: str, node_name: str, *, what: str = "topic name") -> str:
+    """Expand a relative, absolute or ``~/private`` name to an absolute one, by ROS rules."""
+    if not isinstance(name, str) or not name:
+        raise InvalidNameError(f"invalid {what} {name!r}: it must not be empty")
+    if name == "~" or name.startswith("~/"):
+        full = fully_qualified(namespace, node_name) + name[1:]
+    elif name.startswith("/"):
+        full = name
+    else:
+        full = (namespace if namespace != "/" else "") + "/" + name
+    if full != "/" and full.endswith("/"):
+        raise InvalidNameError(f"invalid {what} {name!r}: it must not end with '/'")
+    return _check_absolute(full, what)
+
+
+class Resolver:
+    """Resolves one node's topic and service names: expansion, then remapping.
+
+    ``remap`` maps names (relative, absolute or private, expanded like the names
+    they match) to replacements, as ``--ros-args -r from:=to`` does.
+    """
+
+    __slots__ = ("namespace", "node_name", "_remap")
+
+    def __init__(self, namespace: str, node_name: str, remap: Mapping[str, str] | None) -> None:
+        self.namespace = namespace
+        self.node_name = node_name
+        self._remap = {
+            expand(src, namespace, node_name, what="remap source"): expand(
+                dst, namespace, node_name, what="remap target"
+            )
+            for src, dst in (remap or {}).items()
+        }
+
+    def resolve(self, name: str, *, what: str = "topic name") -> str:
+        """The absolute, remapped name for ``name``."""
+        full = expand(name, self.namespace, self.node_name, what=what)
+        return self._remap.get(full, full)

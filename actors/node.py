@@ -1,0 +1,329 @@
+"""Node: what user code subclasses, with rclpy's method names; NodeCore does the work.
+
+A node is created by a :class:`~actors.runtime.Runtime` (``rt.spawn(MyNode)``),
+never standalone: the runtime passes itself, the node's name, namespace,
+parameters and remappings through a scoped context variable that
+``Node.__init__`` reads.  The name given to ``super().__init__`` is the default
+that the graph or ``spawn(name=...)`` overrides.
+
+Everything a node owns lives on one attribute, ``self._core``, so that user
+subclasses may use any attribute name rclpy users are used to (``self.timer``,
+``self.publisher_``, ``self.i``...).
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import Callable, Mapping
+from contextvars import ContextVar
+from typing import TYPE_CHECKING, Any, TypeVar
+
+from actors.actor import Actor
+from actors.clock import Clock, Rate
+from actors.log import NodeLogger
+from actors.names import Resolver, fully_qualified, normalize_namespace, validate_node_name
+from actors.timers import Timer
+from actors.topics import Publisher, QoSProfile, Subscription, as_qos
+
+if TYPE_CHECKING:
+    from actors.runtime import Runtime
+    from actors.supervisor import Child
+
+__all__ = ["Node", "NodeCore"]
+
+T = TypeVar("T")
+
+
+class SpawnRequest:
+    """What the runtime hands to the node being constructed."""
+
+    __slots__ = ("runtime", "child")
+
+    def __init__(self, runtime: Runtime, child: Child) -> None:
+        self.runtime = runtime
+        self.child = child
+
+
+_spawning: ContextVar[SpawnRequest | None] = ContextVar("actors_spawning", default=None)
+
+
+class NodeCore:
+    """A node's name, actor, clock, logger and entities: everything behind ``Node``."""
+
+    def __init__(self, node: Node, request: SpawnRequest, default_name: str, namespace: str | None) -> None:
+        child = request.child
+        self.node = node
+        self.runtime = request.runtime
+        self.child = child
+        self.name = validate_node_name(child.name or default_name)
+        self.namespace = normalize_namespace(child.namespace if child.namespace is not None else namespace)
+        self.fqn = fully_qualified(self.namespace, self.name)
+        self.resolver = Resolver(self.namespace, self.name, child.remap)
+        self.loop: asyncio.AbstractEventLoop = self.runtime.loop
+        self.clock: Clock = self.runtime.clock
+        self.actor = Actor(self.loop)
+        self._logger: NodeLogger | None = None
+        self.publishers: list[Publisher] = []
+        self.subscriptions: list[Subscription] = []
+        self.timers: list[Timer] = []
+        self.destroyed = False
+        # Entities of the previous instance, taken over by name when this one recreates them.
+        self._inherited: dict[tuple[str, str], list[Any]] = child.take_inheritance()
+        self.runtime._register_node(self)
+
+    # -- entities -------------------------------------------------------------
+
+    def _take_inherited(self, kind: str, name: str, type_: type) -> Any:
+        olds = self._inherited.get((kind, name))
+        if olds:
+            old = olds[0]
+            if getattr(old, "msg_type", getattr(old, "srv_type", None)) is type_:
+                return olds.pop(0)
+        return None
+
+    def leftovers(self) -> list[Any]:
+        """Inherited entities the new instance did not recreate (to be destroyed)."""
+        rest = [e for olds in self._inherited.values() for e in olds]
+        self._inherited = {}
+        return rest
+
+    def create_publisher(self, msg_type: type, topic: str, qos: QoSProfile | int) -> Publisher:
+        """See :meth:`Node.create_publisher`."""
+        _check_type(msg_type, "create_publisher")
+        name = self.resolver.resolve(topic)
+        pub = Publisher(self, name, msg_type, as_qos(qos))
+        old = self._take_inherited("pub", name, msg_type)
+        if old is not None and old._history is not None and pub._history is not None:
+            pub._history.extend(old._history)
+        self.runtime.topics.add_publisher(pub)
+        if old is not None:
+            self.runtime.topics.remove_publisher(old)
+        self.publishers.append(pub)
+        return pub
+
+    def create_subscription(
+        self, msg_type: type, topic: str, callback: Callable[[Any], Any], qos: QoSProfile | int
+    ) -> Subscription:
+        """See :meth:`Node.create_subscription`."""
+        _check_type(msg_type, "create_subscription")
+        if not callable(callback):
+            raise TypeError(f"subscription callback must be callable, got {callback!r}")
+        name = self.resolver.resolve(topic)
+        sub = Subscription(self, name, msg_type, callback, as_qos(qos))
+        old = self._take_inherited("sub", name, msg_type)
+        if old is not None:
+            self.runtime.topics.replace_subscription(old, sub)
+            sub._adopt(old)
+        else:
+            self.runtime.topics.add_subscription(sub)
+        self.subscriptions.append(sub)
+        return sub
+
+    def create_timer(self, period: float, callback: Callable[[], Any]) -> Timer:
+        """See :meth:`Node.create_timer`."""
+        if not callable(callback):
+            raise TypeError(f"timer callback must be callable, got {callback!r}")
+        timer = Timer(self, period, callback)
+        self.timers.append(timer)
+        return timer
+
+    def destroy_publisher(self, pub: Publisher) -> None:
+        """Remove ``pub`` from this node and its topic."""
+        _remove(self.publishers, pub)
+        self.runtime.topics.remove_publisher(pub)
+
+    def destroy_subscription(self, sub: Subscription) -> None:
+        """Remove ``sub`` from this node and its topic; its queued messages are dropped."""
+        _remove(self.subscriptions, sub)
+        self.runtime.topics.remove_subscription(sub)
+
+    def destroy_timer(self, timer: Timer) -> None:
+        """Cancel ``timer`` and forget it."""
+        timer.cancel()
+        _remove(self.timers, timer)
+
+    # -- logging --------------------------------------------------------------
+
+    @property
+    def logger(self) -> NodeLogger:
+        """The node's logger, made on first use (idle nodes do not pay for one)."""
+        if self._logger is None:
+            self._logger = self.runtime.make_logger(self.fqn[1:].replace("/", "."))
+        return self._logger
+
+    # -- lifecycle ------------------------------------------------------------
+
+    def _stop_activity(self) -> None:
+        for timer in self.timers:
+            timer.cancel()
+        self.actor.stop()
+
+    def orphan(self) -> dict[tuple[str, str], list[Any]]:
+        """Stop this instance but keep its mailboxes attached, for a restarted instance to adopt."""
+        self._stop_activity()
+        self.destroyed = True
+        kept: dict[tuple[str, str], list[Any]] = {}
+        for kind, entities in (("pub", self.publishers), ("sub", self.subscriptions)):
+            for entity in entities:
+                kept.setdefault((kind, entity.topic_name), []).append(entity)
+        self.runtime._unregister_node(self)
+        return kept
+
+    def destroy(self) -> None:
+        """Stop this instance and remove every entity it has.  Idempotent."""
+        if self.destroyed:
+            return
+        self._stop_activity()
+        self.destroyed = True
+        for destroy_entity in self.destructors():
+            destroy_entity()
+        self.runtime._unregister_node(self)
+
+    def destructors(self) -> list[Callable[[], None]]:
+        """One call per entity that removes it from the runtime."""
+        topics = self.runtime.topics
+        calls: list[Callable[[], None]] = []
+        calls += [lambda p=p: topics.remove_publisher(p) for p in self.publishers]
+        calls += [lambda s=s: topics.remove_subscription(s) for s in self.subscriptions]
+        return calls
+
+
+def _check_type(msg_type: Any, where: str) -> None:
+    if not isinstance(msg_type, type):
+        raise TypeError(f"{where} needs a message type (a class), got {msg_type!r}")
+
+
+def _remove(entities: list[T], entity: T) -> None:
+    if entity in entities:
+        entities.remove(entity)
+
+
+class Node:
+    """A ROS node as an actor: subclass it and create entities in ``__init__``, as in rclpy.
+
+    All callbacks of one node (subscriptions, timers, services, parameter
+    callbacks) run one at a time in the node's own task, so node code needs no
+    locks.  Callbacks may be plain functions or ``async def``.
+
+    Raises RuntimeError when constructed outside ``Runtime.spawn``, and
+    InvalidNameError for a bad node name or namespace.
+    """
+
+    _core: NodeCore
+
+    def __init__(
+        self,
+        node_name: str,
+        *,
+        namespace: str | None = None,
+        parameter_overrides: Mapping[str, Any] | None = None,
+    ) -> None:
+        request = _spawning.get()
+        if request is None:
+            raise RuntimeError(
+                f"{type(self).__name__} must be started by a runtime: "
+                f"`async with Runtime() as rt: rt.spawn({type(self).__name__})`"
+            )
+        self._core = NodeCore(self, request, node_name, namespace)
+
+    # -- names ----------------------------------------------------------------
+
+    def get_name(self) -> str:
+        """The node's name (without namespace)."""
+        return self._core.name
+
+    def get_namespace(self) -> str:
+        """The node's namespace (``/`` for none)."""
+        return self._core.namespace
+
+    def get_fully_qualified_name(self) -> str:
+        """``/namespace/name``."""
+        return self._core.fqn
+
+    # -- topics ---------------------------------------------------------------
+
+    def create_publisher(self, msg_type: type, topic: str, qos_profile: QoSProfile | int) -> Publisher:
+        """A publisher of ``msg_type`` on ``topic`` (resolved and remapped by ROS rules).
+
+        ``qos_profile`` is a QoSProfile or a depth (KEEP_LAST of that depth).
+        Raises TopicTypeError if the topic already carries another type.
+        """
+        return self._core.create_publisher(msg_type, topic, qos_profile)
+
+    def create_subscription(
+        self,
+        msg_type: type,
+        topic: str,
+        callback: Callable[[Any], Any],
+        qos_profile: QoSProfile | int,
+    ) -> Subscription:
+        """A subscription calling ``callback(msg)`` for each message on ``topic``.
+
+        Raises TopicTypeError if the topic already carries another type.  A
+        TRANSIENT_LOCAL subscription first receives the history kept by
+        TRANSIENT_LOCAL publishers.  Callbacks that raise crash the node (its
+        supervisor restarts it); the message is logged as a dead letter.
+        """
+        return self._core.create_subscription(msg_type, topic, callback, qos_profile)
+
+    def destroy_publisher(self, publisher: Publisher) -> bool:
+        """Destroy ``publisher``; returns True as rclpy does."""
+        self._core.destroy_publisher(publisher)
+        return True
+
+    def destroy_subscription(self, subscription: Subscription) -> bool:
+        """Destroy ``subscription``; returns True as rclpy does."""
+        self._core.destroy_subscription(subscription)
+        return True
+
+    def count_publishers(self, topic: str) -> int:
+        """How many publishers ``topic`` has."""
+        info = self._core.runtime.topics.topics.get(self._core.resolver.resolve(topic))
+        return len(info.publishers) if info else 0
+
+    def count_subscribers(self, topic: str) -> int:
+        """How many subscriptions ``topic`` has."""
+        info = self._core.runtime.topics.topics.get(self._core.resolver.resolve(topic))
+        return len(info.subscriptions) if info else 0
+
+    def get_topic_names_and_types(self) -> list[tuple[str, list[str]]]:
+        """Every topic of the graph with its type, as rclpy returns them."""
+        return [(t.name, [t.type]) for t in self._core.runtime.graph.topics()]
+
+    def get_node_names(self) -> list[str]:
+        """The names of every node in the graph."""
+        return [n.name.rsplit("/", 1)[-1] for n in self._core.runtime.graph.nodes()]
+
+    # -- time -----------------------------------------------------------------
+
+    def create_timer(self, timer_period_sec: float, callback: Callable[[], Any]) -> Timer:
+        """A timer calling ``callback()`` every ``timer_period_sec`` seconds, first one period from now."""
+        return self._core.create_timer(timer_period_sec, callback)
+
+    def destroy_timer(self, timer: Timer) -> bool:
+        """Cancel and forget ``timer``; returns True as rclpy does."""
+        self._core.destroy_timer(timer)
+        return True
+
+    def create_rate(self, frequency: float) -> Rate:
+        """A Rate for ``await rate.sleep()`` loops in ``async`` callbacks."""
+        return Rate(frequency, self._core.loop)
+
+    def get_clock(self) -> Clock:
+        """The runtime's clock (virtual under virtual time)."""
+        return self._core.clock
+
+    # -- logging and lifecycle --------------------------------------------------
+
+    def get_logger(self) -> NodeLogger:
+        """The node's logger: ``debug``/``info``/``warning``/``error``/``fatal``."""
+        return self._core.logger
+
+    def destroy_node(self) -> None:
+        """Stop this node and remove its entities.
+
+        Called by user code, the node ends normally (a ``permanent`` node is then
+        restarted).  The runtime calls it at shutdown, after ``on_shutdown``;
+        override it to clean up, calling ``super().destroy_node()``.
+        """
+        self._core.destroy()

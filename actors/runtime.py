@@ -1,0 +1,220 @@
+"""Runtime: the registry of a graph's nodes, topics and services; spawn, stop, shutdown.
+
+Lifecycle is explicit: a Runtime is *unopened* until ``async with Runtime() as rt``
+enters it, *running* inside the block, and *closed* after it.  Leaving the block
+stops every node gracefully, in reverse start order (``on_shutdown`` then
+``destroy_node``).  If the supervisor gives up (too many restarts), the block is
+cancelled and :class:`~actors.errors.Escalation` is raised from it.
+
+There is no global runtime: a node finds the runtime that spawns it through a
+scoped context variable, so several runtimes can live in one process.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import Mapping
+from types import TracebackType
+from typing import Any, TypeVar
+
+import anyio
+
+from actors.clock import Clock
+from actors.errors import InvalidNameError
+from actors.introspection import GraphView
+from actors.log import NodeLogger
+from actors.node import Node, NodeCore, SpawnRequest, _spawning
+from actors.supervisor import Child, RestartType, Supervisor, SupervisorPolicy
+from actors.topics import Publisher, QoSProfile, Subscription, TopicTable, type_name
+
+__all__ = ["Runtime"]
+
+N = TypeVar("N", bound=Node)
+
+
+class Runtime:
+    """A graph of nodes in one process, on the running event loop.
+
+    ``name`` names the graph (the command line finds it by this name);
+    ``supervisor`` sets restart strategy, intensity and backoff.
+    """
+
+    def __init__(self, *, name: str = "actors", supervisor: SupervisorPolicy | None = None) -> None:
+        self.name = name
+        self.policy = supervisor or SupervisorPolicy()
+        self.topics = TopicTable(self._incompatible_qos)
+        self.nodes: dict[str, NodeCore] = {}
+        self.graph = GraphView(self)
+        self._state = "unopened"
+        self._failure: BaseException | None = None
+        self._rosout: Publisher | None = None
+        self._stopped: anyio.Event | None = None
+
+    # -- lifecycle ------------------------------------------------------------
+
+    async def __aenter__(self) -> Runtime:
+        if self._state != "unopened":
+            raise RuntimeError(f"runtime {self.name!r} is {self._state}; a Runtime is entered once")
+        self.loop: asyncio.AbstractEventLoop = asyncio.get_running_loop()
+        self.clock = Clock(self.loop)
+        self._rosout = self._make_rosout_publisher()
+        self.logger = self.make_logger("actors")
+        self.supervisor = Supervisor(self, self.policy)
+        self._stopped = anyio.Event()
+        self._task_group = anyio.create_task_group()
+        await self._task_group.__aenter__()
+        self._task_group.start_soon(self.supervisor.run, name="supervisor")
+        self._state = "running"
+        return self
+
+    async def __aexit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> bool | None:
+        try:
+            with anyio.CancelScope(shield=True):
+                await self.supervisor.stop_all()
+            self._task_group.cancel_scope.cancel()
+            suppressed = await self._task_group.__aexit__(exc_type, exc, tb)
+        finally:
+            self._state = "closed"
+            assert self._stopped is not None
+            self._stopped.set()
+        if self._failure is not None:
+            raise self._failure
+        return suppressed
+
+    def _fail(self, reason: BaseException) -> None:
+        """Record why the runtime gives up and cancel everything in it."""
+        if self._failure is None:
+            self._failure = reason
+        self._task_group.cancel_scope.cancel()
+
+    def shutdown(self) -> None:
+        """Ask the runtime to stop: :meth:`wait` returns and the ``async with`` block can end."""
+        if self._stopped is not None:
+            self._stopped.set()
+
+    async def wait(self, duration: float | None = None) -> None:
+        """Run until :meth:`shutdown` is called, or for ``duration`` seconds of runtime clock."""
+        self._require_running()
+        assert self._stopped is not None
+        with anyio.move_on_after(duration if duration else None):
+            await self._stopped.wait()
+
+    def _require_running(self) -> None:
+        if self._state != "running":
+            raise RuntimeError(
+                f"runtime {self.name!r} is {self._state}; use it inside `async with Runtime() as rt:`"
+            )
+
+    # -- nodes ----------------------------------------------------------------
+
+    def spawn(
+        self,
+        cls: type[N],
+        *,
+        name: str | None = None,
+        namespace: str | None = None,
+        params: Mapping[str, Any] | None = None,
+        remap: Mapping[str, str] | None = None,
+        restart: RestartType | str = RestartType.TRANSIENT,
+    ) -> N:
+        """Construct ``cls()`` as a node of this runtime and start its actor.
+
+        ``name``, ``namespace``, ``params`` and ``remap`` override what the class
+        gives ``super().__init__``, as ROS launch does.  Returns the instance (a
+        restart makes a new one: see :meth:`node`).  Raises what the constructor
+        raises, InvalidNameError for a bad or duplicate name, and RuntimeError
+        outside ``async with``.
+        """
+        self._require_running()
+        if not (isinstance(cls, type) and issubclass(cls, Node)):
+            raise TypeError(f"spawn() takes a Node subclass, got {cls!r}")
+        child = Child(
+            cls, name=name, namespace=namespace, params=params, remap=remap, restart=RestartType(restart)
+        )
+        core = self.supervisor.start(child)
+        self.supervisor.children.append(child)
+        return core.node  # type: ignore[return-value]
+
+    async def stop(self, name: str) -> None:
+        """Stop the node ``name`` (full or plain name) for good, running its shutdown hooks."""
+        core = self._find(name)
+        await self.supervisor.stop(core.child)
+
+    def node(self, name: str) -> Node:
+        """The current instance of the node ``name`` (full ``/ns/name`` or plain name)."""
+        return self._find(name).node
+
+    def _find(self, name: str) -> NodeCore:
+        core = self.nodes.get(name) or self.nodes.get("/" + name)
+        if core is None:
+            matches = [c for c in self.nodes.values() if c.name == name]
+            if len(matches) != 1:
+                raise LookupError(f"no node named {name!r} in runtime {self.name!r}")
+            core = matches[0]
+        return core
+
+    def _instantiate(self, child: Child) -> NodeCore:
+        token = _spawning.set(SpawnRequest(self, child))
+        try:
+            node = child.cls()
+        finally:
+            _spawning.reset(token)
+        core = getattr(node, "_core", None)
+        if not isinstance(core, NodeCore):
+            raise TypeError(f"{child.cls.__name__}.__init__ must call super().__init__(node_name)")
+        return core
+
+    def _register_node(self, core: NodeCore) -> None:
+        existing = self.nodes.get(core.fqn)
+        if existing is not None and existing.child is not core.child:
+            raise InvalidNameError(f"a node named {core.fqn} already runs in runtime {self.name!r}")
+        self.nodes[core.fqn] = core
+
+    def _unregister_node(self, core: NodeCore) -> None:
+        if self.nodes.get(core.fqn) is core:
+            del self.nodes[core.fqn]
+
+    # -- logging --------------------------------------------------------------
+
+    def make_logger(self, name: str) -> NodeLogger:
+        """A logger stamped by this runtime's clock that also feeds ``/rosout``."""
+        return NodeLogger(name, self.clock.now_ns, self._to_rosout)
+
+    def _to_rosout(self, level: int, name: str, text: str, stamp_ns: int) -> None:
+        pub = self._rosout
+        if pub is None or not pub._subs:
+            return
+        sec, nanosec = divmod(stamp_ns, 1_000_000_000)
+        msg = pub.msg_type(level=level, name=name, msg=text)
+        msg.stamp.sec, msg.stamp.nanosec = sec, nanosec
+        pub.publish(msg)
+
+    def _make_rosout_publisher(self) -> Publisher:
+        from interfaces.rcl_interfaces.msg import Log
+
+
+        # One publisher for the whole runtime.  Volatile, unlike ROS's transient-local
+        # /rosout: with nobody subscribed, logging then costs nothing here.
+        pub = Publisher(_RuntimeEndpointOwner(self), "/rosout", Log, QoSProfile(depth=1000))
+        self.topics.add_publisher(pub)
+        return pub
+
+    def _incompatible_qos(self, pub: Publisher, sub: Subscription, reason: str) -> None:
+        self.logger.warning(
+            f"{sub.node.fqn} subscribes to {sub.topic_name} ({type_name(sub.msg_type)}) but "
+            f"{pub.node.fqn} publishes with incompatible QoS ({reason}): not connected",
+            once=True,
+        )
+
+
+class _RuntimeEndpointOwner:
+    """Stands in for a node as owner of the runtime's own endpoints (``/rosout``)."""
+
+    def __init__(self, runtime: Runtime) -> None:
+        self.runtime = runtime
+        self.fqn = f"/_{runtime.name}".replace("-", "_")

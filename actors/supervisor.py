@@ -1,0 +1,302 @@
+"""Supervision with Erlang/OTP semantics: restart strategies, restart types, intensity, backoff.
+
+Every spawned node is a *child* of the runtime's supervisor.  When a node's
+callback raises, the node crashes: the message it was handling is logged once,
+with the traceback, as a dead letter, and the supervisor decides what to do:
+
+- restart type: ``permanent`` children are always restarted, ``transient`` ones
+  (the default) only after a crash, ``temporary`` ones never;
+- strategy: ``one_for_one`` restarts the crashed child, ``one_for_all`` every
+  child, ``rest_for_one`` the crashed child and those started after it;
+- intensity: more than ``intensity`` restarts within ``period`` seconds and the
+  supervisor gives up: it stops every child and the runtime raises
+  :class:`~actors.errors.Escalation`;
+- backoff: the n-th restart within the period waits ``backoff * 2**(n-1)``
+  seconds (at most ``max_backoff``) on the runtime clock.
+
+A restarted node is a new instance.  The crashed instance's subscriptions stay
+attached to their topics while it is down, and the new instance adopts their
+mailboxes when it subscribes again, so messages queued for it are not lost.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Mapping
+from enum import StrEnum
+from typing import TYPE_CHECKING, Any
+
+import anyio
+import msgspec
+
+from actors.actor import CallbackFailed
+from actors.errors import Escalation
+
+if TYPE_CHECKING:
+    from actors.node import NodeCore
+    from actors.runtime import Runtime
+
+__all__ = ["Strategy", "RestartType", "SupervisorPolicy", "Child", "Supervisor"]
+
+
+class Strategy(StrEnum):
+    """Which children restart when one crashes."""
+
+    ONE_FOR_ONE = "one_for_one"
+    ONE_FOR_ALL = "one_for_all"
+    REST_FOR_ONE = "rest_for_one"
+
+
+class RestartType(StrEnum):
+    """When a child is restarted."""
+
+    PERMANENT = "permanent"
+    TRANSIENT = "transient"
+    TEMPORARY = "temporary"
+
+
+class SupervisorPolicy(msgspec.Struct, frozen=True, kw_only=True):
+    """The supervisor's settings, as the ``[supervisor]`` table of a graph file."""
+
+    strategy: Strategy = Strategy.ONE_FOR_ONE
+    intensity: int = 3
+    period: float = 5.0
+    backoff: float = 0.1
+    max_backoff: float = 2.0
+
+    def __post_init__(self) -> None:
+        if self.intensity < 0:
+            raise ValueError(f"intensity must be >= 0, got {self.intensity}")
+        if self.period <= 0:
+            raise ValueError(f"period must be > 0 seconds, got {self.period}")
+        if self.backoff < 0 or self.max_backoff < 0:
+            raise ValueError("backoff and max_backoff must be >= 0 seconds")
+
+
+class Child:
+    """One spawned node: how to build it, its current instance, and its history."""
+
+    def __init__(
+        self,
+        cls: type,
+        *,
+        name: str | None,
+        namespace: str | None,
+        params: Mapping[str, Any] | None,
+        remap: Mapping[str, str] | None,
+        restart: RestartType,
+    ) -> None:
+        self.cls = cls
+        self.name = name
+        self.namespace = namespace
+        self.params = dict(params or {})
+        self.remap = dict(remap or {})
+        self.restart = RestartType(restart)
+        self.core: NodeCore | None = None
+        self.restarts = 0
+        self.crashes = 0
+        self.last_error: str | None = None
+        self.state = "starting"
+        self._inheritance: dict[tuple[str, str], list[Any]] = {}
+        self._scope: anyio.CancelScope | None = None
+        self._done: anyio.Event | None = None
+
+    def take_inheritance(self) -> dict[tuple[str, str], list[Any]]:
+        """The previous instance's entities, handed once to the new instance."""
+        inherited, self._inheritance = self._inheritance, {}
+        return inherited
+
+
+class _Exit(msgspec.Struct):
+    child: Child
+    core: NodeCore
+    error: BaseException | None
+
+
+class Supervisor:
+    """Starts, watches and restarts the runtime's nodes."""
+
+    def __init__(self, runtime: Runtime, policy: SupervisorPolicy) -> None:
+        self.runtime = runtime
+        self.policy = policy
+        self.children: list[Child] = []
+        self._restart_times: deque[float] = deque()
+        self._send, self._receive = anyio.create_memory_object_stream[_Exit](float("inf"))
+
+    # -- starting and stopping ------------------------------------------------
+
+    def start(self, child: Child) -> NodeCore:
+        """Build ``child``'s instance and start its actor; raise what its constructor raised."""
+        core = self.runtime._instantiate(child)
+        for leftover in core.leftovers():
+            leftover.destroy()
+        child.core = core
+        child.state = "running"
+        child._done = anyio.Event()
+        self.runtime._task_group.start_soon(self._watch, child, core, name=f"node {core.fqn}")
+        return core
+
+    async def _watch(self, child: Child, core: NodeCore) -> None:
+        error: BaseException | None = None
+        with anyio.CancelScope() as scope:
+            child._scope = scope
+            try:
+                await core.actor.run()
+            except CallbackFailed as failed:
+                error = failed
+            except Exception as exc:
+                error = exc
+        assert child._done is not None
+        child._done.set()
+        if not scope.cancelled_caught:
+            self._send.send_nowait(_Exit(child, core, error))
+
+    async def _halt(self, child: Child) -> None:
+        """Cancel ``child``'s actor task and wait until it has ended."""
+        if child._scope is not None:
+            child._scope.cancel()
+        if child._done is not None:
+            await child._done.wait()
+
+    async def stop(self, child: Child) -> None:
+        """Stop ``child`` for good: actor cancelled, ``on_shutdown`` and ``destroy_node`` run."""
+        if child in self.children:
+            self.children.remove(child)
+        child.state = "stopping"
+        await self._halt(child)
+        if child.core is not None and not child.core.destroyed:
+            await self._shutdown_hooks(child.core, destroy=True)
+        child.state = "stopped"
+
+    async def stop_all(self) -> None:
+        """Stop every child, in reverse start order."""
+        for child in reversed(list(self.children)):
+            await self.stop(child)
+
+    async def _shutdown_hooks(self, core: NodeCore, *, destroy: bool) -> None:
+        node = core.node
+        hook = getattr(node, "on_shutdown", None)
+        try:
+            if hook is not None:
+                result = hook()
+                if result is not None and hasattr(result, "__await__"):
+                    await result
+            if destroy:
+                node.destroy_node()
+        except Exception as exc:
+            core.logger.error(f"shutdown hook raised: {exc!r}", exc_info=exc)
+        finally:
+            if destroy:
+                core.destroy()
+
+    # -- supervising ------------------------------------------------------------
+
+    async def run(self) -> None:
+        """Handle node exits until cancelled; raise Escalation when intensity is exceeded."""
+        async with self._receive:
+            async for exit_ in self._receive:
+                await self._handle(exit_)
+
+    async def _handle(self, exit_: _Exit) -> None:
+        child, core, error = exit_.child, exit_.core, exit_.error
+        if child.core is not core or child not in self.children:
+            return  # an instance already replaced or stopped
+        if error is None:
+            core.destroy()
+            if child.restart is RestartType.PERMANENT:
+                await self._restart([child], crashed=None)
+            else:
+                self.children.remove(child)
+                child.state = "exited"
+            return
+        child.crashes += 1
+        self._report(core, error)
+        if child.restart is RestartType.TEMPORARY:
+            core.destroy()
+            self.children.remove(child)
+            child.state = "crashed"
+            return
+        index = self.children.index(child)
+        strategy = self.policy.strategy
+        group = (
+            [child]
+            if strategy is Strategy.ONE_FOR_ONE
+            else list(self.children)
+            if strategy is Strategy.ONE_FOR_ALL
+            else self.children[index:]
+        )
+        await self._restart(group, crashed=child)
+
+    def _report(self, core: NodeCore, error: BaseException) -> None:
+        child = core.child
+        if isinstance(error, CallbackFailed):
+            entity, cause = error.entity, error.error
+            where = _describe(entity)
+            if error.item is not None:
+                text = f"dead letter: {where} raised {cause!r} handling {error.item!r}"
+            else:
+                text = f"{where} raised {cause!r}"
+        else:
+            cause = error
+            text = f"node crashed: {cause!r}"
+        child.last_error = repr(cause)
+        core.logger.error(text, exc_info=cause)
+
+    async def _restart(self, group: list[Child], crashed: Child | None) -> None:
+        now = self.runtime.clock.monotonic()
+        times = self._restart_times
+        while times and times[0] <= now - self.policy.period:
+            times.popleft()
+        if crashed is not None and len(times) >= self.policy.intensity:
+            await self._escalate(crashed)
+            return
+        times.append(now)
+        for child in reversed(group):
+            if child is not crashed and child.core is not None and not child.core.destroyed:
+                await self._halt(child)
+                await self._shutdown_hooks(child.core, destroy=False)
+            if child.core is not None and not child.core.destroyed:
+                child._inheritance = child.core.orphan()
+            child.state = "restarting"
+        delay = min(self.policy.backoff * 2 ** (len(times) - 1), self.policy.max_backoff)
+        if delay > 0:
+            await anyio.sleep(delay)
+        for child in group:
+            if child not in self.children:
+                continue
+            child.restarts += 1
+            try:
+                self.start(child)
+            except Exception as exc:
+                # A constructor that raises on restart is one more crash.
+                child.crashes += 1
+                child.last_error = repr(exc)
+                self.runtime.logger.error(f"restarting {child.cls.__name__} failed: {exc!r}", exc_info=exc)
+                await self._restart([child], crashed=child)
+                return
+
+    async def _escalate(self, crashed: Child) -> None:
+        policy = self.policy
+        name = crashed.core.fqn if crashed.core is not None else crashed.cls.__name__
+        reason = Escalation(
+            f"node {name} crashed {crashed.crashes} times; more than {policy.intensity} "
+            f"restarts within {policy.period} s, giving up (last error: {crashed.last_error})"
+        )
+        for child in reversed(list(self.children)):
+            if child.core is not None and not child.core.destroyed:
+                await self._halt(child)
+                await self._shutdown_hooks(child.core, destroy=True)
+            child.state = "stopped"
+        self.children.clear()
+        crashed.state = "crashed"
+        self.runtime._fail(reason)
+
+
+def _describe(entity: Any) -> str:
+    topic = getattr(entity, "topic_name", None)
+    if topic is not None:
+        return f"subscription callback on {topic}"
+    service = getattr(entity, "service_name", None)
+    if service is not None:
+        return f"service handler of {service}"
+    return f"{type(entity).__name__.lower()} callback"

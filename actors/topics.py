@@ -1,0 +1,335 @@
+"""Topics: QoS profiles, publishers, subscriptions with their mailboxes, and the topic table.
+
+``Publisher.publish`` is synchronous and O(subscribers): it checks the type,
+appends the message object itself (never a copy, never serialised) to each
+matched subscription's queue and wakes the owning node once per batch.  Each
+subscription keeps its own queue, bounded by its QoS depth as in ROS: a full
+KEEP_LAST queue drops its oldest message and counts the drop.
+
+A publisher and a subscription are *matched* (connected) only when their QoS is
+compatible, as in ROS: a best-effort publisher does not feed a reliable
+subscription, nor a volatile publisher a transient-local one.  Incompatible
+pairs are logged once and reported by ``doctor``.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections import deque
+from collections.abc import Callable
+from enum import IntEnum
+from inspect import isawaitable
+from typing import TYPE_CHECKING, Any
+
+import msgspec
+
+from actors.actor import CallbackFailed
+from actors.errors import TopicTypeError
+
+if TYPE_CHECKING:
+    from actors.node import NodeCore
+
+__all__ = [
+    "HistoryPolicy",
+    "ReliabilityPolicy",
+    "DurabilityPolicy",
+    "QoSProfile",
+    "qos_profile_sensor_data",
+    "qos_profile_system_default",
+    "as_qos",
+    "qos_incompatibility",
+    "type_name",
+    "Publisher",
+    "Subscription",
+    "Topic",
+    "TopicTable",
+]
+
+
+class HistoryPolicy(IntEnum):
+    """How many messages a queue keeps (values as rclpy's)."""
+
+    KEEP_LAST = 1
+    KEEP_ALL = 2
+
+
+class ReliabilityPolicy(IntEnum):
+    """Delivery guarantee requested or offered (values as rclpy's)."""
+
+    RELIABLE = 1
+    BEST_EFFORT = 2
+
+
+class DurabilityPolicy(IntEnum):
+    """Whether late subscribers get earlier messages (values as rclpy's)."""
+
+    TRANSIENT_LOCAL = 1
+    VOLATILE = 2
+
+
+class QoSProfile(msgspec.Struct, frozen=True, kw_only=True):
+    """Quality of service of a publisher or subscription, shaped like rclpy's.
+
+    ``depth`` bounds a KEEP_LAST queue and the history a TRANSIENT_LOCAL
+    publisher keeps for late subscribers.
+    """
+
+    depth: int = 10
+    history: HistoryPolicy = HistoryPolicy.KEEP_LAST
+    reliability: ReliabilityPolicy = ReliabilityPolicy.RELIABLE
+    durability: DurabilityPolicy = DurabilityPolicy.VOLATILE
+
+    def __post_init__(self) -> None:
+        if self.history == HistoryPolicy.KEEP_LAST and self.depth < 1:
+            raise ValueError(f"QoS depth must be >= 1 for KEEP_LAST, got {self.depth}")
+
+
+qos_profile_system_default = QoSProfile()
+qos_profile_sensor_data = QoSProfile(depth=5, reliability=ReliabilityPolicy.BEST_EFFORT)
+
+
+def as_qos(qos: QoSProfile | int) -> QoSProfile:
+    """A QoS profile from a profile or a plain depth (KEEP_LAST of that depth)."""
+    if isinstance(qos, QoSProfile):
+        return qos
+    if isinstance(qos, int) and not isinstance(qos, bool):
+        return QoSProfile(depth=qos)
+    raise TypeError(f"qos must be a QoSProfile or an int depth, got {qos!r}")
+
+
+def qos_incompatibility(offered: QoSProfile, requested: QoSProfile) -> str | None:
+    """Why a publisher offering ``offered`` cannot feed a subscription requesting ``requested``."""
+    if (
+        offered.reliability == ReliabilityPolicy.BEST_EFFORT
+        and requested.reliability == ReliabilityPolicy.RELIABLE
+    ):
+        return "publisher offers BEST_EFFORT, subscription requests RELIABLE"
+    if (
+        offered.durability == DurabilityPolicy.VOLATILE
+        and requested.durability == DurabilityPolicy.TRANSIENT_LOCAL
+    ):
+        return "publisher offers VOLATILE, subscription requests TRANSIENT_LOCAL"
+    return None
+
+
+def type_name(msg_type: type) -> str:
+    """A type's ROS name (``std_msgs/msg/String``), or its Python name if it has none."""
+    return getattr(msg_type, "__ros_type__", None) or f"{msg_type.__module__}.{msg_type.__qualname__}"
+
+
+class Publisher:
+    """Publishes messages of one type on one topic.  Create with ``Node.create_publisher``."""
+
+    __slots__ = ("topic_name", "msg_type", "qos", "node", "_subs", "_history", "__weakref__")
+
+    def __init__(self, node: NodeCore, topic_name: str, msg_type: type, qos: QoSProfile) -> None:
+        self.node = node
+        self.topic_name = topic_name
+        self.msg_type = msg_type
+        self.qos = qos
+        self._subs: list[Subscription] = []
+        self._history: deque[Any] | None = (
+            deque(maxlen=qos.depth) if qos.durability == DurabilityPolicy.TRANSIENT_LOCAL else None
+        )
+
+    def publish(self, msg: Any) -> None:
+        """Deliver ``msg`` to every matched subscription.  Never blocks.
+
+        Raises TypeError if ``msg`` is not of this publisher's type.  The message
+        object itself is delivered: do not mutate it after publishing.
+        """
+        if type(msg) is not self.msg_type:
+            raise TypeError(
+                f"publisher on {self.topic_name} takes {type_name(self.msg_type)}, "
+                f"got {type_name(type(msg))}"
+            )
+        if self._history is not None:
+            self._history.append(msg)
+        for sub in self._subs:
+            sub._push(msg)
+
+    def get_subscription_count(self) -> int:
+        """How many subscriptions this publisher feeds."""
+        return len(self._subs)
+
+    def destroy(self) -> None:
+        """Stop publishing; the topic forgets this publisher."""
+        self.node.destroy_publisher(self)
+
+
+class Subscription:
+    """A subscription and its mailbox.  Create with ``Node.create_subscription``."""
+
+    __slots__ = (
+        "topic_name",
+        "msg_type",
+        "callback",
+        "qos",
+        "node",
+        "dropped",
+        "_queue",
+        "_limit",
+        "_scheduled",
+        "_actor",
+        "__weakref__",
+    )
+
+    def __init__(
+        self,
+        node: NodeCore,
+        topic_name: str,
+        msg_type: type,
+        callback: Callable[[Any], Any],
+        qos: QoSProfile,
+    ) -> None:
+        self.node = node
+        self.topic_name = topic_name
+        self.msg_type = msg_type
+        self.callback = callback
+        self.qos = qos
+        self.dropped = 0
+        self._queue: deque[Any] = deque()
+        self._limit = qos.depth if qos.history == HistoryPolicy.KEEP_LAST else sys.maxsize
+        self._scheduled = False
+        self._actor = node.actor
+
+    @property
+    def queued(self) -> int:
+        """Messages waiting in the mailbox."""
+        return len(self._queue)
+
+    def _push(self, msg: Any) -> None:
+        queue = self._queue
+        if len(queue) >= self._limit:
+            queue.popleft()
+            self.dropped += 1
+        queue.append(msg)
+        if not self._scheduled:
+            self._scheduled = True
+            self._actor.schedule(self)
+
+    def _adopt(self, old: Subscription) -> None:
+        # A restarted node takes over its predecessor's mailbox: nothing queued is lost.
+        self._queue = old._queue
+        self.dropped = old.dropped
+        if self._queue:
+            self._scheduled = True
+            self._actor.schedule(self)
+
+    async def _run(self) -> None:
+        queue = self._queue
+        callback = self.callback
+        msg = None
+        try:
+            # Only what is queued now: messages published meanwhile wait for the next round.
+            for _ in range(len(queue)):
+                msg = queue.popleft()
+                result = callback(msg)
+                if result is not None and isawaitable(result):
+                    await result
+        except Exception as exc:
+            self._reschedule()
+            raise CallbackFailed(self, msg, exc) from exc
+        self._reschedule()
+
+    def _reschedule(self) -> None:
+        if self._queue:
+            self._actor.schedule(self)
+        else:
+            self._scheduled = False
+
+    def destroy(self) -> None:
+        """Stop receiving; the topic forgets this subscription."""
+        self.node.destroy_subscription(self)
+
+
+class Topic:
+    """One topic: its type and its endpoints, in creation order."""
+
+    __slots__ = ("name", "msg_type", "publishers", "subscriptions")
+
+    def __init__(self, name: str, msg_type: type) -> None:
+        self.name = name
+        self.msg_type = msg_type
+        self.publishers: list[Publisher] = []
+        self.subscriptions: list[Subscription] = []
+
+
+class TopicTable:
+    """Every topic of a runtime; matches publishers to subscriptions."""
+
+    __slots__ = ("topics", "_on_incompatible")
+
+    def __init__(self, on_incompatible: Callable[[Publisher, Subscription, str], None]) -> None:
+        self.topics: dict[str, Topic] = {}
+        self._on_incompatible = on_incompatible
+
+    def _topic_for(self, name: str, msg_type: type, endpoint: str, node: str) -> Topic:
+        topic = self.topics.get(name)
+        if topic is None:
+            topic = self.topics[name] = Topic(name, msg_type)
+        elif topic.msg_type is not msg_type:
+            others = topic.publishers or topic.subscriptions
+            raise TopicTypeError(
+                f"cannot create {endpoint} of {type_name(msg_type)} on {name} for node "
+                f"{node}: the topic already carries {type_name(topic.msg_type)} "
+                f"({'published' if topic.publishers else 'subscribed'} by "
+                f"{others[0].node.fqn})"
+            )
+        return topic
+
+    def add_publisher(self, pub: Publisher) -> None:
+        """Register ``pub`` and connect it to every compatible subscription."""
+        topic = self._topic_for(pub.topic_name, pub.msg_type, "a publisher", pub.node.fqn)
+        topic.publishers.append(pub)
+        for sub in topic.subscriptions:
+            self._match(pub, sub)
+
+    def add_subscription(self, sub: Subscription, *, replay: bool = True) -> None:
+        """Register ``sub``, connect it, and replay transient-local history if it asks for it."""
+        topic = self._topic_for(sub.topic_name, sub.msg_type, "a subscription", sub.node.fqn)
+        topic.subscriptions.append(sub)
+        for pub in topic.publishers:
+            if self._match(pub, sub) and replay and pub._history:
+                if sub.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL:
+                    for msg in pub._history:
+                        sub._push(msg)
+
+    def _match(self, pub: Publisher, sub: Subscription) -> bool:
+        reason = qos_incompatibility(pub.qos, sub.qos)
+        if reason is not None:
+            self._on_incompatible(pub, sub, reason)
+            return False
+        pub._subs.append(sub)
+        return True
+
+    def replace_subscription(self, old: Subscription, new: Subscription) -> None:
+        """Put ``new`` where ``old`` was, in the topic and in every publisher feeding it."""
+        topic = self.topics[old.topic_name]
+        topic.subscriptions[topic.subscriptions.index(old)] = new
+        for pub in topic.publishers:
+            subs = pub._subs
+            if old in subs:
+                subs[subs.index(old)] = new
+
+    def remove_publisher(self, pub: Publisher) -> None:
+        """Forget ``pub``; drop the topic when it has no endpoint left."""
+        topic = self.topics.get(pub.topic_name)
+        if topic is not None and pub in topic.publishers:
+            topic.publishers.remove(pub)
+            pub._subs = []
+            self._drop_if_empty(topic)
+
+    def remove_subscription(self, sub: Subscription) -> None:
+        """Forget ``sub``; drop the topic when it has no endpoint left."""
+        topic = self.topics.get(sub.topic_name)
+        if topic is not None and sub in topic.subscriptions:
+            topic.subscriptions.remove(sub)
+            for pub in topic.publishers:
+                if sub in pub._subs:
+                    pub._subs.remove(sub)
+            self._drop_if_empty(topic)
+
+    def _drop_if_empty(self, topic: Topic) -> None:
+        if not topic.publishers and not topic.subscriptions:
+            del self.topics[topic.name]
