@@ -1,0 +1,452 @@
+"""The ``.msg``/``.srv`` parser: ROS 2 interface text to small frozen specs.
+
+A ``.msg`` file holds one declaration a line, ``#`` starting a comment:
+
+    TYPE NAME [DEFAULT]        a field; DEFAULT as in ROS (``int64 a 5``,
+                               ``string s "hi"``, ``float64[] v [1.0, 2.0]``)
+    TYPE NAME=VALUE            a constant (primitive, non-array types only)
+
+TYPE is a primitive (``bool byte char float32 float64 int8 .. uint64 string
+wstring``), a bounded string (``string<=N``) or a message (``Name``,
+``pkg/Name``, ``pkg/msg/Name``; a bare ``Name`` is the same package's message,
+in ``.srv`` files too), optionally an array: ``T[]``, ``T[N]`` or ``T[<=N]``.
+A ``.srv`` file is a request and a response separated by a ``---`` line.
+
+Every problem raises :class:`actors.errors.IdlError` naming ``path:line``.
+
+:func:`generate` turns a *root* (a folder of packages ``<root>/<pkg>/msg/*.msg``,
+``<root>/<pkg>/srv/*.srv``) into one module per package and kind, written
+beside the sources: ``<root>/<pkg>/msg/__init__.py`` holds every message of
+``pkg``, ``<root>/<pkg>/srv/__init__.py`` every service (the text of a module
+comes from :mod:`actors.idl_gen`).  The root folder's name is the top-level
+Python package: the shipped root is ``interfaces``, so its types import as
+``interfaces.std_msgs.msg``; a user's root ``/some/dir/my_root`` imports as
+``my_root.my_pkg.msg`` once ``/some/dir`` is on ``sys.path``.  ``__init__.py``
+files missing in the root and its packages are written too.  A package
+referenced but not found in the given roots comes from the shipped root.
+"""
+
+from __future__ import annotations
+
+import keyword
+import re
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from actors.errors import IdlError, InterfaceError
+
+__all__ = [
+    "Constant",
+    "Field",
+    "FieldType",
+    "MessageSpec",
+    "ServiceSpec",
+    "INTEGER_RANGES",
+    "generate",
+    "parse_message",
+    "parse_service",
+    "render",
+    "shipped_root",
+    "strip_comment",
+]
+
+#: Inclusive value range of every integer primitive (``byte`` and ``char`` are uint8).
+INTEGER_RANGES: dict[str, tuple[int, int]] = {
+    "byte": (0, 255),
+    "char": (0, 255),
+    "int8": (-(2**7), 2**7 - 1),
+    "uint8": (0, 2**8 - 1),
+    "int16": (-(2**15), 2**15 - 1),
+    "uint16": (0, 2**16 - 1),
+    "int32": (-(2**31), 2**31 - 1),
+    "uint32": (0, 2**32 - 1),
+    "int64": (-(2**63), 2**63 - 1),
+    "uint64": (0, 2**64 - 1),
+}
+FLOATS = frozenset({"float32", "float64"})
+STRINGS = frozenset({"string", "wstring"})
+PRIMITIVES = frozenset({"bool", *INTEGER_RANGES, *FLOATS, *STRINGS})
+#: Element types whose arrays are Python ``bytes``.
+OCTETS = frozenset({"byte", "uint8"})
+
+_TYPE = re.compile(
+    r"(?P<base>[A-Za-z][A-Za-z0-9_/]*?)"
+    r"(?:<=(?P<string_bound>\d+))?"
+    r"(?:\[(?P<upper><=)?(?P<size>\d*)\])?"
+)
+_PACKAGE = re.compile(r"[a-z][a-z0-9_]*")
+_TYPE_NAME = re.compile(r"[A-Z][A-Za-z0-9]*")
+_FIELD_NAME = re.compile(r"(?!.*__)(?!.*_$)[a-z][a-z0-9_]*")
+_CONSTANT_NAME = re.compile(r"[A-Z][A-Z0-9_]*")
+_CONSTANT = re.compile(r"(?P<name>[A-Za-z_][A-Za-z0-9_]*)\s*=\s*(?P<value>.*)")
+# Names that generated class bodies evaluate; a field with one of them would
+# shadow it for the fields after it.
+_RESERVED = frozenset({"bool", "bytes", "float", "int", "list", "str", "msgspec"})
+
+
+@dataclass(frozen=True, slots=True)
+class FieldType:
+    """A field's type: ``base`` is a primitive name or a message name (then ``pkg`` is set).
+
+    ``array`` is None for a scalar, else ``"unbounded"`` (``T[]``),
+    ``"bounded"`` (``T[<=size]``) or ``"fixed"`` (``T[size]``).
+    """
+
+    base: str
+    pkg: str | None = None
+    string_bound: int | None = None
+    array: str | None = None
+    size: int | None = None
+
+    @property
+    def is_nested(self) -> bool:
+        """True for a message type, False for a primitive."""
+        return self.pkg is not None
+
+    @property
+    def ros_type(self) -> str:
+        """The element's ROS name: ``pkg/msg/Name``, or the primitive's name."""
+        return f"{self.pkg}/msg/{self.base}" if self.pkg else self.base
+
+
+@dataclass(frozen=True, slots=True)
+class Field:
+    """One field; ``default`` is None when the ROS zero value applies."""
+
+    name: str
+    type: FieldType
+    default: Any
+    line: int
+
+
+@dataclass(frozen=True, slots=True)
+class Constant:
+    """One constant: a primitive, non-array ``type`` and its ``value``."""
+
+    name: str
+    type: FieldType
+    value: Any
+    line: int
+
+
+@dataclass(frozen=True, slots=True)
+class MessageSpec:
+    """A parsed message, or a service's request or response (``kind="srv"``).
+
+    ``text`` is its raw definition, comments included.
+    """
+
+    pkg: str
+    name: str
+    fields: tuple[Field, ...]
+    constants: tuple[Constant, ...]
+    text: str
+    path: str
+    kind: str = "msg"
+
+    @property
+    def ros_type(self) -> str:
+        """``pkg/msg/Name`` (``pkg/srv/Name_Request`` for a request)."""
+        return f"{self.pkg}/{self.kind}/{self.name}"
+
+
+@dataclass(frozen=True, slots=True)
+class ServiceSpec:
+    """A parsed service: its request and response messages and its raw text."""
+
+    pkg: str
+    name: str
+    request: MessageSpec
+    response: MessageSpec
+    text: str
+    path: str
+
+    @property
+    def ros_type(self) -> str:
+        """``pkg/srv/Name``."""
+        return f"{self.pkg}/srv/{self.name}"
+
+
+def parse_message(text: str, *, path: str | Path = "<string>", pkg: str, name: str) -> MessageSpec:
+    """Parse the text of a ``.msg`` file of package ``pkg``.
+
+    ``path`` only names the source in errors.  Raises IdlError at the first
+    malformed line, duplicate name or out-of-range value.
+    """
+    return _parse_lines(_lines(text), 0, path=str(path), pkg=pkg, name=name, kind="msg")
+
+
+def parse_service(text: str, *, path: str | Path = "<string>", pkg: str, name: str) -> ServiceSpec:
+    """Parse the text of a ``.srv`` file: request, a ``---`` line, response.
+
+    The parts become messages ``Name_Request`` and ``Name_Response`` of kind
+    ``srv``.  Raises IdlError unless there is exactly one separator, or as
+    :func:`parse_message` does.
+    """
+    lines = _lines(text)
+    separators = [i for i, line in enumerate(lines) if strip_comment(line).strip() == "---"]
+    if len(separators) != 1:
+        line = separators[1] + 1 if separators else len(lines)
+        raise IdlError(str(path), line, "a service needs exactly one '---' line")
+    cut = separators[0]
+    common = {"path": str(path), "pkg": pkg, "kind": "srv"}
+    request = _parse_lines(lines[:cut], 0, name=f"{name}_Request", **common)
+    response = _parse_lines(lines[cut + 1 :], cut + 1, name=f"{name}_Response", **common)
+    return ServiceSpec(pkg, name, request, response, "\n".join(lines) + "\n", str(path))
+
+
+def strip_comment(line: str) -> str:
+    """``line`` without its comment: from the first ``#`` outside quotes."""
+    quote = None
+    escaped = False
+    for i, char in enumerate(line):
+        if escaped:
+            escaped = False
+        elif char == "\\" and quote:
+            escaped = True
+        elif char in "\"'" and quote in (None, char):
+            quote = None if quote else char
+        elif char == "#" and not quote:
+            return line[:i]
+    return line
+
+
+def _lines(text: str) -> list[str]:
+    return text.replace("\r\n", "\n").rstrip("\n").split("\n") if text.strip() else []
+
+
+def _parse_lines(
+    lines: list[str], offset: int, *, path: str, pkg: str, name: str, kind: str
+) -> MessageSpec:
+    fields: list[Field] = []
+    constants: list[Constant] = []
+    seen: set[str] = set()
+    for number, raw in enumerate(lines, offset + 1):
+        content = strip_comment(raw).strip()
+        if not content:
+            continue
+        where = (path, number)
+        type_text, _, rest = content.partition(" ")
+        rest = rest.strip()
+        if not rest:
+            raise IdlError(*where, f"expected 'TYPE NAME', got {content!r}")
+        type_ = _parse_type(type_text, pkg, where)
+        constant = _CONSTANT.fullmatch(rest)
+        if constant:
+            item: Field | Constant = _parse_constant(type_, constant, number, where)
+        else:
+            field_name, _, default = rest.partition(" ")
+            item = _parse_field(type_, field_name, default.strip(), number, where)
+        if item.name in seen:
+            raise IdlError(*where, f"duplicate name {item.name!r}")
+        seen.add(item.name)
+        (constants if isinstance(item, Constant) else fields).append(item)
+    text = "\n".join(lines) + "\n" if lines else ""
+    return MessageSpec(pkg, name, tuple(fields), tuple(constants), text, path, kind)
+
+
+def _parse_type(text: str, pkg: str, where: tuple[str, int]) -> FieldType:
+    match = _TYPE.fullmatch(text)
+    if not match:
+        raise IdlError(*where, f"malformed type {text!r}")
+    base, string_bound, upper, size = match.group("base", "string_bound", "upper", "size")
+    if string_bound is not None and base not in STRINGS:
+        raise IdlError(*where, f"only strings take a bound '<=N', not {base!r}")
+    if upper and not size:
+        raise IdlError(*where, f"a bounded array needs a size: {text!r}")
+    array = None if size is None else "bounded" if upper else "fixed" if size else "unbounded"
+    bounds = {
+        "string_bound": int(string_bound) if string_bound else None,
+        "array": array,
+        "size": int(size) if size else None,
+    }
+    if base in PRIMITIVES:
+        return FieldType(base, **bounds)
+    parts = base.split("/")
+    if len(parts) == 3 and parts[1] == "msg":
+        parts = [parts[0], parts[2]]
+    if len(parts) == 1:
+        parts = [pkg, parts[0]]
+    if len(parts) != 2 or not _PACKAGE.fullmatch(parts[0]) or not _TYPE_NAME.fullmatch(parts[1]):
+        raise IdlError(*where, f"unknown type {text!r}")
+    return FieldType(parts[1], pkg=parts[0], **bounds)
+
+
+def _parse_field(
+    type_: FieldType, name: str, default: str, number: int, where: tuple[str, int]
+) -> Field:
+    if not _FIELD_NAME.fullmatch(name):
+        raise IdlError(*where, f"invalid field name {name!r} (lowercase, digits, single '_')")
+    if keyword.iskeyword(name) or name in _RESERVED:
+        raise IdlError(*where, f"field name {name!r} is reserved in Python")
+    if default and type_.is_nested:
+        raise IdlError(*where, "a message-typed field cannot have a default value")
+    value = _parse_value(type_, default, where) if default else None
+    return Field(name, type_, value, number)
+
+
+def _parse_constant(
+    type_: FieldType, match: re.Match[str], number: int, where: tuple[str, int]
+) -> Constant:
+    name, value = match.group("name", "value")
+    if not _CONSTANT_NAME.fullmatch(name):
+        raise IdlError(*where, f"invalid constant name {name!r} (uppercase, digits, '_')")
+    if type_.is_nested or type_.array:
+        raise IdlError(*where, "a constant must have a primitive, non-array type")
+    if not value.strip():
+        raise IdlError(*where, f"constant {name!r} has no value")
+    return Constant(name, type_, _parse_value(type_, value.strip(), where), number)
+
+
+def _parse_value(type_: FieldType, text: str, where: tuple[str, int]) -> Any:
+    if not type_.array:
+        return _parse_scalar(type_, text, where)
+    if not (text.startswith("[") and text.endswith("]")):
+        raise IdlError(*where, f"an array default must look like [a, b], got {text!r}")
+    items = [_parse_scalar(type_, item, where) for item in _split_items(text[1:-1], where)]
+    if type_.array == "fixed" and len(items) != type_.size:
+        raise IdlError(*where, f"expected {type_.size} values, got {len(items)}")
+    if type_.array == "bounded" and len(items) > type_.size:
+        raise IdlError(*where, f"expected at most {type_.size} values, got {len(items)}")
+    return bytes(items) if type_.base in OCTETS else items
+
+
+def _split_items(text: str, where: tuple[str, int]) -> list[str]:
+    items, quote, start = [], None, 0
+    for i, char in enumerate(text):
+        if char in "\"'" and quote in (None, char) and text[i - 1 : i] != "\\":
+            quote = None if quote else char
+        elif char == "," and not quote:
+            items.append(text[start:i])
+            start = i + 1
+    if quote:
+        raise IdlError(*where, f"unterminated string in {text!r}")
+    items.append(text[start:])
+    items = [item.strip() for item in items]
+    return [] if items == [""] else items
+
+
+def _parse_scalar(type_: FieldType, text: str, where: tuple[str, int]) -> Any:
+    base = type_.base
+    if base == "bool":
+        lowered = text.lower()
+        if lowered not in ("true", "false", "1", "0"):
+            raise IdlError(*where, f"expected true or false, got {text!r}")
+        return lowered in ("true", "1")
+    if base in STRINGS:
+        value = _unquote(text)
+        if type_.string_bound is not None and len(value) > type_.string_bound:
+            raise IdlError(*where, f"string longer than its bound {type_.string_bound}: {text!r}")
+        return value
+    try:
+        value = float(text) if base in FLOATS else int(text)
+    except ValueError:
+        raise IdlError(*where, f"expected a {base} value, got {text!r}") from None
+    low, high = INTEGER_RANGES.get(base, (value, value))
+    if not low <= value <= high:
+        raise IdlError(*where, f"{value} is out of range for {base} [{low}, {high}]")
+    return value
+
+
+def _unquote(text: str) -> str:
+    if len(text) >= 2 and text[0] == text[-1] and text[0] in "\"'":
+        quote = text[0]
+        return text[1:-1].replace("\\" + quote, quote).replace("\\\\", "\\")
+    return text
+
+
+def shipped_root() -> Path:
+    """The ``interfaces`` folder installed with actors (found from the package, not the cwd)."""
+    import interfaces
+
+    return Path(interfaces.__file__).resolve().parent
+
+
+def generate(roots: Sequence[str | Path] = ()) -> list[Path]:
+    """Generate the modules of every package under ``roots`` (default: the shipped root).
+
+    Writes only files whose text changed and returns their paths.  Raises
+    IdlError for a malformed source or an unknown referenced type, and
+    InterfaceError for a root or package that cannot be a Python package.
+    """
+    written = []
+    for path, text in render(roots).items():
+        if not path.exists() or path.read_text(encoding="utf-8") != text:
+            path.write_text(text, encoding="utf-8")
+            written.append(path)
+    return written
+
+
+def render(roots: Sequence[str | Path] = ()) -> dict[Path, str]:
+    """What :func:`generate` would write, path to text; reads sources and writes nothing.
+
+    Raises as :func:`generate` does.
+    """
+    from actors.idl_gen import render_module
+
+    given = [Path(root).resolve() for root in roots] or [shipped_root()]
+    packages = _find_packages([*given, shipped_root()])
+    modules = {
+        f"{pkg}/msg/{source.stem}": f"{root.name}.{pkg}.msg"
+        for pkg, (root, kinds) in packages.items()
+        for source in kinds.get("msg", ())
+    }
+    out: dict[Path, str] = {}
+    for pkg, (root, kinds) in packages.items():
+        if root not in given:
+            continue
+        for kind, sources in kinds.items():
+            specs = [_parse_file(source, pkg, kind) for source in sources]
+            _check_references(specs, modules)
+            text = render_module(specs, modules=modules, sources=f"{pkg}/{kind}/*.{kind}")
+            out[root / pkg / kind / "__init__.py"] = text
+        doc = f"The {pkg} interface package: ``{root.name}.{pkg}.msg`` and ``.srv``."
+        _where_missing(out, root / pkg / "__init__.py", doc)
+    for root in given:
+        _where_missing(out, root / "__init__.py", "Interface packages made by ``actors interface generate``.")
+    return out
+
+
+def _find_packages(roots: Iterable[Path]) -> dict[str, tuple[Path, dict[str, list[Path]]]]:
+    """Package name to its root and sources by kind; the first root holding a package wins."""
+    packages: dict[str, tuple[Path, dict[str, list[Path]]]] = {}
+    tops: dict[str, Path] = {}
+    for root in roots:
+        if not root.is_dir():
+            raise InterfaceError(f"{root}: no such interface root folder")
+        if not root.name.isidentifier() or keyword.iskeyword(root.name):
+            raise InterfaceError(f"{root}: a root's name must be a Python identifier")
+        if tops.setdefault(root.name, root) != root:
+            raise InterfaceError(f"{root}: another root is already named {root.name!r}")
+        found: dict[str, dict[str, list[Path]]] = {}
+        for kind in ("msg", "srv"):
+            for source in sorted(root.glob(f"*/{kind}/*.{kind}")):
+                found.setdefault(source.parent.parent.name, {}).setdefault(kind, []).append(source)
+        for pkg, kinds in found.items():
+            if not _PACKAGE.fullmatch(pkg) or keyword.iskeyword(pkg):
+                raise InterfaceError(f"{root / pkg}: invalid package name {pkg!r}")
+            packages.setdefault(pkg, (root, kinds))
+    return packages
+
+
+def _parse_file(path: Path, pkg: str, kind: str) -> MessageSpec | ServiceSpec:
+    if not _TYPE_NAME.fullmatch(path.stem):
+        raise InterfaceError(f"{path}: a type name must be CamelCase letters and digits")
+    parse = parse_message if kind == "msg" else parse_service
+    return parse(path.read_text(encoding="utf-8"), path=path, pkg=pkg, name=path.stem)
+
+
+def _check_references(specs: Iterable[MessageSpec | ServiceSpec], modules: dict[str, str]) -> None:
+    for spec in specs:
+        parts = (spec.request, spec.response) if isinstance(spec, ServiceSpec) else (spec,)
+        for part in parts:
+            for field in part.fields:
+                if field.type.is_nested and field.type.ros_type not in modules:
+                    raise IdlError(part.path, field.line, f"unknown type {field.type.ros_type!r}")
+
+
+def _where_missing(out: dict[Path, str], path: Path, doc: str) -> None:
+    if not path.exists():
+        out[path] = f'"""{doc}"""\n'

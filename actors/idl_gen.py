@@ -1,0 +1,231 @@
+"""Python source for one interface module: parsed specs to msgspec Struct classes.
+
+A generated class body is evaluated eagerly (no ``from __future__ import
+annotations``): annotations resolve once at import, and defaults that name
+another struct (``default_factory=Point``) need that struct defined first, so
+structs of one module are emitted dependencies first.  Integer ranges are
+module-level ``Annotated`` aliases (``_uint8``) so msgspec checks them on decode.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+from actors.errors import IdlError
+from actors.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType, MessageSpec, ServiceSpec
+
+__all__ = ["render_module"]
+
+# byte and char share uint8's alias: one range, one name.
+_ALIAS = {name: f"_{name}" for name in INTEGER_RANGES} | {"byte": "_uint8", "char": "_uint8"}
+_ZERO: dict[str, Any] = {"bool": False, "string": "", "wstring": ""} | dict.fromkeys(
+    FLOATS, 0.0
+) | dict.fromkeys(INTEGER_RANGES, 0)
+_PYTHON_TYPE = {"bool": "bool", "string": "str", "wstring": "str"} | dict.fromkeys(
+    FLOATS, "float"
+) | dict.fromkeys(INTEGER_RANGES, "int")
+
+
+def render_module(
+    specs: Sequence[MessageSpec] | Sequence[ServiceSpec],
+    *,
+    modules: Mapping[str, str],
+    sources: str,
+) -> str:
+    """The source of one module holding ``specs`` (all messages, or all services).
+
+    ``modules`` maps every known message (``pkg/msg/Name``) to the module
+    defining it; ``sources`` names the source files in the docstring.  Raises
+    IdlError for a message that (indirectly) contains itself.
+    """
+    if all(isinstance(spec, MessageSpec) for spec in specs):
+        local = {spec.ros_type: spec for spec in specs}
+        writer = _Writer(modules, {spec.name for spec in specs})
+        for spec in _dependencies_first(local):
+            writer.struct(spec)
+    else:
+        suffixes = ("", "_Request", "_Response")
+        writer = _Writer(modules, {spec.name + suffix for spec in specs for suffix in suffixes})
+        for service in specs:
+            writer.struct(service.request)
+            writer.struct(service.response)
+            writer.service(service)
+    return writer.source(sources)
+
+
+def _dependencies_first(local: Mapping[str, MessageSpec]) -> list[MessageSpec]:
+    ordered: dict[str, MessageSpec] = {}
+    visiting: set[str] = set()
+
+    def visit(spec: MessageSpec) -> None:
+        if spec.ros_type in ordered:
+            return
+        visiting.add(spec.ros_type)
+        for field in spec.fields:
+            target = local.get(field.type.ros_type)
+            if target is None:
+                continue
+            if target.ros_type in visiting:
+                raise IdlError(spec.path, field.line, f"{target.ros_type} contains itself")
+            visit(target)
+        visiting.discard(spec.ros_type)
+        ordered[spec.ros_type] = spec
+
+    for name in sorted(local):
+        visit(local[name])
+    return list(ordered.values())
+
+
+class _Writer:
+    """Accumulates class bodies, the names they import and the aliases they use."""
+
+    def __init__(self, modules: Mapping[str, str], defined: set[str]) -> None:
+        self.modules = modules
+        self.taken = set(defined)  # every Python name defined or imported so far
+        self.classes: list[str] = []
+        self.exports: list[str] = []
+        self.imports: dict[str, dict[str, str]] = {}  # module -> {name: local alias}
+        self.local_names: dict[str, str] = {}  # ROS type -> Python name in this module
+        self.aliases: set[str] = set()
+        self.annotated = False
+
+    def struct(self, spec: MessageSpec) -> None:
+        name = self._declare(spec.ros_type, spec.name)
+        body = [
+            f"class {name}(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):",
+            f'    """``{spec.ros_type}``."""',
+            "",
+            f"    __ros_type__: ClassVar[str] = {_literal(spec.ros_type)}",
+            f"    __ros_definition__: ClassVar[str] = {_text_literal(spec.text)}",
+        ]
+        body += [
+            f"    {c.name}: ClassVar[{_PYTHON_TYPE[c.type.base]}] = {_literal(c.value)}"
+            for c in spec.constants
+        ]
+        if spec.fields:
+            body.append("")
+        body += [
+            f"    {f.name}: {self._annotation(f.type)} = {self._default(f.type, f.default)}"
+            for f in spec.fields
+        ]
+        self.classes.append("\n".join(body))
+
+    def service(self, spec: ServiceSpec) -> None:
+        name = self._declare(spec.ros_type, spec.name)
+        self.classes.append(
+            "\n".join(
+                [
+                    f"class {name}:",
+                    f'    """``{spec.ros_type}``: its ``Request`` and ``Response`` messages."""',
+                    "",
+                    f"    __ros_type__: ClassVar[str] = {_literal(spec.ros_type)}",
+                    f"    __ros_definition__: ClassVar[str] = {_text_literal(spec.text)}",
+                    f"    Request = {self.local_names[spec.request.ros_type]}",
+                    f"    Response = {self.local_names[spec.response.ros_type]}",
+                ]
+            )
+        )
+
+    def source(self, sources: str) -> str:
+        ranges = {_ALIAS[base]: bounds for base, bounds in INTEGER_RANGES.items()}
+        aliases = [
+            f"{alias} = Annotated[int, msgspec.Meta(ge={low}, le={high})]"
+            for alias, (low, high) in ranges.items()
+            if alias in self.aliases
+        ]
+        typing_names = "Annotated, ClassVar" if self.annotated or aliases else "ClassVar"
+        imports = [_import(module, sorted(n if n == a else f"{n} as {a}" for n, a in names.items()))
+                   for module, names in sorted(self.imports.items())]
+        sections = [
+            f'"""Generated from {sources} by `python -m actors interface generate`; do not edit."""',
+            f"from typing import {typing_names}\n\nimport msgspec",
+            "\n".join(imports),
+            "\n".join(["__all__ = [", *(f"    {_literal(n)}," for n in sorted(self.exports)), "]"]),
+            "\n".join(aliases),
+        ]
+        head = "\n\n".join(section for section in sections if section)
+        return head + "\n\n\n" + "\n\n\n".join(self.classes) + "\n"
+
+    def _declare(self, ros_type: str, name: str) -> str:
+        self.local_names[ros_type] = name
+        self.exports.append(name)
+        return name
+
+    def _type_name(self, type_: FieldType) -> str:
+        if type_.ros_type in self.local_names:
+            return self.local_names[type_.ros_type]
+        imported = self.imports.setdefault(self.modules[type_.ros_type], {})
+        if type_.base not in imported:
+            clash = type_.base in self.taken
+            imported[type_.base] = f"{type_.pkg}_{type_.base}" if clash else type_.base
+            self.taken.add(imported[type_.base])
+        return imported[type_.base]
+
+    def _annotation(self, type_: FieldType) -> str:
+        if type_.array and type_.base in OCTETS:
+            return self._sized("bytes", type_)
+        if type_.is_nested:
+            element = self._type_name(type_)
+        elif type_.base in INTEGER_RANGES:
+            element = _ALIAS[type_.base]
+            self.aliases.add(element)
+        elif type_.base in STRINGS and type_.string_bound is not None:
+            self.annotated = True
+            element = f"Annotated[str, msgspec.Meta(max_length={type_.string_bound})]"
+        else:
+            element = _PYTHON_TYPE[type_.base]
+        return self._sized(f"list[{element}]", type_) if type_.array else element
+
+    def _sized(self, annotation: str, type_: FieldType) -> str:
+        if type_.array == "unbounded":
+            return annotation
+        self.annotated = True
+        low = f"min_length={type_.size}, " if type_.array == "fixed" else ""
+        return f"Annotated[{annotation}, msgspec.Meta({low}max_length={type_.size})]"
+
+    def _default(self, type_: FieldType, value: Any) -> str:
+        fixed = type_.array == "fixed"
+        if type_.array and type_.base in OCTETS:
+            return _literal(value) if value is not None else f"bytes({type_.size})" if fixed else 'b""'
+        if type_.array:
+            if value is not None:
+                factory = f"lambda: {_literal(value)}"
+            elif fixed and type_.is_nested:
+                factory = f"lambda: [{self._type_name(type_)}() for _ in range({type_.size})]"
+            elif fixed:
+                factory = f"lambda: [{_literal(_ZERO[type_.base])}] * {type_.size}"
+            else:
+                factory = "list"
+            return f"msgspec.field(default_factory={factory})"
+        if type_.is_nested:
+            return f"msgspec.field(default_factory={self._type_name(type_)})"
+        return _literal(_ZERO[type_.base] if value is None else value)
+
+
+def _literal(value: Any) -> str:
+    """A Python literal for a parsed default or constant."""
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)
+    if isinstance(value, float) and not math.isfinite(value):
+        return f'float("{value}")'
+    if isinstance(value, list):
+        return "[" + ", ".join(_literal(item) for item in value) + "]"
+    return repr(value)
+
+
+def _text_literal(text: str) -> str:
+    """A multi-line string literal, one source line per definition line."""
+    if not text:
+        return '""'
+    lines = text.splitlines(keepends=True)
+    return "(\n" + "".join(f"        {_literal(line)}\n" for line in lines) + "    )"
+
+
+def _import(module: str, names: list[str]) -> str:
+    line = f"from {module} import {', '.join(names)}"
+    if len(line) <= 99:
+        return line
+    return f"from {module} import (\n" + "".join(f"    {name},\n" for name in names) + ")"

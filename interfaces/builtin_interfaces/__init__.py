@@ -1,0 +1,1 @@
+"""The builtin_interfaces interface package: ``interfaces.builtin_interfaces.msg`` and ``.srv``."""

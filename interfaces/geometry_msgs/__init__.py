@@ -1,0 +1,1 @@
+"""The geometry_msgs interface package: ``interfaces.geometry_msgs.msg`` and ``.srv``."""

@@ -1,0 +1,1 @@
+"""The nav_msgs interface package: ``interfaces.nav_msgs.msg`` and ``.srv``."""

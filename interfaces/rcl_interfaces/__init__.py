@@ -1,0 +1,1 @@
+"""The rcl_interfaces interface package: ``interfaces.rcl_interfaces.msg`` and ``.srv``."""

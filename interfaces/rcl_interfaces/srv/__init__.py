@@ -1,0 +1,234 @@
+"""Generated from rcl_interfaces/srv/*.srv by `python -m actors interface generate`; do not edit."""
+
+from typing import Annotated, ClassVar
+
+import msgspec
+
+from interfaces.rcl_interfaces.msg import (
+    ListParametersResult,
+    Parameter,
+    ParameterDescriptor,
+    ParameterValue,
+    SetParametersResult,
+)
+
+__all__ = [
+    "DescribeParameters",
+    "DescribeParameters_Request",
+    "DescribeParameters_Response",
+    "GetParameters",
+    "GetParameters_Request",
+    "GetParameters_Response",
+    "ListParameters",
+    "ListParameters_Request",
+    "ListParameters_Response",
+    "SetParameters",
+    "SetParameters_Request",
+    "SetParameters_Response",
+]
+
+_uint64 = Annotated[int, msgspec.Meta(ge=0, le=18446744073709551615)]
+
+
+class DescribeParameters_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/DescribeParameters_Request``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/DescribeParameters_Request"
+    __ros_definition__: ClassVar[str] = (
+        "# A list of parameters of which to get the descriptor.\n"
+        "string[] names\n"
+        "\n"
+    )
+
+    names: list[str] = msgspec.field(default_factory=list)
+
+
+class DescribeParameters_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/DescribeParameters_Response``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/DescribeParameters_Response"
+    __ros_definition__: ClassVar[str] = (
+        "# A list of the descriptors of all parameters requested in the same order\n"
+        "# as they were requested. This list has the same length as the list of\n"
+        "# parameters requested.\n"
+        "ParameterDescriptor[] descriptors\n"
+    )
+
+    descriptors: list[ParameterDescriptor] = msgspec.field(default_factory=list)
+
+
+class DescribeParameters:
+    """``rcl_interfaces/srv/DescribeParameters``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/DescribeParameters"
+    __ros_definition__: ClassVar[str] = (
+        "# A list of parameters of which to get the descriptor.\n"
+        "string[] names\n"
+        "\n"
+        "---\n"
+        "# A list of the descriptors of all parameters requested in the same order\n"
+        "# as they were requested. This list has the same length as the list of\n"
+        "# parameters requested.\n"
+        "ParameterDescriptor[] descriptors\n"
+    )
+    Request = DescribeParameters_Request
+    Response = DescribeParameters_Response
+
+
+class GetParameters_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/GetParameters_Request``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameters_Request"
+    __ros_definition__: ClassVar[str] = (
+        "# TODO(wjwwood): Decide on the rules for grouping, nodes, and parameter \"names\"\n"
+        "# in general, then link to that.\n"
+        "#\n"
+        "# For more information about parameters and naming rules, see:\n"
+        "# https://design.ros2.org/articles/ros_parameters.html\n"
+        "# https://github.com/ros2/design/pull/241\n"
+        "\n"
+        "# A list of parameter names to get.\n"
+        "string[] names\n"
+        "\n"
+    )
+
+    names: list[str] = msgspec.field(default_factory=list)
+
+
+class GetParameters_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/GetParameters_Response``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameters_Response"
+    __ros_definition__: ClassVar[str] = (
+        "# List of values which is the same length and order as the provided names. If a\n"
+        "# parameter was not yet set, the value will have PARAMETER_NOT_SET as the\n"
+        "# type.\n"
+        "ParameterValue[] values\n"
+    )
+
+    values: list[ParameterValue] = msgspec.field(default_factory=list)
+
+
+class GetParameters:
+    """``rcl_interfaces/srv/GetParameters``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameters"
+    __ros_definition__: ClassVar[str] = (
+        "# TODO(wjwwood): Decide on the rules for grouping, nodes, and parameter \"names\"\n"
+        "# in general, then link to that.\n"
+        "#\n"
+        "# For more information about parameters and naming rules, see:\n"
+        "# https://design.ros2.org/articles/ros_parameters.html\n"
+        "# https://github.com/ros2/design/pull/241\n"
+        "\n"
+        "# A list of parameter names to get.\n"
+        "string[] names\n"
+        "\n"
+        "---\n"
+        "# List of values which is the same length and order as the provided names. If a\n"
+        "# parameter was not yet set, the value will have PARAMETER_NOT_SET as the\n"
+        "# type.\n"
+        "ParameterValue[] values\n"
+    )
+    Request = GetParameters_Request
+    Response = GetParameters_Response
+
+
+class ListParameters_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/ListParameters_Request``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/ListParameters_Request"
+    __ros_definition__: ClassVar[str] = (
+        "# Recursively get parameters with unlimited depth.\n"
+        "uint64 DEPTH_RECURSIVE=0\n"
+        "\n"
+        "# The list of parameter prefixes to query.\n"
+        "string[] prefixes\n"
+        "\n"
+        "# Relative depth from given prefixes to return.\n"
+        "#\n"
+        "# Use DEPTH_RECURSIVE to get the recursive parameters and prefixes for each prefix.\n"
+        "uint64 depth\n"
+        "\n"
+    )
+    DEPTH_RECURSIVE: ClassVar[int] = 0
+
+    prefixes: list[str] = msgspec.field(default_factory=list)
+    depth: _uint64 = 0
+
+
+class ListParameters_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/ListParameters_Response``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/ListParameters_Response"
+    __ros_definition__: ClassVar[str] = (
+        "# The list of parameter names and their prefixes.\n"
+        "ListParametersResult result\n"
+    )
+
+    result: ListParametersResult = msgspec.field(default_factory=ListParametersResult)
+
+
+class ListParameters:
+    """``rcl_interfaces/srv/ListParameters``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/ListParameters"
+    __ros_definition__: ClassVar[str] = (
+        "# Recursively get parameters with unlimited depth.\n"
+        "uint64 DEPTH_RECURSIVE=0\n"
+        "\n"
+        "# The list of parameter prefixes to query.\n"
+        "string[] prefixes\n"
+        "\n"
+        "# Relative depth from given prefixes to return.\n"
+        "#\n"
+        "# Use DEPTH_RECURSIVE to get the recursive parameters and prefixes for each prefix.\n"
+        "uint64 depth\n"
+        "\n"
+        "---\n"
+        "# The list of parameter names and their prefixes.\n"
+        "ListParametersResult result\n"
+    )
+    Request = ListParameters_Request
+    Response = ListParameters_Response
+
+
+class SetParameters_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/SetParameters_Request``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParameters_Request"
+    __ros_definition__: ClassVar[str] = (
+        "# A list of parameters to set.\n"
+        "Parameter[] parameters\n"
+        "\n"
+    )
+
+    parameters: list[Parameter] = msgspec.field(default_factory=list)
+
+
+class SetParameters_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/SetParameters_Response``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParameters_Response"
+    __ros_definition__: ClassVar[str] = (
+        "# Indicates whether setting each parameter succeeded or not and why.\n"
+        "SetParametersResult[] results\n"
+    )
+
+    results: list[SetParametersResult] = msgspec.field(default_factory=list)
+
+
+class SetParameters:
+    """``rcl_interfaces/srv/SetParameters``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParameters"
+    __ros_definition__: ClassVar[str] = (
+        "# A list of parameters to set.\n"
+        "Parameter[] parameters\n"
+        "\n"
+        "---\n"
+        "# Indicates whether setting each parameter succeeded or not and why.\n"
+        "SetParametersResult[] results\n"
+    )
+    Request = SetParameters_Request
+    Response = SetParameters_Response

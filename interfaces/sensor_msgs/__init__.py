@@ -1,0 +1,1 @@
+"""The sensor_msgs interface package: ``interfaces.sensor_msgs.msg`` and ``.srv``."""

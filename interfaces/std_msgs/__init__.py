@@ -1,0 +1,1 @@
+"""The std_msgs interface package: ``interfaces.std_msgs.msg`` and ``.srv``."""

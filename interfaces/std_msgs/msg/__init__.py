@@ -1,0 +1,337 @@
+"""Generated from std_msgs/msg/*.msg by `python -m actors interface generate`; do not edit."""
+
+from typing import Annotated, ClassVar
+
+import msgspec
+
+from interfaces.builtin_interfaces.msg import Time
+
+__all__ = [
+    "Bool",
+    "Byte",
+    "Char",
+    "ColorRGBA",
+    "Empty",
+    "Float32",
+    "Float64",
+    "Float64MultiArray",
+    "Header",
+    "Int16",
+    "Int32",
+    "Int64",
+    "Int64MultiArray",
+    "Int8",
+    "MultiArrayDimension",
+    "MultiArrayLayout",
+    "String",
+    "UInt16",
+    "UInt32",
+    "UInt64",
+    "UInt8",
+]
+
+_uint8 = Annotated[int, msgspec.Meta(ge=0, le=255)]
+_int8 = Annotated[int, msgspec.Meta(ge=-128, le=127)]
+_int16 = Annotated[int, msgspec.Meta(ge=-32768, le=32767)]
+_uint16 = Annotated[int, msgspec.Meta(ge=0, le=65535)]
+_int32 = Annotated[int, msgspec.Meta(ge=-2147483648, le=2147483647)]
+_uint32 = Annotated[int, msgspec.Meta(ge=0, le=4294967295)]
+_int64 = Annotated[int, msgspec.Meta(ge=-9223372036854775808, le=9223372036854775807)]
+_uint64 = Annotated[int, msgspec.Meta(ge=0, le=18446744073709551615)]
+
+
+class Bool(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Bool``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Bool"
+    __ros_definition__: ClassVar[str] = (
+        "bool data\n"
+    )
+
+    data: bool = False
+
+
+class Byte(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Byte``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Byte"
+    __ros_definition__: ClassVar[str] = (
+        "byte data\n"
+    )
+
+    data: _uint8 = 0
+
+
+class Char(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Char``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Char"
+    __ros_definition__: ClassVar[str] = (
+        "char data\n"
+    )
+
+    data: _uint8 = 0
+
+
+class ColorRGBA(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/ColorRGBA``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/ColorRGBA"
+    __ros_definition__: ClassVar[str] = (
+        "float32 r\n"
+        "float32 g\n"
+        "float32 b\n"
+        "float32 a\n"
+    )
+
+    r: float = 0.0
+    g: float = 0.0
+    b: float = 0.0
+    a: float = 0.0
+
+
+class Empty(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Empty``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Empty"
+    __ros_definition__: ClassVar[str] = ""
+
+
+class Float32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Float32``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Float32"
+    __ros_definition__: ClassVar[str] = (
+        "float32 data\n"
+    )
+
+    data: float = 0.0
+
+
+class Float64(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Float64``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Float64"
+    __ros_definition__: ClassVar[str] = (
+        "float64 data\n"
+    )
+
+    data: float = 0.0
+
+
+class MultiArrayDimension(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/MultiArrayDimension``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/MultiArrayDimension"
+    __ros_definition__: ClassVar[str] = (
+        "string label   # label of given dimension\n"
+        "uint32 size    # size of given dimension (in type units)\n"
+        "uint32 stride  # stride of given dimension\n"
+    )
+
+    label: str = ""
+    size: _uint32 = 0
+    stride: _uint32 = 0
+
+
+class MultiArrayLayout(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/MultiArrayLayout``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/MultiArrayLayout"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "# The multiarray declares a generic multi-dimensional array of a\n"
+        "# particular data type.  Dimensions are ordered from outer most\n"
+        "# to inner most.\n"
+        "#\n"
+        "# Accessors should ALWAYS be written in terms of dimension stride\n"
+        "# and specified outer-most dimension first.\n"
+        "#\n"
+        "# multiarray(i,j,k) = data[data_offset + dim_stride[1]*i + dim_stride[2]*j + k]\n"
+        "#\n"
+        "# A standard, 3-channel 640x480 image with interleaved color channels\n"
+        "# would be specified as:\n"
+        "#\n"
+        "# dim[0].label  = \"height\"\n"
+        "# dim[0].size   = 480\n"
+        "# dim[0].stride = 3*640*480 = 921600  (note dim[0] stride is just size of image)\n"
+        "# dim[1].label  = \"width\"\n"
+        "# dim[1].size   = 640\n"
+        "# dim[1].stride = 3*640 = 1920\n"
+        "# dim[2].label  = \"channel\"\n"
+        "# dim[2].size   = 3\n"
+        "# dim[2].stride = 3\n"
+        "#\n"
+        "# multiarray(i,j,k) refers to the ith row, jth column, and kth channel.\n"
+        "\n"
+        "MultiArrayDimension[] dim # Array of dimension properties\n"
+        "uint32 data_offset        # padding bytes at front of data\n"
+    )
+
+    dim: list[MultiArrayDimension] = msgspec.field(default_factory=list)
+    data_offset: _uint32 = 0
+
+
+class Float64MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Float64MultiArray``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Float64MultiArray"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "# Please look at the MultiArrayLayout message definition for\n"
+        "# documentation on all multiarrays.\n"
+        "\n"
+        "MultiArrayLayout  layout        # specification of data layout\n"
+        "float64[]    data          # array of data\n"
+    )
+
+    layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
+    data: list[float] = msgspec.field(default_factory=list)
+
+
+class Header(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Header``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Header"
+    __ros_definition__: ClassVar[str] = (
+        "# Standard metadata for higher-level stamped data types.\n"
+        "# This is generally used to communicate timestamped data\n"
+        "# in a particular coordinate frame.\n"
+        "\n"
+        "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+        "builtin_interfaces/Time stamp\n"
+        "\n"
+        "# Transform frame with which this data is associated.\n"
+        "string frame_id\n"
+    )
+
+    stamp: Time = msgspec.field(default_factory=Time)
+    frame_id: str = ""
+
+
+class Int16(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Int16``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Int16"
+    __ros_definition__: ClassVar[str] = (
+        "int16 data\n"
+    )
+
+    data: _int16 = 0
+
+
+class Int32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Int32``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Int32"
+    __ros_definition__: ClassVar[str] = (
+        "int32 data\n"
+    )
+
+    data: _int32 = 0
+
+
+class Int64(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Int64``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Int64"
+    __ros_definition__: ClassVar[str] = (
+        "int64 data\n"
+    )
+
+    data: _int64 = 0
+
+
+class Int64MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Int64MultiArray``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Int64MultiArray"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "# Please look at the MultiArrayLayout message definition for\n"
+        "# documentation on all multiarrays.\n"
+        "\n"
+        "MultiArrayLayout  layout        # specification of data layout\n"
+        "int64[]      data          # array of data\n"
+    )
+
+    layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
+    data: list[_int64] = msgspec.field(default_factory=list)
+
+
+class Int8(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Int8``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Int8"
+    __ros_definition__: ClassVar[str] = (
+        "int8 data\n"
+    )
+
+    data: _int8 = 0
+
+
+class String(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/String``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/String"
+    __ros_definition__: ClassVar[str] = (
+        "string data\n"
+    )
+
+    data: str = ""
+
+
+class UInt16(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/UInt16``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/UInt16"
+    __ros_definition__: ClassVar[str] = (
+        "uint16 data\n"
+    )
+
+    data: _uint16 = 0
+
+
+class UInt32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/UInt32``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/UInt32"
+    __ros_definition__: ClassVar[str] = (
+        "uint32 data\n"
+    )
+
+    data: _uint32 = 0
+
+
+class UInt64(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/UInt64``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/UInt64"
+    __ros_definition__: ClassVar[str] = (
+        "uint64 data\n"
+    )
+
+    data: _uint64 = 0
+
+
+class UInt8(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/UInt8``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/UInt8"
+    __ros_definition__: ClassVar[str] = (
+        "uint8 data\n"
+    )
+
+    data: _uint8 = 0

@@ -1,0 +1,54 @@
+"""Generated from tutorial_interfaces/srv/*.srv by `python -m actors interface generate`; do not edit."""
+
+from typing import Annotated, ClassVar
+
+import msgspec
+
+__all__ = [
+    "AddThreeInts",
+    "AddThreeInts_Request",
+    "AddThreeInts_Response",
+]
+
+_int64 = Annotated[int, msgspec.Meta(ge=-9223372036854775808, le=9223372036854775807)]
+
+
+class AddThreeInts_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``tutorial_interfaces/srv/AddThreeInts_Request``."""
+
+    __ros_type__: ClassVar[str] = "tutorial_interfaces/srv/AddThreeInts_Request"
+    __ros_definition__: ClassVar[str] = (
+        "int64 a\n"
+        "int64 b\n"
+        "int64 c\n"
+    )
+
+    a: _int64 = 0
+    b: _int64 = 0
+    c: _int64 = 0
+
+
+class AddThreeInts_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``tutorial_interfaces/srv/AddThreeInts_Response``."""
+
+    __ros_type__: ClassVar[str] = "tutorial_interfaces/srv/AddThreeInts_Response"
+    __ros_definition__: ClassVar[str] = (
+        "int64 sum\n"
+    )
+
+    sum: _int64 = 0
+
+
+class AddThreeInts:
+    """``tutorial_interfaces/srv/AddThreeInts``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "tutorial_interfaces/srv/AddThreeInts"
+    __ros_definition__: ClassVar[str] = (
+        "int64 a\n"
+        "int64 b\n"
+        "int64 c\n"
+        "---\n"
+        "int64 sum\n"
+    )
+    Request = AddThreeInts_Request
+    Response = AddThreeInts_Response
