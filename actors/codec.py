@@ -1,0 +1,368 @@
+"""Interface types by ROS name, and their codecs: msgpack, JSON, YAML, JSON Schema, MCAP text.
+
+The registry maps ``pkg/msg/Name`` (and ``pkg/srv/Name``, ``pkg/Name``) to the
+generated classes, importing a package's module only when one of its types is
+first asked for.  It is process-wide, like ``sys.modules``: types are
+definitions, not state.  Roots (see :mod:`actors.idl`) are searched newest
+registered first, the shipped ``interfaces`` root last.
+
+``encode``/``decode`` (msgpack) and ``encode_json``/``decode_json`` are the
+hot paths: encoders are shared, decoders cached per type, and nothing is
+validated on encode (a struct does not check its fields when built; the
+receiving side's decode does).  JSON cannot carry NaN or infinity: msgspec
+writes them as ``null``, which does not decode as a float.
+"""
+
+from __future__ import annotations
+
+import functools
+import importlib
+import sys
+from pathlib import Path
+from types import ModuleType
+from typing import Any, TypeVar
+
+import msgspec
+import msgspec.inspect as mi
+
+from actors.errors import InterfaceError, MessageValidationError, UnknownInterfaceError
+
+__all__ = [
+    "convert",
+    "decode",
+    "decode_json",
+    "definition_text",
+    "encode",
+    "encode_json",
+    "from_yaml",
+    "get_type",
+    "json_schema",
+    "list_types",
+    "register_module",
+    "register_root",
+    "ros_name",
+    "to_builtins",
+    "to_yaml",
+]
+
+T = TypeVar("T")
+
+_roots: list[Path] = []  # user roots, newest first; the shipped root is implied last
+_registered: dict[str, type] = {}  # from register_module
+_types: dict[str, type] = {}  # every name already resolved, in the form it was asked for
+_msgpack_encoder = msgspec.msgpack.Encoder()
+_json_encoder = msgspec.json.Encoder()
+_msgpack_decoders: dict[Any, msgspec.msgpack.Decoder[Any]] = {}
+_json_decoders: dict[Any, msgspec.json.Decoder[Any]] = {}
+
+
+# --------------------------------------------------------------------------- registry
+
+
+def get_type(name: str) -> type:
+    """The message or service class named ``pkg/msg/Name``, ``pkg/srv/Name`` or ``pkg/Name``.
+
+    The short form tries the message first, then the service.  A service's
+    ``pkg/srv/Name_Request`` and ``_Response`` are found too.  Raises
+    UnknownInterfaceError when no registered module or root defines it.
+    """
+    try:
+        return _types[name]
+    except KeyError:
+        pass
+    parts = name.split("/")
+    if len(parts) == 2:
+        candidates = [f"{parts[0]}/msg/{parts[1]}", f"{parts[0]}/srv/{parts[1]}"]
+    elif len(parts) == 3 and parts[1] in ("msg", "srv"):
+        candidates = [name]
+    else:
+        raise UnknownInterfaceError(
+            f"{name!r} is not an interface name (expected pkg/msg/Name, pkg/srv/Name or pkg/Name)"
+        )
+    for full_name in candidates:
+        found = _registered.get(full_name) or _import_type(full_name)
+        if found is not None:
+            _types[name] = found
+            return found
+    raise UnknownInterfaceError(f"unknown interface type {name!r}")
+
+
+def ros_name(type_: Any) -> str:
+    """The ROS name (``pkg/msg/Name``) of an interface class or message.
+
+    Raises TypeError for anything that is not a generated interface type.
+    """
+    name = getattr(type_, "__ros_type__", None)
+    if not isinstance(name, str):
+        raise TypeError(f"{type_!r} is not an interface type (it has no __ros_type__)")
+    return name
+
+
+def list_types() -> list[str]:
+    """The ROS names of every message and service known: all roots and registered modules, sorted.
+
+    Services' ``_Request``/``_Response`` messages are not listed separately.
+    """
+    from actors.idl import shipped_root
+
+    names = {name for name in _registered if not name.endswith(("_Request", "_Response"))}
+    for root in [*_roots, shipped_root()]:
+        for kind in ("msg", "srv"):
+            names.update(
+                f"{source.parent.parent.name}/{kind}/{source.stem}"
+                for source in root.glob(f"*/{kind}/*.{kind}")
+            )
+    return sorted(names)
+
+
+def register_root(path: str | Path) -> None:
+    """Make the generated types of a user's interface root findable by name.
+
+    The root's folder name is its top-level package (``my_root.my_pkg.msg``);
+    its parent folder is appended to ``sys.path`` when missing.  The newest
+    root wins over older ones and over the shipped root.  Raises
+    InterfaceError when ``path`` is not a folder.
+    """
+    root = Path(path).resolve()
+    if not root.is_dir():
+        raise InterfaceError(f"{root}: no such interface root folder")
+    if str(root.parent) not in sys.path:
+        sys.path.append(str(root.parent))
+    importlib.invalidate_caches()  # its modules may have been generated after start-up
+    if root in _roots:
+        _roots.remove(root)
+    _roots.insert(0, root)
+    _types.clear()
+
+
+def register_module(module: ModuleType | str) -> list[str]:
+    """Register every interface class defined in ``module`` (a module or its import name).
+
+    Registered types win over roots.  Returns the ROS names registered.
+    Raises ImportError when the module cannot be imported.
+    """
+    if isinstance(module, str):
+        module = importlib.import_module(module)
+    found = {
+        value.__ros_type__: value
+        for value in vars(module).values()
+        if isinstance(value, type) and isinstance(getattr(value, "__ros_type__", None), str)
+    }
+    _registered.update(found)
+    _types.clear()
+    return sorted(found)
+
+
+def _import_type(full_name: str) -> type | None:
+    pkg, kind, name = full_name.split("/")
+    if not (pkg.isidentifier() and name.isidentifier()):
+        return None
+    service, _, part = name.rpartition("_")
+    attribute = service if part in ("Request", "Response") and kind == "srv" else name
+    for top in [root.name for root in _roots] + ["interfaces"]:
+        module_name = f"{top}.{pkg}.{kind}"
+        try:
+            module = importlib.import_module(module_name)
+        except ModuleNotFoundError as exc:
+            if exc.name and module_name.startswith(exc.name):
+                continue  # this root has no such package
+            raise
+        found = getattr(module, attribute, None)
+        if found is not None and attribute != name:
+            found = getattr(found, part, None)
+        if getattr(found, "__ros_type__", None) == full_name:
+            return found
+    return None
+
+
+def _resolve(type_: type[T] | str) -> type[T]:
+    return get_type(type_) if isinstance(type_, str) else type_
+
+
+def _invalid(type_: Any, problem: object) -> MessageValidationError:
+    name = getattr(type_, "__ros_type__", getattr(type_, "__name__", repr(type_)))
+    return MessageValidationError(f"{name}: {problem}")
+
+
+# --------------------------------------------------------------------------- binary codecs
+
+
+def encode(msg: Any) -> bytes:
+    """``msg`` as msgpack bytes (a map of field names).  Raises TypeError for an unencodable value."""
+    return _msgpack_encoder.encode(msg)
+
+
+def decode(data: bytes, type_: type[T] | str) -> T:
+    """A ``type_`` message from msgpack ``data``, fully validated.
+
+    ``type_`` is a class or a ROS name.  Raises MessageValidationError naming
+    the type and field path (``std_msgs/msg/UInt8: Expected `int` <= 255 -
+    at `$.data```), UnknownInterfaceError for an unknown name.
+    """
+    decoder = _msgpack_decoders.get(type_)
+    if decoder is None:
+        decoder = _msgpack_decoders[type_] = msgspec.msgpack.Decoder(_resolve(type_))
+    try:
+        return decoder.decode(data)
+    except msgspec.DecodeError as exc:
+        raise _invalid(decoder.type, exc) from None
+
+
+def encode_json(msg: Any) -> bytes:
+    """``msg`` as compact JSON bytes.  Raises TypeError for an unencodable value."""
+    return _json_encoder.encode(msg)
+
+
+def decode_json(data: bytes | str, type_: type[T] | str) -> T:
+    """A ``type_`` message from JSON ``data``; raises as :func:`decode` does."""
+    decoder = _json_decoders.get(type_)
+    if decoder is None:
+        decoder = _json_decoders[type_] = msgspec.json.Decoder(_resolve(type_))
+    try:
+        return decoder.decode(data)
+    except msgspec.DecodeError as exc:
+        raise _invalid(decoder.type, exc) from None
+
+
+# --------------------------------------------------------------------------- plain data and YAML
+
+
+def convert(obj: Any, type_: type[T] | str) -> T:
+    """A ``type_`` message from plain data (dicts, lists, numbers, strings), validated.
+
+    Missing fields take their defaults; unknown fields are errors.  Ints are
+    accepted for float fields, numeric strings too (YAML reads ``1e-3`` as a
+    string), and lists of ints for ``uint8[]``/``byte[]`` fields.  Raises
+    MessageValidationError naming the type and the field path.
+    """
+    cls = _resolve(type_)
+    try:
+        return msgspec.convert(_coerce(obj, _info(cls)), cls)
+    except msgspec.ValidationError as exc:
+        raise _invalid(cls, exc) from None
+
+
+def from_yaml(text: str, type_: type[T] | str) -> T:
+    """A ``type_`` message from YAML or JSON text, as ``ros2 topic pub`` takes it.
+
+    ``"data: true"``, ``"{linear: {x: 0.2}, angular: {z: 0.5}}"``; an empty
+    text means all defaults.  Raises MessageValidationError for text that is
+    not a YAML mapping, or as :func:`convert` does.
+    """
+    cls = _resolve(type_)
+    import yaml
+
+    try:
+        obj = yaml.safe_load(text)
+    except yaml.YAMLError as exc:
+        problem = " ".join(str(getattr(exc, "problem", None) or exc).split())
+        raise _invalid(cls, f"invalid YAML: {problem}") from None
+    if obj is None:
+        obj = {}
+    if not isinstance(obj, dict):
+        raise _invalid(cls, f"expected a mapping such as 'field: value', got {text!r}")
+    return convert(obj, cls)
+
+
+def to_builtins(msg: Any) -> dict[str, Any]:
+    """``msg`` as plain dicts and lists in field order; bytes become lists of ints, floats stay floats."""
+    return _plain(msg, _info(type(msg)))
+
+
+def to_yaml(msg: Any) -> str:
+    """``msg`` as block-style YAML, the shape ``ros2 topic echo`` prints (without its ``---``)."""
+    import yaml
+
+    return yaml.safe_dump(
+        to_builtins(msg), sort_keys=False, default_flow_style=False, allow_unicode=True
+    )
+
+
+@functools.cache
+def _info(cls: type) -> mi.Type:
+    return mi.type_info(cls)
+
+
+def _plain(value: Any, info: mi.Type) -> Any:
+    if isinstance(info, mi.StructType):
+        return {field.name: _plain(getattr(value, field.name), field.type) for field in info.fields}
+    if isinstance(info, mi.ListType):
+        return [_plain(item, info.item_type) for item in value]
+    if isinstance(info, mi.BytesType):
+        return list(value)
+    if isinstance(info, mi.FloatType):
+        return float(value)
+    return value
+
+
+def _coerce(obj: Any, info: mi.Type) -> Any:
+    """``obj`` with the loosenings :func:`convert` allows applied; msgspec checks the rest."""
+    if isinstance(info, mi.StructType) and isinstance(obj, dict):
+        fields = {field.encode_name: field.type for field in info.fields}
+        return {key: _coerce(value, fields[key]) if key in fields else value for key, value in obj.items()}
+    if isinstance(info, mi.ListType) and isinstance(obj, list):
+        return [_coerce(item, info.item_type) for item in obj]
+    try:
+        if isinstance(info, mi.BytesType) and isinstance(obj, list):
+            return bytes(obj)
+        if isinstance(info, mi.FloatType) and isinstance(obj, str):
+            return float(obj)
+    except (TypeError, ValueError):
+        pass  # left as is, so that msgspec's error names the field
+    return obj
+
+
+# --------------------------------------------------------------------------- schemas
+
+
+def json_schema(type_: type | str) -> dict[str, Any]:
+    """The JSON Schema of a message type: an ``object`` titled with its ROS name.
+
+    Nested message types are under ``$defs``, each titled with its ROS name.
+    Raises UnknownInterfaceError for an unknown name.
+    """
+    cls = _resolve(type_)
+    dependencies = _dependencies(cls)
+    schema = msgspec.json.schema(cls)
+    definitions: dict[str, Any] = schema["$defs"]
+    # msgspec names a definition after its class, or after its module path
+    # when two classes share a name; mirror that to find each class's entry.
+    short_names = [c.__name__ for c in (cls, *dependencies)]
+    for dependency in (cls, *dependencies):
+        key = dependency.__name__
+        if short_names.count(key) > 1:
+            key = f"{dependency.__module__}.{dependency.__qualname__}"
+        definitions[key]["title"] = dependency.__ros_type__
+        definitions[key].pop("description", None)  # the generated docstring only repeats the name
+        if dependency is cls:
+            top = definitions.pop(key)
+    return {**top, "$defs": definitions} if definitions else top
+
+
+def definition_text(type_: type | str) -> str:
+    """The MCAP ``ros2msg`` schema text of a message type.
+
+    Its own definition, then for each message it uses (transitively, each
+    once, depth first) a line of 80 ``=``, ``MSG: pkg/msg/Type`` and that
+    type's definition.  Raises UnknownInterfaceError for an unknown name.
+    """
+    cls = _resolve(type_)
+    parts = [cls.__ros_definition__.rstrip("\n")]
+    for dependency in _dependencies(cls):
+        parts += ["=" * 80, f"MSG: {dependency.__ros_type__}", dependency.__ros_definition__.rstrip("\n")]
+    return "\n".join(parts) + "\n"
+
+
+def _dependencies(cls: type) -> list[type]:
+    """Message classes ``cls`` uses, transitively, each once, depth first."""
+    found: dict[type, None] = {}
+
+    def visit(info: mi.Type) -> None:
+        for field in info.fields:
+            nested = field.type.item_type if isinstance(field.type, mi.ListType) else field.type
+            if isinstance(nested, mi.StructType) and nested.cls not in found:
+                found[nested.cls] = None
+                visit(nested)
+
+    visit(_info(cls))
+    return list(found)
