@@ -1,0 +1,101 @@
+"""``actors interface list|show|generate``: message and service types, as ``ros2 interface`` shows them."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+__all__ = ["register"]
+
+
+def register(subparsers: Any) -> None:
+    """Add the ``interface`` group and its verbs to the command line."""
+    parser = subparsers.add_parser("interface", help="list, show and generate interface types")
+    verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
+    root_help = "also search this generated interface root (repeatable)"
+
+    listing = verbs.add_parser("list", help="list every message and service type")
+    listing.add_argument("--root", action="append", default=[], type=Path, help=root_help)
+    listing.set_defaults(func=list_types)
+
+    show = verbs.add_parser("show", help="print a type's definition, nested types expanded")
+    show.add_argument("type", metavar="TYPE", help="pkg/msg/Name, pkg/srv/Name or pkg/Name")
+    show.add_argument("--no-comments", action="store_true", help="leave out comments and blank lines")
+    show.add_argument("--root", action="append", default=[], type=Path, help=root_help)
+    show.set_defaults(func=show_type)
+
+    generate = verbs.add_parser("generate", help="generate Python modules beside .msg/.srv sources")
+    generate.add_argument(
+        "roots", nargs="*", metavar="ROOT", type=Path,
+        help="a folder of packages <ROOT>/<pkg>/msg/*.msg (default: the shipped interfaces)",
+    )
+    generate.set_defaults(func=generate_modules)
+
+
+def list_types(args: argparse.Namespace) -> None:
+    """Print ``Messages:`` and ``Services:``, each followed by its types indented four spaces."""
+    from actors import codec
+
+    _register_roots(args.root)
+    names = codec.list_types()
+    for title, kind in (("Messages", "/msg/"), ("Services", "/srv/")):
+        print(f"{title}:")
+        for name in names:
+            if kind in name:
+                print(f"    {name}")
+
+
+def show_type(args: argparse.Namespace) -> None:
+    """Print a type's definition; raises UnknownInterfaceError for an unknown type."""
+    from actors import codec
+
+    _register_roots(args.root)
+    cls = codec.get_type(args.type)
+    comments = not args.no_comments
+    if hasattr(cls, "Request"):
+        lines = [*_expand(cls.Request, comments), "---", *_expand(cls.Response, comments)]
+    else:
+        lines = _expand(cls, comments)
+    for line in lines:
+        print(line)
+
+
+def generate_modules(args: argparse.Namespace) -> None:
+    """Generate the modules of each root and print the files written; raises IdlError."""
+    from actors import idl
+
+    written = idl.generate(args.roots)
+    for path in written:
+        print(f"wrote {path}")
+    if not written:
+        print("generated modules are up to date")
+
+
+def _expand(cls: type, comments: bool, depth: int = 0) -> list[str]:
+    """The lines of ``cls``'s definition, each nested type's fields under its field, one tab deeper.
+
+    As ``ros2 interface show`` does, nested types are shown without comments.
+    """
+    from actors import codec, idl
+
+    pkg, _, name = cls.__ros_type__.split("/")
+    text = cls.__ros_definition__
+    spec = idl.parse_message(text, path=cls.__ros_type__, pkg=pkg, name=name)
+    nested = {field.line: field.type.ros_type for field in spec.fields if field.type.is_nested}
+    keep_comments = comments and depth == 0
+    lines = []
+    for number, raw in enumerate(text.splitlines(), 1):
+        line = raw if keep_comments else idl.strip_comment(raw).rstrip()
+        if keep_comments or line.strip():
+            lines.append("\t" * depth + line if line else "")
+        if number in nested:
+            lines += _expand(codec.get_type(nested[number]), comments, depth + 1)
+    return lines
+
+
+def _register_roots(roots: list[Path]) -> None:
+    from actors import codec
+
+    for root in roots:
+        codec.register_root(root)
