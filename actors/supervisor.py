@@ -133,13 +133,16 @@ class Supervisor:
         child.core = core
         child.state = "running"
         child._done = anyio.Event()
+        # Made here, entered by the task: halting a node whose task has not started yet
+        # cancels it on entry.
+        child._scope = anyio.CancelScope()
         self.runtime._task_group.start_soon(self._watch, child, core, name=f"node {core.fqn}")
         return core
 
     async def _watch(self, child: Child, core: NodeCore) -> None:
         error: BaseException | None = None
-        with anyio.CancelScope() as scope:
-            child._scope = scope
+        assert child._scope is not None
+        with child._scope as scope:
             try:
                 await core.actor.run()
             except CallbackFailed as failed:

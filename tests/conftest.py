@@ -1,0 +1,38 @@
+"""Shared test helpers: running ``python -m`` commands in a subprocess, bounded in time."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+TESTS = Path(__file__).resolve().parent
+
+
+def python_env() -> dict[str, str]:
+    """The environment for a child Python: the repo and the test nodes importable."""
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join([str(ROOT), str(TESTS), env.get("PYTHONPATH", "")])
+    env["PYTHONUNBUFFERED"] = "1"
+    return env
+
+
+@pytest.fixture
+def run_module():
+    """Run ``python -m MODULE ARGS`` from the repo root; returns the CompletedProcess."""
+
+    def run(module: str, *args: str, timeout: float = 60) -> subprocess.CompletedProcess[str]:
+        return subprocess.run(
+            [sys.executable, "-m", module, *args],
+            cwd=ROOT,
+            env=python_env(),
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+        )
+
+    return run

@@ -1,0 +1,48 @@
+"""Nodes used by the tests' graph files and runtime tests."""
+
+from __future__ import annotations
+
+from actors import Node
+from interfaces.std_msgs.msg import Int64
+
+
+class Counter(Node):
+    """Publishes 0, 1, 2, ... on ``numbers`` every 0.1 s."""
+
+    def __init__(self) -> None:
+        super().__init__("counter")
+        self.pub = self.create_publisher(Int64, "numbers", 100)
+        self.timer = self.create_timer(0.1, self.tick)
+        self.n = 0
+
+    def tick(self) -> None:
+        self.pub.publish(Int64(data=self.n))
+        self.n += 1
+
+
+class PoisonEveryFifth(Node):
+    """Records what it hears on ``numbers``; raises on every fifth message (4, 9, 14, ...)."""
+
+    heard: list[int] = []
+    instances = 0
+
+    def __init__(self) -> None:
+        super().__init__("poisoned")
+        type(self).instances += 1
+        self.create_subscription(Int64, "numbers", self.on_number, 100)
+
+    def on_number(self, msg: Int64) -> None:
+        if msg.data % 5 == 4:
+            raise ValueError(f"poison {msg.data}")
+        type(self).heard.append(msg.data)
+
+
+class AlwaysCrash(Node):
+    """Raises on every message on ``numbers``."""
+
+    def __init__(self) -> None:
+        super().__init__("always_crash")
+        self.create_subscription(Int64, "numbers", self.on_number, 10)
+
+    def on_number(self, msg: Int64) -> None:
+        raise RuntimeError(f"cannot handle {msg.data}")

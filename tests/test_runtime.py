@@ -1,0 +1,74 @@
+"""Runtime: lifecycle, spawning with overrides, embedding in an anyio application."""
+
+from __future__ import annotations
+
+import anyio
+import pytest
+
+from actors import InvalidNameError, Node, Runtime
+from graph_nodes import Counter
+from interfaces.std_msgs.msg import Int64
+
+
+class Collector(Node):
+    def __init__(self) -> None:
+        super().__init__("collector")
+        self.values: list[int] = []
+        self.create_subscription(Int64, "numbers", lambda m: self.values.append(m.data), 10)
+
+
+def test_a_node_cannot_be_built_outside_a_runtime():
+    with pytest.raises(RuntimeError, match=r"rt.spawn\(Collector\)"):
+        Collector()
+
+
+async def test_spawn_requires_a_running_runtime():
+    rt = Runtime()
+    with pytest.raises(RuntimeError, match="unopened"):
+        rt.spawn(Collector)
+    async with rt:
+        pass
+    with pytest.raises(RuntimeError, match="closed"):
+        rt.spawn(Collector)
+
+
+@pytest.mark.virtual_time
+async def test_names_are_overridden_and_must_be_unique():
+    async with Runtime() as rt:
+        node = rt.spawn(Collector, name="other", namespace="/robot1")
+        assert (node.get_name(), node.get_namespace()) == ("other", "/robot1")
+        assert rt.node("/robot1/other") is node and rt.node("other") is node
+        with pytest.raises(InvalidNameError, match="already runs"):
+            rt.spawn(Collector, name="other", namespace="/robot1")
+        with pytest.raises(InvalidNameError, match="invalid node name"):
+            rt.spawn(Collector, name="no way")
+
+
+@pytest.mark.virtual_time
+async def test_embedding_beside_other_tasks_of_an_anyio_application():
+    app_ticks = []
+
+    async def application_task() -> None:
+        for i in range(5):
+            await anyio.sleep(0.25)
+            app_ticks.append(i)
+
+    async with anyio.create_task_group() as tg:
+        tg.start_soon(application_task)
+        async with Runtime(name="embedded") as rt:
+            collector = rt.spawn(Collector)
+            rt.spawn(Counter)
+            await rt.wait(1.05)
+    assert app_ticks == [0, 1, 2, 3, 4]
+    assert collector.values == list(range(10))
+
+
+@pytest.mark.virtual_time
+async def test_shutdown_ends_wait():
+    async with Runtime() as rt:
+        rt.spawn(Counter)
+        async with anyio.create_task_group() as tg:
+            tg.start_soon(rt.wait)
+            await anyio.sleep(1)
+            rt.shutdown()
+        assert rt.clock.monotonic() == 1.0

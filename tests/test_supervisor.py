@@ -1,0 +1,170 @@
+"""Supervision: dead letters, restarts that keep queued messages, strategies, types, intensity."""
+
+from __future__ import annotations
+
+import logging
+
+import anyio
+import pytest
+
+from actors import Escalation, Node, Runtime, Strategy, SupervisorPolicy
+from graph_nodes import Counter, PoisonEveryFifth
+from interfaces.std_msgs.msg import Int64
+
+pytestmark = pytest.mark.virtual_time
+
+
+async def test_poison_messages_restart_the_node_and_nothing_else_is_lost(caplog):
+    caplog.set_level(logging.ERROR, logger="actors")
+    PoisonEveryFifth.heard = []
+    PoisonEveryFifth.instances = 0
+    policy = SupervisorPolicy(intensity=10, period=5.0, backoff=0.1, max_backoff=0.4)
+    async with Runtime(supervisor=policy) as rt:
+        rt.spawn(PoisonEveryFifth)
+        counter = rt.spawn(Counter)
+        await anyio.sleep(4.05)  # 40 numbers: 0..39
+        counter.timer.cancel()
+        await anyio.sleep(2)
+    poison = [n for n in range(40) if n % 5 == 4]
+    assert PoisonEveryFifth.heard == [n for n in range(40) if n % 5 != 4]  # each once, in order
+    assert PoisonEveryFifth.instances == 1 + len(poison)
+    dead = [r for r in caplog.records if "dead letter" in r.getMessage()]
+    assert [r.getMessage().split("data=")[1].rstrip(")") for r in dead] == [str(n) for n in poison]
+    assert all(r.exc_info is not None for r in dead)  # each logged once, with its traceback
+
+
+async def test_exceeding_the_intensity_escalates_with_one_clear_error():
+    policy = SupervisorPolicy(intensity=2, period=10.0, backoff=0.0)
+    with pytest.raises(Escalation, match=r"/poisoned crashed 3 times; more than 2 restarts within 10.0 s"):
+        async with Runtime(supervisor=policy) as rt:
+            rt.spawn(PoisonEveryFifth)
+            rt.spawn(Counter)
+            await rt.wait()
+
+
+class Member(Node):
+    """One of three siblings; counts its instances; crashes on a message to its name."""
+
+    started: dict[str, int] = {}
+
+    def __init__(self) -> None:
+        super().__init__("member")
+        name = self.get_name()
+        Member.started[name] = Member.started.get(name, 0) + 1
+        self.create_subscription(Int64, f"/crash_{name}", self.crash, 10)
+
+    def crash(self, msg: Int64) -> None:
+        raise RuntimeError("boom")
+
+
+class Trigger(Node):
+    def __init__(self) -> None:
+        super().__init__("trigger")
+        self.pub = self.create_publisher(Int64, "/crash_b", 10)
+
+
+@pytest.mark.parametrize(
+    ("strategy", "expected"),
+    [
+        (Strategy.ONE_FOR_ONE, {"a": 1, "b": 2, "c": 1}),
+        (Strategy.ONE_FOR_ALL, {"a": 2, "b": 2, "c": 2}),
+        (Strategy.REST_FOR_ONE, {"a": 1, "b": 2, "c": 2}),
+    ],
+)
+async def test_restart_strategies(strategy, expected):
+    Member.started = {}
+    async with Runtime(supervisor=SupervisorPolicy(strategy=strategy)) as rt:
+        for name in "abc":
+            rt.spawn(Member, name=name)
+        trigger = rt.spawn(Trigger)
+        trigger.pub.publish(Int64(data=1))
+        await anyio.sleep(1)
+        assert Member.started == expected
+        assert [n.name for n in rt.graph.nodes()] == ["/a", "/b", "/c", "/trigger"]
+
+
+class Quitter(Node):
+    """Ends itself normally on its first tick."""
+
+    started = 0
+
+    def __init__(self) -> None:
+        super().__init__("quitter")
+        Quitter.started += 1
+        self.create_timer(1.0, self.destroy_node)
+
+
+@pytest.mark.parametrize(("restart", "starts"), [("transient", 1), ("temporary", 1), ("permanent", 4)])
+async def test_restart_types_after_a_normal_exit(restart, starts):
+    Quitter.started = 0
+    policy = SupervisorPolicy(intensity=100, backoff=0.0)
+    async with Runtime(supervisor=policy) as rt:
+        rt.spawn(Quitter, restart=restart)
+        await anyio.sleep(3.5)
+    assert Quitter.started == starts
+
+
+async def test_a_temporary_node_is_not_restarted_after_a_crash():
+    Member.started = {}
+    async with Runtime() as rt:
+        rt.spawn(Member, name="b", restart="temporary")
+        trigger = rt.spawn(Trigger)
+        trigger.pub.publish(Int64(data=1))
+        await anyio.sleep(1)
+        assert Member.started == {"b": 1}
+        assert [n.name for n in rt.graph.nodes()] == ["/trigger"]
+
+
+async def test_backoff_doubles_within_the_period():
+    Member.started = {}
+    policy = SupervisorPolicy(intensity=10, period=100.0, backoff=1.0, max_backoff=3.0)
+    async with Runtime(supervisor=policy) as rt:
+        rt.spawn(Member, name="b")
+        trigger = rt.spawn(Trigger)
+        restart_times = []
+        for _ in range(4):
+            before = Member.started["b"]
+            trigger.pub.publish(Int64(data=1))
+            start = rt.clock.monotonic()
+            while Member.started["b"] == before:
+                await anyio.sleep(0.01)
+            restart_times.append(round(rt.clock.monotonic() - start, 2))
+        assert restart_times == pytest.approx([1.0, 2.0, 3.0, 3.0], abs=0.02)  # 0.01 s polling
+
+
+async def test_stop_runs_shutdown_hooks_and_removes_the_node():
+    events = []
+
+    class Hooked(Node):
+        def __init__(self) -> None:
+            super().__init__("hooked")
+            self.create_publisher(Int64, "out", 10)
+
+        async def on_shutdown(self) -> None:
+            events.append("on_shutdown")
+
+        def destroy_node(self) -> None:
+            events.append("destroy_node")
+            super().destroy_node()
+
+    async with Runtime() as rt:
+        rt.spawn(Hooked)
+        await rt.stop("hooked")
+        assert events == ["on_shutdown", "destroy_node"]
+        assert rt.graph.nodes() == [] and rt.graph.topics() == [t for t in rt.graph.topics() if t.name == "/rosout"]
+
+
+async def test_shutdown_stops_nodes_in_reverse_order():
+    order = []
+
+    class Named(Node):
+        def __init__(self) -> None:
+            super().__init__("named")
+
+        def on_shutdown(self) -> None:
+            order.append(self.get_name())
+
+    async with Runtime() as rt:
+        for name in ("first", "second", "third"):
+            rt.spawn(Named, name=name)
+    assert order == ["third", "second", "first"]

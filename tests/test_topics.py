@@ -1,0 +1,213 @@
+"""Topics: delivery, QoS depth and drops, transient-local history, type checks, matching."""
+
+from __future__ import annotations
+
+import anyio
+import pytest
+
+from actors import (
+    DurabilityPolicy,
+    HistoryPolicy,
+    Node,
+    QoSProfile,
+    ReliabilityPolicy,
+    Runtime,
+    TopicTypeError,
+)
+from interfaces.std_msgs.msg import Int64, String
+
+pytestmark = pytest.mark.virtual_time
+
+
+class Sink(Node):
+    """Subscribes to ``numbers`` with the QoS and callback delay set on the class."""
+
+    qos: QoSProfile | int = 10
+    delay = 0.0
+
+    def __init__(self) -> None:
+        super().__init__("sink")
+        self.heard: list[int] = []
+        self.sub = self.create_subscription(Int64, "numbers", self.on_number, self.qos)
+
+    async def on_number(self, msg: Int64) -> None:
+        self.heard.append(msg.data)
+        if self.delay:
+            await anyio.sleep(self.delay)
+
+
+class Source(Node):
+    qos: QoSProfile | int = 10
+
+    def __init__(self) -> None:
+        super().__init__("source")
+        self.pub = self.create_publisher(Int64, "numbers", self.qos)
+
+
+async def test_messages_arrive_in_order_and_are_the_same_objects():
+    async with Runtime() as rt:
+        sink = rt.spawn(Sink)
+        source = rt.spawn(Source)
+        sent = [Int64(data=i) for i in range(5)]
+        received = []
+        sink.sub.callback = received.append
+        for msg in sent:
+            source.pub.publish(msg)
+        await anyio.sleep(0.01)
+        assert [m.data for m in received] == [0, 1, 2, 3, 4]
+        assert all(a is b for a, b in zip(received, sent))  # in-process: no copy, no serialisation
+
+
+async def test_keep_last_drops_the_oldest_and_counts_the_drops():
+    class SlowSink(Sink):
+        qos = 10
+        delay = 1.0
+
+    async with Runtime() as rt:
+        sink = rt.spawn(SlowSink)
+        source = rt.spawn(Source)
+        for i in range(30):
+            source.pub.publish(Int64(data=i))
+            await anyio.sleep(0.05)  # 20 messages/s against 1 message/s handled
+        await anyio.sleep(20)
+        info = rt.graph.topic("/numbers")
+        assert info is not None
+        drops = info.subscriptions[0].dropped
+        assert drops == sink.sub.dropped > 0
+        assert len(sink.heard) + drops == 30
+        # What survives is the newest: the last ten messages all arrive.
+        assert sink.heard[-10:] == list(range(20, 30))
+        assert sink.heard == sorted(sink.heard)
+
+
+async def test_keep_all_never_drops():
+    class SlowSink(Sink):
+        qos = QoSProfile(history=HistoryPolicy.KEEP_ALL)
+        delay = 0.5
+
+    async with Runtime() as rt:
+        sink = rt.spawn(SlowSink)
+        source = rt.spawn(Source)
+        for i in range(50):
+            source.pub.publish(Int64(data=i))
+        await anyio.sleep(30)
+        assert sink.heard == list(range(50))
+        assert sink.sub.dropped == 0
+
+
+async def test_transient_local_gives_a_late_subscriber_the_last_n():
+    latched = QoSProfile(depth=3, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+
+    class LatchedSource(Source):
+        qos = latched
+
+    class LateSink(Sink):
+        qos = latched
+
+    class VolatileSink(Sink):
+        qos = 10
+
+    async with Runtime() as rt:
+        source = rt.spawn(LatchedSource)
+        for i in range(10):
+            source.pub.publish(Int64(data=i))
+        late = rt.spawn(LateSink)
+        volatile = rt.spawn(VolatileSink, name="volatile_sink")
+        await anyio.sleep(0.1)
+        assert late.heard == [7, 8, 9]
+        assert volatile.heard == []
+
+
+async def test_publishing_the_wrong_type_raises_type_error_naming_both():
+    async with Runtime() as rt:
+        source = rt.spawn(Source)
+        with pytest.raises(TypeError, match=r"std_msgs/msg/Int64.*std_msgs/msg/String"):
+            source.pub.publish(String(data="nope"))
+
+
+async def test_a_subscription_of_another_type_is_refused():
+    class WrongSink(Node):
+        def __init__(self) -> None:
+            super().__init__("wrong")
+            self.create_subscription(String, "/numbers", print, 10)
+
+    async with Runtime() as rt:
+        rt.spawn(Source)
+        with pytest.raises(TopicTypeError, match=r"std_msgs/msg/String.*std_msgs/msg/Int64.*/source"):
+            rt.spawn(WrongSink)
+
+
+async def test_a_publisher_of_another_type_is_refused():
+    class WrongSource(Node):
+        def __init__(self) -> None:
+            super().__init__("wrong")
+            self.create_publisher(String, "/numbers", 10)
+
+    async with Runtime() as rt:
+        rt.spawn(Sink)
+        with pytest.raises(TopicTypeError, match=r"std_msgs/msg/String.*std_msgs/msg/Int64"):
+            rt.spawn(WrongSource)
+
+
+async def test_best_effort_publisher_does_not_feed_a_reliable_subscription():
+    class BestEffortSource(Source):
+        qos = QoSProfile(reliability=ReliabilityPolicy.BEST_EFFORT)
+
+    async with Runtime() as rt:
+        sink = rt.spawn(Sink)
+        source = rt.spawn(BestEffortSource)
+        source.pub.publish(Int64(data=1))
+        await anyio.sleep(0.1)
+        assert sink.heard == []
+        assert source.pub.get_subscription_count() == 0
+
+
+async def test_namespace_and_remap_from_spawn():
+    async with Runtime() as rt:
+        sink = rt.spawn(Sink, namespace="robot1", remap={"numbers": "/shared"})
+        assert sink.sub.topic_name == "/shared"
+        assert sink.get_fully_qualified_name() == "/robot1/sink"
+        source = rt.spawn(Source, name="src", remap={"numbers": "/shared"})
+        source.pub.publish(Int64(data=7))
+        await anyio.sleep(0.01)
+        assert sink.heard == [7]
+
+
+async def test_one_callback_at_a_time_even_when_async():
+    class Overlap(Node):
+        def __init__(self) -> None:
+            super().__init__("overlap")
+            self.active = 0
+            self.max_active = 0
+            self.create_subscription(Int64, "numbers", self.slow, 10)
+            self.create_timer(0.01, self.slow_tick)
+
+        async def slow(self, _msg: Int64) -> None:
+            await self.slow_tick()
+
+        async def slow_tick(self) -> None:
+            self.active += 1
+            self.max_active = max(self.max_active, self.active)
+            await anyio.sleep(0.05)
+            self.active -= 1
+
+    async with Runtime() as rt:
+        node = rt.spawn(Overlap)
+        source = rt.spawn(Source)
+        for i in range(10):
+            source.pub.publish(Int64(data=i))
+        await anyio.sleep(2)
+        assert node.max_active == 1
+
+
+async def test_graph_view_lists_nodes_and_endpoints():
+    async with Runtime() as rt:
+        rt.spawn(Sink)
+        rt.spawn(Source)
+        names = [n.name for n in rt.graph.nodes()]
+        assert names == ["/sink", "/source"]
+        topic = rt.graph.topic("/numbers")
+        assert topic is not None and topic.type == "std_msgs/msg/Int64"
+        assert [p.node for p in topic.publishers] == ["/source"]
+        assert [s.node for s in topic.subscriptions] == ["/sink"]
+        assert topic.subscriptions[0].qos.depth == 10
