@@ -4,7 +4,8 @@ A generated class body is evaluated eagerly (no ``from __future__ import
 annotations``): annotations resolve once at import, and defaults that name
 another struct (``default_factory=Point``) need that struct defined first, so
 structs of one module are emitted dependencies first.  Integer ranges are
-module-level ``Annotated`` aliases (``_uint8``) so msgspec checks them on decode.
+module-level ``Annotated`` aliases (``_uint8``) so msgspec checks them on
+decode; uint64 is checked for ``>= 0`` only (msgspec's bounds stop at int64).
 """
 
 from __future__ import annotations
@@ -132,7 +133,7 @@ class _Writer:
     def source(self, sources: str) -> str:
         ranges = {_ALIAS[base]: bounds for base, bounds in INTEGER_RANGES.items()}
         aliases = [
-            f"{alias} = Annotated[int, msgspec.Meta(ge={low}, le={high})]"
+            f"{alias} = Annotated[int, msgspec.Meta({_bounds(low, high)})]"
             for alias, (low, high) in ranges.items()
             if alias in self.aliases
         ]
@@ -203,6 +204,12 @@ class _Writer:
         if type_.is_nested:
             return f"msgspec.field(default_factory={self._type_name(type_)})"
         return _literal(_ZERO[type_.base] if value is None else value)
+
+
+def _bounds(low: int, high: int) -> str:
+    # msgspec cannot check bounds beyond int64; msgpack itself refuses ints
+    # above uint64's maximum, so only JSON and plain data can exceed it.
+    return f"ge={low}, le={high}" if high < 2**63 else f"ge={low}"
 
 
 def _literal(value: Any) -> str:

@@ -22,7 +22,7 @@ __all__ = [
 _uint8 = Annotated[int, msgspec.Meta(ge=0, le=255)]
 _uint32 = Annotated[int, msgspec.Meta(ge=0, le=4294967295)]
 _int64 = Annotated[int, msgspec.Meta(ge=-9223372036854775808, le=9223372036854775807)]
-_uint64 = Annotated[int, msgspec.Meta(ge=0, le=18446744073709551615)]
+_uint64 = Annotated[int, msgspec.Meta(ge=0)]
 
 
 class FloatingPointRange(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

@@ -27,7 +27,7 @@ __all__ = [
     "SetParameters_Response",
 ]
 
-_uint64 = Annotated[int, msgspec.Meta(ge=0, le=18446744073709551615)]
+_uint64 = Annotated[int, msgspec.Meta(ge=0)]
 
 
 class DescribeParameters_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

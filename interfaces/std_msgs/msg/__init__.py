@@ -37,7 +37,7 @@ _uint16 = Annotated[int, msgspec.Meta(ge=0, le=65535)]
 _int32 = Annotated[int, msgspec.Meta(ge=-2147483648, le=2147483647)]
 _uint32 = Annotated[int, msgspec.Meta(ge=0, le=4294967295)]
 _int64 = Annotated[int, msgspec.Meta(ge=-9223372036854775808, le=9223372036854775807)]
-_uint64 = Annotated[int, msgspec.Meta(ge=0, le=18446744073709551615)]
+_uint64 = Annotated[int, msgspec.Meta(ge=0)]
 
 
 class Bool(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

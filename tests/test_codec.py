@@ -1,0 +1,295 @@
+"""Tests for actors.codec: the type registry and the msgpack, JSON, YAML and schema codecs."""
+
+from __future__ import annotations
+
+import functools
+
+import msgspec
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from actors import codec, idl
+from actors.errors import MessageValidationError, UnknownInterfaceError
+from interfaces.builtin_interfaces.msg import Time
+from interfaces.example_interfaces.srv import AddTwoInts
+from interfaces.geometry_msgs.msg import PoseStamped, Quaternion, Twist, Vector3
+from interfaces.rcl_interfaces.msg import Log, ParameterDescriptor, ParameterValue
+from interfaces.sensor_msgs.msg import Imu
+from interfaces.std_msgs.msg import Bool, Header, String, UInt8
+from interfaces.tutorial_interfaces.msg import Sphere
+
+
+def message_types() -> list[type]:
+    """Every shipped message type, services' requests and responses included."""
+    found = []
+    for name in codec.list_types():
+        cls = codec.get_type(name)
+        found += [cls.Request, cls.Response] if "/srv/" in name else [cls]
+    return found
+
+
+@functools.cache
+def messages(cls: type) -> st.SearchStrategy:
+    """Any valid ``cls`` message, built from its parsed definition (ranges and bounds respected)."""
+    pkg, _, name = cls.__ros_type__.split("/")
+    spec = idl.parse_message(cls.__ros_definition__, pkg=pkg, name=name)
+    return st.builds(cls, **{field.name: values(field.type) for field in spec.fields})
+
+
+def values(type_: idl.FieldType) -> st.SearchStrategy:
+    if type_.array and type_.base in ("byte", "uint8"):
+        size = type_.size if type_.array == "fixed" else None
+        return st.binary(min_size=size or 0, max_size=type_.size or 8)
+    if type_.is_nested:
+        element = st.deferred(lambda: messages(codec.get_type(type_.ros_type)))
+    elif type_.base in idl.INTEGER_RANGES:
+        element = st.integers(*idl.INTEGER_RANGES[type_.base])
+    elif type_.base == "bool":
+        element = st.booleans()
+    elif type_.base in ("float32", "float64"):
+        width = 32 if type_.base == "float32" else 64
+        element = st.floats(width=width, allow_nan=False, allow_infinity=False)
+    else:
+        element = st.text(max_size=type_.string_bound if type_.string_bound is not None else 12)
+    if not type_.array:
+        return element
+    low = type_.size if type_.array == "fixed" else 0
+    return st.lists(element, min_size=low, max_size=type_.size if type_.size is not None else 4)
+
+
+# --------------------------------------------------------------------------- the generated types
+
+
+def test_messages_default_to_ros_zero_values_and_are_mutable():
+    sphere = Sphere()
+    sphere.center.x = 1.5
+    assert sphere.center.x == 1.5 and Sphere().center.x == 0.0
+    assert Quaternion().w == 1.0
+    assert Imu().orientation_covariance == [0.0] * 9
+    assert ParameterValue().byte_array_value == b""
+    assert ParameterDescriptor().floating_point_range == []
+    assert (Log.DEBUG, Log.FATAL) == (10, 50)
+    with pytest.raises(TypeError):
+        String("positional")  # keyword-only, as the fields are documented by name
+
+
+def test_services_expose_request_and_response():
+    assert AddTwoInts.__ros_type__ == "example_interfaces/srv/AddTwoInts"
+    assert AddTwoInts.Request.__ros_type__ == "example_interfaces/srv/AddTwoInts_Request"
+    assert AddTwoInts.Response(sum=3).sum == 3
+    assert "---" in AddTwoInts.__ros_definition__
+
+
+@pytest.mark.parametrize("cls", message_types(), ids=lambda cls: cls.__ros_type__)
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data())
+def test_every_shipped_type_round_trips_through_both_codecs(cls, data):
+    msg = data.draw(messages(cls))
+    assert codec.decode(codec.encode(msg), cls) == msg
+    assert codec.decode_json(codec.encode_json(msg), cls) == msg
+    assert codec.convert(codec.to_builtins(msg), cls) == msg
+
+
+def test_round_trip_keeps_defaults_and_nesting():
+    twist = Twist(linear=Vector3(x=0.2), angular=Vector3(z=0.5))
+    assert codec.decode(codec.encode(twist), Twist) == twist
+    assert codec.decode_json(codec.encode_json(twist), "geometry_msgs/msg/Twist") == twist
+    assert codec.decode_json(b"{}", Twist) == Twist()
+
+
+# --------------------------------------------------------------------------- validation
+
+
+@pytest.mark.parametrize(
+    ("cls", "value", "path"),
+    [
+        (UInt8, {"data": 300}, "$.data"),
+        (UInt8, {"data": -1}, "$.data"),
+        (Time, {"nanosec": 2**32}, "$.nanosec"),
+        (Imu, {"orientation_covariance": [0.0] * 8}, "$.orientation_covariance"),
+        (ParameterDescriptor, {"integer_range": [{}, {}]}, "$.integer_range"),
+        (PoseStamped, {"header": {"stamp": {"sec": "x"}}}, "$.header.stamp.sec"),
+    ],
+)
+def test_decode_errors_name_the_type_and_field_path(cls, value, path):
+    for encode, decode in ((msgspec.msgpack.encode, codec.decode), (msgspec.json.encode, codec.decode_json)):
+        with pytest.raises(MessageValidationError) as caught:
+            decode(encode(value), cls)
+        assert str(caught.value).startswith(f"{cls.__ros_type__}: ")
+        assert f"at `{path}`" in str(caught.value)
+
+
+def test_uint8_error_text():
+    with pytest.raises(MessageValidationError, match=r"^std_msgs/msg/UInt8: Expected `int` <= 255 - at `\$.data`$"):
+        codec.decode_json(b'{"data": 300}', "std_msgs/msg/UInt8")
+
+
+def test_malformed_bytes_are_validation_errors():
+    with pytest.raises(MessageValidationError, match="^std_msgs/msg/String: "):
+        codec.decode(b"\xc1", String)
+
+
+# --------------------------------------------------------------------------- registry
+
+
+@pytest.mark.parametrize(
+    ("name", "expected"),
+    [
+        ("std_msgs/msg/String", String),
+        ("std_msgs/String", String),
+        ("example_interfaces/srv/AddTwoInts", AddTwoInts),
+        ("example_interfaces/AddTwoInts", AddTwoInts),
+        ("example_interfaces/srv/AddTwoInts_Request", AddTwoInts.Request),
+        ("example_interfaces/srv/AddTwoInts_Response", AddTwoInts.Response),
+    ],
+)
+def test_get_type_accepts_every_name_form(name, expected):
+    assert codec.get_type(name) is expected
+
+
+@pytest.mark.parametrize(
+    "name", ["std_msgs/msg/Nope", "nope/Nope", "std_msgs/srv/String", "String", "a/b/c/d", "std_msgs/x/String", "../x/Y"]
+)
+def test_get_type_rejects_unknown_names(name):
+    with pytest.raises(UnknownInterfaceError, match=repr(name)):
+        codec.get_type(name)
+
+
+def test_ros_name():
+    assert codec.ros_name(Twist) == codec.ros_name(Twist()) == "geometry_msgs/msg/Twist"
+    assert codec.ros_name(AddTwoInts) == "example_interfaces/srv/AddTwoInts"
+    with pytest.raises(TypeError):
+        codec.ros_name(int)
+
+
+def test_list_types_lists_messages_and_services():
+    names = codec.list_types()
+    assert names == sorted(names)
+    assert {"std_msgs/msg/String", "geometry_msgs/msg/Twist", "rcl_interfaces/msg/Log"} <= set(names)
+    assert {"example_interfaces/srv/AddTwoInts", "rcl_interfaces/srv/ListParameters"} <= set(names)
+    assert not any(name.endswith(("_Request", "_Response")) for name in names)
+
+
+def test_register_module_adds_its_types(monkeypatch, tmp_path):
+    monkeypatch.setattr(codec, "_registered", {})
+    monkeypatch.setattr(codec, "_types", {})
+    (tmp_path / "extra_types.py").write_text(
+        "import msgspec\n\n"
+        "class Ping(msgspec.Struct, kw_only=True):\n"
+        "    __ros_type__ = 'extra/msg/Ping'\n"
+        "    n: int = 0\n"
+    )
+    monkeypatch.syspath_prepend(str(tmp_path))
+    assert codec.register_module("extra_types") == ["extra/msg/Ping"]
+    assert codec.get_type("extra/Ping").__name__ == "Ping"
+    assert "extra/msg/Ping" in codec.list_types()
+
+
+# --------------------------------------------------------------------------- YAML and plain data
+
+
+@pytest.mark.parametrize(
+    ("text", "cls", "expected"),
+    [
+        ("data: true", Bool, Bool(data=True)),
+        ("{a: 2, b: 3}", AddTwoInts.Request, AddTwoInts.Request(a=2, b=3)),
+        (
+            "{linear: {x: 0.2}, angular: {z: 0.5}}",
+            "geometry_msgs/msg/Twist",
+            Twist(linear=Vector3(x=0.2), angular=Vector3(z=0.5)),
+        ),
+        ('{"linear": {"x": 1}}', Twist, Twist(linear=Vector3(x=1.0))),
+        ("linear: {x: 1e-3}", Twist, Twist(linear=Vector3(x=0.001))),
+        ("", Twist, Twist()),
+        ("   ", Quaternion, Quaternion()),
+        ("byte_array_value: [1, 2]", ParameterValue, ParameterValue(byte_array_value=b"\x01\x02")),
+    ],
+)
+def test_from_yaml(text, cls, expected):
+    msg = codec.from_yaml(text, cls)
+    assert msg == expected
+    assert all(isinstance(v, float) for v in msgspec.structs.astuple(getattr(msg, "linear", Vector3())))
+
+
+@pytest.mark.parametrize(
+    ("text", "problem"),
+    [
+        ("{linear: {q: 1}}", "unknown field `q` - at `$.linear`"),
+        ("data: 1", "geometry_msgs/msg/Twist: Object contains unknown field `data`"),
+        ("[1, 2]", "expected a mapping"),
+        ("linear: {x: [", "invalid YAML"),
+        ("linear: {x: abc}", "Expected `float`, got `str` - at `$.linear.x`"),
+    ],
+)
+def test_from_yaml_errors(text, problem):
+    with pytest.raises(MessageValidationError, match="^geometry_msgs/msg/Twist: ") as caught:
+        codec.from_yaml(text, Twist)
+    assert problem in str(caught.value)
+
+
+def test_convert_reports_bad_bytes_by_path():
+    with pytest.raises(MessageValidationError, match=r"at `\$.byte_array_value`"):
+        codec.convert({"byte_array_value": [1, 256]}, ParameterValue)
+
+
+def test_to_yaml_prints_like_ros2_topic_echo():
+    assert codec.to_yaml(Twist(linear=Vector3(x=0.2, y=1))) == (
+        "linear:\n  x: 0.2\n  y: 1.0\n  z: 0.0\nangular:\n  x: 0.0\n  y: 0.0\n  z: 0.0\n"
+    )
+    header = Header(stamp=Time(sec=3), frame_id="map")
+    assert codec.to_yaml(header) == "stamp:\n  sec: 3\n  nanosec: 0\nframe_id: map\n"
+    assert codec.to_yaml(ParameterValue(byte_array_value=b"\x01\xff", double_array_value=[1.5])).endswith(
+        "byte_array_value:\n- 1\n- 255\nbool_array_value: []\ninteger_array_value: []\n"
+        "double_array_value:\n- 1.5\nstring_array_value: []\n"
+    )
+    assert codec.to_yaml(String(data="hi")) == "data: hi\n"
+
+
+def test_to_builtins_keeps_field_order_and_types():
+    builtins = codec.to_builtins(Imu())
+    assert list(builtins)[:3] == ["header", "orientation", "orientation_covariance"]
+    assert builtins["orientation"] == {"x": 0.0, "y": 0.0, "z": 0.0, "w": 1.0}
+    assert codec.to_builtins(ParameterValue(byte_array_value=b"\x02"))["byte_array_value"] == [2]
+
+
+# --------------------------------------------------------------------------- schemas
+
+
+def test_json_schema_titles_types_with_ros_names():
+    schema = codec.json_schema(Twist)
+    assert schema["type"] == "object" and schema["title"] == "geometry_msgs/msg/Twist"
+    assert schema["properties"]["linear"] == {"$ref": "#/$defs/Vector3"}
+    assert schema["$defs"]["Vector3"]["title"] == "geometry_msgs/msg/Vector3"
+    uint8 = codec.json_schema("std_msgs/msg/UInt8")
+    assert uint8["properties"]["data"] == {"type": "integer", "minimum": 0, "maximum": 255, "default": 0}
+    assert "$defs" not in uint8
+    imu = codec.json_schema(Imu)["properties"]["orientation_covariance"]
+    assert (imu["minItems"], imu["maxItems"]) == (9, 9)
+
+
+def test_definition_text_is_mcap_ros2msg():
+    text = codec.definition_text(PoseStamped)
+    sections = text.split("=" * 80 + "\n")
+    assert sections[0] == PoseStamped.__ros_definition__
+    names = [section.split("\n", 1)[0] for section in sections[1:]]
+    assert names == [
+        "MSG: std_msgs/msg/Header",
+        "MSG: builtin_interfaces/msg/Time",
+        "MSG: geometry_msgs/msg/Pose",
+        "MSG: geometry_msgs/msg/Point",
+        "MSG: geometry_msgs/msg/Quaternion",
+    ]
+    assert sections[2] == "MSG: builtin_interfaces/msg/Time\n" + Time.__ros_definition__
+    odometry = codec.definition_text("nav_msgs/msg/Odometry")
+    assert odometry.count("MSG: geometry_msgs/msg/Vector3\n") == 1
+    assert codec.definition_text(String) == "string data\n"
+
+
+def test_module_all_is_honest():
+    public = {
+        name
+        for name, value in vars(codec).items()
+        if callable(value) and not name.startswith("_") and value.__module__ == codec.__name__
+    }
+    assert sorted(codec.__all__) == sorted(public)
