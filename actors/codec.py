@@ -18,6 +18,7 @@ from __future__ import annotations
 import functools
 import importlib
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from types import ModuleType
 from typing import Any, TypeVar
@@ -199,13 +200,7 @@ def decode(data: bytes, type_: type[T] | str) -> T:
     the type and field path (``std_msgs/msg/UInt8: Expected `int` <= 255 -
     at `$.data```), UnknownInterfaceError for an unknown name.
     """
-    decoder = _msgpack_decoders.get(type_)
-    if decoder is None:
-        decoder = _msgpack_decoders[type_] = msgspec.msgpack.Decoder(_resolve(type_))
-    try:
-        return decoder.decode(data)
-    except msgspec.DecodeError as exc:
-        raise _invalid(decoder.type, exc) from None
+    return _decode(_msgpack_decoders, msgspec.msgpack.Decoder, data, type_)
 
 
 def encode_json(msg: Any) -> bytes:
@@ -215,9 +210,13 @@ def encode_json(msg: Any) -> bytes:
 
 def decode_json(data: bytes | str, type_: type[T] | str) -> T:
     """A ``type_`` message from JSON ``data``; raises as :func:`decode` does."""
-    decoder = _json_decoders.get(type_)
+    return _decode(_json_decoders, msgspec.json.Decoder, data, type_)
+
+
+def _decode(decoders: dict[Any, Any], factory: Callable[[type], Any], data: Any, type_: Any) -> Any:
+    decoder = decoders.get(type_)
     if decoder is None:
-        decoder = _json_decoders[type_] = msgspec.json.Decoder(_resolve(type_))
+        decoder = decoders[type_] = factory(_resolve(type_))
     try:
         return decoder.decode(data)
     except msgspec.DecodeError as exc:

@@ -43,7 +43,11 @@ __all__ = [
     "FieldType",
     "MessageSpec",
     "ServiceSpec",
+    "FLOATS",
     "INTEGER_RANGES",
+    "OCTETS",
+    "PRIMITIVES",
+    "STRINGS",
     "generate",
     "parse_message",
     "parse_service",
@@ -65,6 +69,7 @@ INTEGER_RANGES: dict[str, tuple[int, int]] = {
     "int64": (-(2**63), 2**63 - 1),
     "uint64": (0, 2**64 - 1),
 }
+#: The other primitives, by kind.
 FLOATS = frozenset({"float32", "float64"})
 STRINGS = frozenset({"string", "wstring"})
 PRIMITIVES = frozenset({"bool", *INTEGER_RANGES, *FLOATS, *STRINGS})
@@ -228,8 +233,7 @@ def _parse_lines(
         if not content:
             continue
         where = (path, number)
-        type_text, _, rest = content.partition(" ")
-        rest = rest.strip()
+        type_text, rest = _first_word(content)
         if not rest:
             raise IdlError(*where, f"expected 'TYPE NAME', got {content!r}")
         type_ = _parse_type(type_text, pkg, where)
@@ -237,14 +241,19 @@ def _parse_lines(
         if constant:
             item: Field | Constant = _parse_constant(type_, constant, number, where)
         else:
-            field_name, _, default = rest.partition(" ")
-            item = _parse_field(type_, field_name, default.strip(), number, where)
+            item = _parse_field(type_, *_first_word(rest), number, where)
         if item.name in seen:
             raise IdlError(*where, f"duplicate name {item.name!r}")
         seen.add(item.name)
         (constants if isinstance(item, Constant) else fields).append(item)
     text = "\n".join(lines) + "\n" if lines else ""
     return MessageSpec(pkg, name, tuple(fields), tuple(constants), text, path, kind)
+
+
+def _first_word(text: str) -> tuple[str, str]:
+    """``text``'s first whitespace-separated word and the stripped rest."""
+    first, *rest = text.split(None, 1)
+    return first, rest[0].strip() if rest else ""
 
 
 def _parse_type(text: str, pkg: str, where: tuple[str, int]) -> FieldType:
@@ -434,6 +443,8 @@ def _find_packages(roots: Iterable[Path]) -> dict[str, tuple[Path, dict[str, lis
 def _parse_file(path: Path, pkg: str, kind: str) -> MessageSpec | ServiceSpec:
     if not _TYPE_NAME.fullmatch(path.stem):
         raise InterfaceError(f"{path}: a type name must be CamelCase letters and digits")
+    if path.stem in ("Annotated", "ClassVar"):  # generated modules import these from typing
+        raise InterfaceError(f"{path}: the type name {path.stem!r} is reserved")
     parse = parse_message if kind == "msg" else parse_service
     return parse(path.read_text(encoding="utf-8"), path=path, pkg=pkg, name=path.stem)
 

@@ -31,7 +31,7 @@ Part[2] parts
 std_msgs/Header header
 Header local_header
 """
-PART = "int16 id -3  # trailing comment\nwstring note\n"
+PART = "int16\tid -3  # tab-separated, trailing comment\nwstring note\n"
 HEADER = "# a Header of this package, not std_msgs'\nuint32 seq\n"
 LOOKUP = "string key\nPart template\n---\nThing thing\nbool found\n"
 
@@ -271,6 +271,7 @@ def test_generate_rejects_unknown_and_recursive_types(tmp_path, files, where, pr
         ("interfaces", {"pkg/msg/A.msg": ""}, "already named 'interfaces'"),
         ("good", {"Pkg/msg/A.msg": ""}, "invalid package name"),
         ("good", {"pkg/msg/lower.msg": ""}, "CamelCase"),
+        ("good", {"pkg/msg/ClassVar.msg": ""}, "reserved"),
     ],
 )
 def test_generate_rejects_unusable_names(tmp_path, name, files, problem):
