@@ -1,0 +1,279 @@
+"""Differential-drive robots: command limits, unicycle accuracy, and stopping at walls, obstacles and robots."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from world.arena import solids
+from world.drive import MODELS, Contact, Robot, Twist
+from world.simulation import Simulation
+
+DT = 0.01
+MINUTE = 6000  # steps of DT
+
+
+def gap_to_polygon(robot: Robot, vertices: tuple[tuple[float, float], ...]) -> float:
+    """Distance (m) from the robot's edge to the polygon's surface; negative when they overlap."""
+    x, y, _ = robot.pose
+    nearest, inside = math.inf, False
+    for (ax, ay), (bx, by) in zip(vertices, vertices[1:] + vertices[:1]):
+        ex, ey = bx - ax, by - ay
+        s = min(max(((x - ax) * ex + (y - ay) * ey) / (ex * ex + ey * ey), 0.0), 1.0)
+        nearest = min(nearest, math.hypot(ax + s * ex - x, ay + s * ey - y))
+        if (ay > y) != (by > y) and x < ax + (y - ay) * ex / ey:
+            inside = not inside
+    return (-nearest if inside else nearest) - robot.model.radius
+
+
+def gap_between(a: Robot, b: Robot) -> float:
+    return math.dist(a.pose[:2], b.pose[:2]) - a.model.radius - b.model.radius
+
+
+def drive_for(sim: Simulation, steps: int, watch=lambda: 0.0) -> float:  # noqa: ANN001 - a gap callable
+    """Step ``steps`` times and return the smallest value ``watch()`` took after any step."""
+    smallest = math.inf
+    for _ in range(steps):
+        sim.step()
+        smallest = min(smallest, watch())
+    return smallest
+
+
+# --- limits -----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("model", "command", "expected"),
+    [
+        ("burger", (1.0, 5.0), (0.22, 2.84)),
+        ("burger", (-1.0, -5.0), (-0.22, -2.84)),
+        ("burger", (0.1, -1.0), (0.1, -1.0)),
+        ("asl_tb3", (1.0, 5.0), (0.5, 1.0)),
+        ("asl_tb3", (-1.0, -5.0), (-0.5, -1.0)),
+    ],
+)
+def test_commands_are_clipped(model: str, command: tuple[float, float], expected: tuple[float, float]) -> None:
+    sim = Simulation.from_file("empty")
+    robot = sim.add_robot("r", model)
+    robot.command(*command)
+    drive_for(sim, 200)
+    assert robot.twist == pytest.approx(expected)
+    assert robot.commanded == command
+
+
+def test_burger_has_no_acceleration_limit() -> None:
+    sim = Simulation.from_file("empty")
+    robot = sim.add_robot("r", "burger")
+    robot.command(0.22, -2.84)
+    sim.step()
+    assert robot.twist == (pytest.approx(0.22), -2.84)
+    robot.command(-0.22, 2.84)
+    sim.step()
+    assert robot.twist == (pytest.approx(-0.22), 2.84)
+
+
+def test_asl_tb3_ramps_at_its_accelerations() -> None:
+    sim = Simulation.from_file("empty")
+    robot = sim.add_robot("r", "asl_tb3")
+    robot.command(0.5, -1.0)
+    seen = []
+    for _ in range(60):
+        sim.step()
+        seen.append(robot.twist)
+    # 1 m/s^2 and 2 rad/s^2: +0.01 m/s and -0.02 rad/s per step until the limits.
+    assert seen[0] == (pytest.approx(0.01), pytest.approx(-0.02))
+    assert seen[24] == (pytest.approx(0.25), pytest.approx(-0.5))
+    assert seen[49] == (pytest.approx(0.5), pytest.approx(-1.0))
+    assert seen[59] == (pytest.approx(0.5), pytest.approx(-1.0))
+    robot.command(-0.5, 1.0)  # reversing ramps down through zero at the same rates
+    sim.step()
+    assert robot.twist == (pytest.approx(0.49), pytest.approx(-0.98))
+
+
+def test_limits_are_pure() -> None:
+    model = MODELS["asl_tb3"]
+    assert model.limit(2.0, 0.0, 0.0, 0.0, 0.1) == pytest.approx((0.1, 0.0))
+    assert model.limit(0.3, 0.5, 0.25, 0.4, 0.1) == pytest.approx((0.3, 0.5))
+    assert MODELS["burger"].limit(0.2, 0.0, -0.2, 0.0, 0.01) == (0.2, 0.0)
+
+
+# --- free motion ------------------------------------------------------------------
+
+
+def test_arc_follows_exact_unicycle_kinematics() -> None:
+    sim = Simulation.from_file("empty")
+    robot = sim.add_robot("r", x=-1.0, y=0.5, theta=0.3)
+    v, w = 0.2, 0.5
+    robot.command(v, w)
+    for k in range(1, 1001):
+        sim.step()
+        t = k * DT
+        theta = 0.3 + w * t
+        x = -1.0 + v / w * (math.sin(theta) - math.sin(0.3))
+        y = 0.5 - v / w * (math.cos(theta) - math.cos(0.3))
+        pose = robot.pose
+        # 5 mm is the requirement; moving along the chord of each step's arc makes it exact,
+        # where the heading at the start of each step would be about 1 mm off.
+        assert math.hypot(pose.x - x, pose.y - y) < 1e-6, f"off the arc at t={t:.2f} s"
+        assert abs(math.remainder(pose.theta - theta, math.tau)) < 1e-6
+    assert robot.twist == (pytest.approx(v), w)
+    assert not robot.in_contact and robot.contacts == ()
+
+
+def test_straight_line_and_turn_in_place() -> None:
+    sim = Simulation.from_file("empty")
+    robot = sim.add_robot("r", theta=math.pi / 2)
+    robot.command(0.2, 0.0)
+    drive_for(sim, 500)
+    assert robot.pose == pytest.approx((0.0, 1.0, math.pi / 2), abs=1e-9)
+    robot.command(0.0, -1.0)
+    drive_for(sim, 100)
+    assert robot.pose == pytest.approx((0.0, 1.0, math.pi / 2 - 1.0), abs=1e-9)
+
+
+def test_theta_is_wrapped_to_pi() -> None:
+    sim = Simulation.from_file("empty")
+    robot = sim.add_robot("r", theta=3.0)
+    robot.command(0.0, 1.0)
+    drive_for(sim, 100)
+    assert robot.pose.theta == pytest.approx(4.0 - math.tau)
+
+
+# --- stopping -----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("model", ["burger", "asl_tb3"])
+def test_stops_at_a_wall_without_passing_or_creeping(model: str) -> None:
+    sim = Simulation.from_file("empty")
+    robot = sim.add_robot("r", model, x=4.0, y=0.0)
+    robot.command(1.0, 0.0)
+    gap = lambda: 5.0 - robot.pose.x - robot.model.radius  # noqa: E731 - the inner face is at x = 5
+    assert drive_for(sim, MINUTE, gap) > -0.001
+    assert abs(gap()) < 0.002
+    assert robot.contacts == (Contact("wall", None),) and robot.in_contact
+    assert robot.pose == (pytest.approx(4.895, abs=0.002), 0.0, 0.0)  # no bounce, no spin, no drift
+    assert robot.twist == (pytest.approx(0.0, abs=1e-9), 0.0)
+
+
+def test_slides_along_a_wall_met_at_an_angle_into_the_corner() -> None:
+    sim = Simulation.from_file("empty")
+    robot = sim.add_robot("r", x=4.5, y=3.0, theta=0.4)
+    robot.command(0.22, 0.0)
+    east = lambda: 5.0 - robot.pose.x - robot.model.radius  # noqa: E731
+    north = lambda: 5.0 - robot.pose.y - robot.model.radius  # noqa: E731
+    assert drive_for(sim, 400, east) > -0.001
+    assert robot.contacts == (Contact("wall", None),)
+    # Only the part of the velocity along the wall is left.
+    assert robot.twist.v == pytest.approx(0.22 * math.sin(0.4) ** 2, abs=1e-9)
+    assert drive_for(sim, MINUTE, lambda: min(east(), north())) > -0.001
+    assert (east(), north()) == (pytest.approx(0.0, abs=0.002), pytest.approx(0.0, abs=0.002))
+    assert len(robot.contacts) == 2 and robot.pose.theta == 0.4
+
+
+def test_pushing_while_turning_keeps_the_heading_rate_and_the_wall() -> None:
+    sim = Simulation.from_file("empty")
+    robot = sim.add_robot("r", x=4.8, y=0.0)
+    robot.command(0.22, 0.5)
+    gap = lambda: 5.0 - robot.pose.x - robot.model.radius  # noqa: E731
+    before = robot.pose.theta
+    assert drive_for(sim, 100, gap) > -0.001
+    assert robot.pose.theta == pytest.approx(before + 0.5, abs=1e-9)
+
+
+def test_stops_at_a_box() -> None:
+    sim = Simulation.from_file("signs")
+    robot = sim.add_robot("r", x=0.5, y=0.0)
+    robot.command(0.22, 0.0)
+    box = next(s for s in solids(sim.world) if s.name == "box_east")
+    gap = lambda: gap_to_polygon(robot, box.vertices)  # noqa: E731
+    assert drive_for(sim, MINUTE, gap) > -0.001
+    assert abs(gap()) < 0.002
+    assert robot.contacts == (Contact("obstacle", "box_east"),)
+
+
+def test_stops_at_a_turned_box() -> None:
+    sim = Simulation.from_file("signs")
+    robot = sim.add_robot("r", x=-1.0, y=-1.5, theta=math.pi / 2)
+    robot.command(0.22, 0.0)
+    box = next(s for s in solids(sim.world) if s.name == "box_west")
+    gap = lambda: gap_to_polygon(robot, box.vertices)  # noqa: E731
+    assert drive_for(sim, MINUTE, gap) > -0.001
+    assert abs(gap()) < 0.002
+    assert Contact("obstacle", "box_west") in robot.contacts
+
+
+def test_stops_at_a_stop_sign() -> None:
+    sim = Simulation.from_file("signs")
+    robot = sim.add_robot("r", x=0.15, y=-1.0, theta=-math.pi / 2)
+    robot.command(0.22, 0.0)
+    gap = lambda: math.dist(robot.pose[:2], (0.15, -2.0)) - 0.05 - robot.model.radius  # noqa: E731
+    assert drive_for(sim, MINUTE, gap) > -0.001
+    assert abs(gap()) < 0.002
+    assert robot.contacts == (Contact("obstacle", "stop_sign"),)
+
+
+def test_stops_in_a_concave_polygon_corner(tmp_path: Path) -> None:
+    path = tmp_path / "ell.toml"
+    path.write_text(
+        'bounds = { min = [-3, -3], max = [3, 3] }\n'
+        "[[polygons]]\nname = 'ell'\nvertices = [[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]]\n"
+    )
+    sim = Simulation.from_file(path)
+    # Into the inner corner at (1, 1) along the diagonal: it must stop against both edges.
+    robot = sim.add_robot("r", x=2.0, y=2.0, theta=-3 * math.pi / 4)
+    robot.command(0.22, 0.0)
+    (ell,) = solids(sim.world)
+    gap = lambda: gap_to_polygon(robot, ell.vertices)  # noqa: E731
+    assert drive_for(sim, MINUTE, gap) > -0.001
+    assert abs(gap()) < 0.002
+    assert robot.pose[:2] == pytest.approx((1.105, 1.105), abs=0.002)
+
+
+def test_stops_at_a_standing_robot_without_pushing_it() -> None:
+    sim = Simulation.from_file("empty")
+    mover = sim.add_robot("mover", "asl_tb3", x=0.0, y=0.0)
+    still = sim.add_robot("still", x=1.0, y=0.05)
+    mover.command(0.5, 0.0)
+    gap = lambda: gap_between(mover, still)  # noqa: E731
+    assert drive_for(sim, MINUTE, gap) > -0.001
+    assert abs(gap()) < 0.002
+    assert still.pose == pytest.approx((1.0, 0.05, 0.0), abs=1e-6)
+    assert mover.contacts == (Contact("robot", "still"),)
+    assert still.contacts == (Contact("robot", "mover"),)
+
+
+def test_robots_meeting_head_on_both_stop() -> None:
+    sim = Simulation.from_file("empty")
+    a = sim.add_robot("a", x=-1.0)
+    b = sim.add_robot("b", x=1.0, theta=math.pi)
+    a.command(0.22, 0.0)
+    b.command(0.22, 0.0)
+    gap = lambda: gap_between(a, b)  # noqa: E731
+    assert drive_for(sim, MINUTE, gap) > -0.001
+    assert abs(gap()) < 0.002
+    assert a.pose.x == pytest.approx(-b.pose.x)
+
+
+def test_a_crowd_never_overlaps() -> None:
+    sim = Simulation.from_file("signs")
+    rows = (-2.5, 1.0, 2.2)
+    robots = [
+        sim.add_robot(f"r{i}", "asl_tb3" if i % 2 else "burger", x=-2.4 + 0.6 * (i % 9), y=rows[i // 9], theta=i)
+        for i in range(27)
+    ]
+    for i, robot in enumerate(robots):
+        robot.command(0.5, 0.3 * math.sin(i))
+    def worst() -> float:
+        return min(gap_between(a, b) for i, a in enumerate(robots) for b in robots[i + 1 :])
+    assert drive_for(sim, 1000, worst) > -0.001
+
+
+def test_twist_reports_blocked_motion_and_odometry_is_the_truth_without_noise() -> None:
+    sim = Simulation.from_file("empty")
+    robot = sim.add_robot("r", x=4.8)
+    robot.command(0.2, 0.1)
+    drive_for(sim, 200)
+    assert robot.twist == Twist(pytest.approx(0.2 * math.sin(0.2) ** 2, abs=1e-3), 0.1)
+    assert robot.odometry() == (*robot.pose, *robot.twist)
