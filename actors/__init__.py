@@ -6,13 +6,16 @@ from actors.errors import (
     Escalation,
     GraphFileError,
     InvalidNameError,
+    ParameterError,
     ServiceError,
     TopicTypeError,
     VirtualTimeDeadlock,
 )
 from actors.introspection import EndpointInfo, GraphView, NodeInfo, TopicInfo
 from actors.node import Node
+from actors.params import Parameter, ParameterType
 from actors.runtime import Runtime
+from actors.services import Client, Service
 from actors.supervisor import RestartType, Strategy, SupervisorPolicy
 from actors.timers import Timer
 from actors.topics import (
@@ -28,6 +31,7 @@ from actors.topics import (
 
 __all__ = [
     "ActorsError",
+    "Client",
     "Clock",
     "Duration",
     "DurabilityPolicy",
@@ -38,6 +42,9 @@ __all__ = [
     "HistoryPolicy",
     "InvalidNameError",
     "Node",
+    "Parameter",
+    "ParameterError",
+    "ParameterType",
     "NodeInfo",
     "Publisher",
     "QoSProfile",
@@ -45,6 +52,7 @@ __all__ = [
     "ReliabilityPolicy",
     "RestartType",
     "Runtime",
+    "Service",
     "ServiceError",
     "Strategy",
     "Subscription",

@@ -19,7 +19,7 @@ import asyncio
 from collections import deque
 from typing import Any, Protocol
 
-__all__ = ["Actor", "Entity", "CallbackFailed"]
+__all__ = ["Actor", "Entity", "CallbackFailed", "OneShot"]
 
 
 class Entity(Protocol):
@@ -94,6 +94,24 @@ class Actor:
         finally:
             self._waiter = None
             self.current = None
+
+
+class OneShot:
+    """Runs ``fn()`` once in the actor (plain or ``async``): a node's ``on_start`` hook."""
+
+    __slots__ = ("fn", "name")
+
+    def __init__(self, fn: Any, name: str) -> None:
+        self.fn = fn
+        self.name = name
+
+    async def _run(self) -> None:
+        try:
+            result = self.fn()
+            if result is not None and hasattr(result, "__await__"):
+                await result
+        except Exception as exc:
+            raise CallbackFailed(self, None, exc) from exc
 
 
 class _Stop:

@@ -21,6 +21,7 @@ Every key is optional except each node's ``use``::
     params = { }
     remap = { topic = "chatter" }
     restart = "transient"     # permanent, temporary
+    delay = 0.0               # start this node so many seconds later (launch's TimerAction)
 
 Any error names the file, the key path and the problem, as one line.
 """
@@ -75,6 +76,7 @@ class NodeEntry(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields
     params: dict[str, Any] = {}
     remap: dict[str, str] = {}
     restart: RestartType = RestartType.TRANSIENT
+    delay: NonNegative = 0.0  # seconds after the graph starts, as launch's TimerAction
 
 
 class GraphFile(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):

@@ -16,7 +16,7 @@ if TYPE_CHECKING:
     from actors.runtime import Runtime
     from actors.topics import Topic
 
-__all__ = ["EndpointInfo", "TopicInfo", "NodeInfo", "GraphView"]
+__all__ = ["EndpointInfo", "TopicInfo", "ServiceInfo", "NodeInfo", "GraphView"]
 
 
 class EndpointInfo(msgspec.Struct, frozen=True, kw_only=True):
@@ -38,6 +38,16 @@ class TopicInfo(msgspec.Struct, frozen=True, kw_only=True):
     subscriptions: tuple[EndpointInfo, ...]
 
 
+class ServiceInfo(msgspec.Struct, frozen=True, kw_only=True):
+    """A service: its type, the node serving it, requests handled and waiting."""
+
+    name: str
+    type: str
+    node: str
+    handled: int
+    queued: int
+
+
 class NodeInfo(msgspec.Struct, frozen=True, kw_only=True):
     """A node: full name, class, supervision state and what it uses."""
 
@@ -50,6 +60,8 @@ class NodeInfo(msgspec.Struct, frozen=True, kw_only=True):
     last_error: str | None
     publishes: tuple[str, ...]
     subscribes: tuple[str, ...]
+    serves: tuple[str, ...]
+    calls: tuple[str, ...]
     timers: int
 
 
@@ -79,6 +91,8 @@ class GraphView:
                     last_error=child.last_error,
                     publishes=tuple(sorted({p.topic_name for p in core.publishers})),
                     subscribes=tuple(sorted({s.topic_name for s in core.subscriptions})),
+                    serves=tuple(sorted(s.service_name for s in core.services)),
+                    calls=tuple(sorted({c.service_name for c in core.clients})),
                     timers=sum(not t.is_canceled() for t in core.timers),
                 )
             )
@@ -87,6 +101,19 @@ class GraphView:
     def topics(self) -> list[TopicInfo]:
         """Every topic with its endpoints, sorted by name."""
         return [self._topic_info(t) for _, t in sorted(self._rt.topics.topics.items())]
+
+    def services(self) -> list[ServiceInfo]:
+        """Every service with its server, sorted by name."""
+        return [
+            ServiceInfo(
+                name=name,
+                type=type_name(s.srv_type),
+                node=s.node.fqn,
+                handled=s.handled,
+                queued=s.queued,
+            )
+            for name, s in sorted(self._rt.services.servers.items())
+        ]
 
     def topic(self, name: str) -> TopicInfo | None:
         """One topic, or None."""

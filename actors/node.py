@@ -14,7 +14,7 @@ subclasses may use any attribute name rclpy users are used to (``self.timer``,
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from contextvars import ContextVar
 from typing import TYPE_CHECKING, Any, TypeVar
 
@@ -22,8 +22,11 @@ from actors.actor import Actor
 from actors.clock import Clock, Rate
 from actors.log import NodeLogger
 from actors.names import Resolver, fully_qualified, normalize_namespace, validate_node_name
+from actors.params import OnSet, Parameter, ParameterStore
+from actors.services import Client, Service
 from actors.timers import Timer
 from actors.topics import Publisher, QoSProfile, Subscription, as_qos
+from interfaces.rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 
 if TYPE_CHECKING:
     from actors.runtime import Runtime
@@ -50,7 +53,14 @@ _spawning: ContextVar[SpawnRequest | None] = ContextVar("actors_spawning", defau
 class NodeCore:
     """A node's name, actor, clock, logger and entities: everything behind ``Node``."""
 
-    def __init__(self, node: Node, request: SpawnRequest, default_name: str, namespace: str | None) -> None:
+    def __init__(
+        self,
+        node: Node,
+        request: SpawnRequest,
+        default_name: str,
+        namespace: str | None,
+        parameter_overrides: Mapping[str, Any] | None,
+    ) -> None:
         child = request.child
         self.node = node
         self.runtime = request.runtime
@@ -66,10 +76,14 @@ class NodeCore:
         self.publishers: list[Publisher] = []
         self.subscriptions: list[Subscription] = []
         self.timers: list[Timer] = []
+        self.services: list[Service] = []
+        self.clients: list[Client] = []
         self.destroyed = False
         # Entities of the previous instance, taken over by name when this one recreates them.
         self._inherited: dict[tuple[str, str], list[Any]] = child.take_inheritance()
         self.runtime._register_node(self)
+        self.params = ParameterStore(self, {**(parameter_overrides or {}), **child.params})
+        self.params.serve()
 
     # -- entities -------------------------------------------------------------
 
@@ -127,6 +141,33 @@ class NodeCore:
         self.timers.append(timer)
         return timer
 
+    def create_service(self, srv_type: type, name: str, handler: Callable[[Any, Any], Any]) -> Service:
+        """See :meth:`Node.create_service`."""
+        full = self.resolver.resolve(name, what="service name")
+        service = Service(self, full, srv_type, handler)
+        old = self._take_inherited("srv", full, srv_type)
+        self.runtime.services.add(service, replacing=old)
+        if old is not None:
+            service._adopt(old)
+        self.services.append(service)
+        return service
+
+    def create_client(self, srv_type: type, name: str) -> Client:
+        """See :meth:`Node.create_client`."""
+        full = self.resolver.resolve(name, what="service name")
+        client = Client(self, full, srv_type, self.runtime.services)
+        self.clients.append(client)
+        return client
+
+    def destroy_service(self, service: Service) -> None:
+        """Stop serving ``service``; its queued calls fail."""
+        _remove(self.services, service)
+        self.runtime.services.remove(service)
+
+    def destroy_client(self, client: Client) -> None:
+        """Forget ``client``."""
+        _remove(self.clients, client)
+
     def destroy_publisher(self, pub: Publisher) -> None:
         """Remove ``pub`` from this node and its topic."""
         _remove(self.publishers, pub)
@@ -163,9 +204,10 @@ class NodeCore:
         self._stop_activity()
         self.destroyed = True
         kept: dict[tuple[str, str], list[Any]] = {}
-        for kind, entities in (("pub", self.publishers), ("sub", self.subscriptions)):
+        for kind, entities in (("pub", self.publishers), ("sub", self.subscriptions), ("srv", self.services)):
             for entity in entities:
-                kept.setdefault((kind, entity.topic_name), []).append(entity)
+                name = entity.service_name if kind == "srv" else entity.topic_name
+                kept.setdefault((kind, name), []).append(entity)
         self.runtime._unregister_node(self)
         return kept
 
@@ -175,17 +217,13 @@ class NodeCore:
             return
         self._stop_activity()
         self.destroyed = True
-        for destroy_entity in self.destructors():
-            destroy_entity()
+        for pub in self.publishers:
+            self.runtime.topics.remove_publisher(pub)
+        for sub in self.subscriptions:
+            self.runtime.topics.remove_subscription(sub)
+        for service in self.services:
+            self.runtime.services.remove(service)
         self.runtime._unregister_node(self)
-
-    def destructors(self) -> list[Callable[[], None]]:
-        """One call per entity that removes it from the runtime."""
-        topics = self.runtime.topics
-        calls: list[Callable[[], None]] = []
-        calls += [lambda p=p: topics.remove_publisher(p) for p in self.publishers]
-        calls += [lambda s=s: topics.remove_subscription(s) for s in self.subscriptions]
-        return calls
 
 
 def _check_type(msg_type: Any, where: str) -> None:
@@ -224,7 +262,7 @@ class Node:
                 f"{type(self).__name__} must be started by a runtime: "
                 f"`async with Runtime() as rt: rt.spawn({type(self).__name__})`"
             )
-        self._core = NodeCore(self, request, node_name, namespace)
+        self._core = NodeCore(self, request, node_name, namespace, parameter_overrides)
 
     # -- names ----------------------------------------------------------------
 
@@ -294,6 +332,95 @@ class Node:
         """The names of every node in the graph."""
         return [n.name.rsplit("/", 1)[-1] for n in self._core.runtime.graph.nodes()]
 
+    # -- services -------------------------------------------------------------
+
+    def create_service(self, srv_type: type, srv_name: str, callback: Callable[[Any, Any], Any]) -> Service:
+        """Serve ``srv_name``: ``callback(request, response)`` fills and returns the response.
+
+        The callback may be ``async def``.  If it raises, the caller's call fails
+        with ServiceError carrying the error, and the service keeps serving.
+        Raises ServiceError if another node already serves the name.
+        """
+        return self._core.create_service(srv_type, srv_name, callback)
+
+    def create_client(self, srv_type: type, srv_name: str) -> Client:
+        """A client of ``srv_name``: ``await client.call(req, timeout=...)`` or ``call_async``."""
+        return self._core.create_client(srv_type, srv_name)
+
+    def destroy_service(self, service: Service) -> bool:
+        """Stop serving; returns True as rclpy does."""
+        self._core.destroy_service(service)
+        return True
+
+    def destroy_client(self, client: Client) -> bool:
+        """Forget ``client``; returns True as rclpy does."""
+        self._core.destroy_client(client)
+        return True
+
+    # -- parameters -----------------------------------------------------------
+
+    def declare_parameter(
+        self,
+        name: str,
+        value: Any = None,
+        descriptor: ParameterDescriptor | None = None,
+        ignore_override: bool = False,
+    ) -> Parameter:
+        """Declare a parameter with a default; graph or spawn() overrides win.
+
+        The type comes from ``descriptor.type`` or else from the value.  Raises
+        ParameterError when already declared or when the value does not fit.
+        """
+        return self._core.params.declare(name, value, descriptor, ignore_override)
+
+    def declare_parameters(
+        self, namespace: str, parameters: Sequence[tuple[Any, ...]]
+    ) -> list[Parameter]:
+        """Declare several ``(name, value[, descriptor])`` under ``namespace.``, as rclpy."""
+        prefix = f"{namespace}." if namespace else ""
+        return [self.declare_parameter(prefix + p[0], *p[1:]) for p in parameters]
+
+    def undeclare_parameter(self, name: str) -> None:
+        """Forget a parameter (not a read-only one)."""
+        self._core.params.undeclare(name)
+
+    def has_parameter(self, name: str) -> bool:
+        """Whether ``name`` is declared."""
+        return self._core.params.has(name)
+
+    def get_parameter(self, name: str) -> Parameter:
+        """The parameter ``name`` (``.value``); ParameterError if undeclared."""
+        return self._core.params.get(name)
+
+    def get_parameters(self, names: Sequence[str]) -> list[Parameter]:
+        """Several parameters by name."""
+        return [self._core.params.get(n) for n in names]
+
+    def get_parameter_or(self, name: str, alternative_value: Parameter | None = None) -> Parameter | None:
+        """The parameter ``name``, or ``alternative_value`` if undeclared."""
+        params = self._core.params
+        return params.get(name) if params.has(name) else alternative_value
+
+    def describe_parameter(self, name: str) -> ParameterDescriptor:
+        """The descriptor of ``name``."""
+        return self._core.params.describe(name)
+
+    def set_parameters(self, parameter_list: Sequence[Parameter]) -> list[SetParametersResult]:
+        """Set each parameter; a result per parameter says whether and why not."""
+        return self._core.params.set(parameter_list)
+
+    def set_parameters_atomically(self, parameter_list: Sequence[Parameter]) -> SetParametersResult:
+        """Set all parameters or none."""
+        return self._core.params.set_atomically(parameter_list)
+
+    def add_on_set_parameters_callback(self, callback: OnSet) -> OnSet:
+        """Call ``callback(parameters)`` before each set; a result with ``successful=False`` refuses it."""
+        return self._core.params.add_callback(callback)
+
+    def remove_on_set_parameters_callback(self, callback: OnSet) -> None:
+        """Stop calling ``callback``."""
+        self._core.params.remove_callback(callback)
+
     # -- time -----------------------------------------------------------------
 
     def create_timer(self, timer_period_sec: float, callback: Callable[[], Any]) -> Timer:
@@ -318,6 +445,11 @@ class Node:
     def get_logger(self) -> NodeLogger:
         """The node's logger: ``debug``/``info``/``warning``/``error``/``fatal``."""
         return self._core.logger
+
+    # Optional hooks a subclass may define (plain or ``async def``), run in the node's task:
+    #   on_start()     once, right after construction: where an rclpy script's main() would
+    #                  wait for a service or send a first request;
+    #   on_shutdown()  once, when the runtime stops the node, before destroy_node().
 
     def destroy_node(self) -> None:
         """Stop this node and remove its entities.

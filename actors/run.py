@@ -18,7 +18,7 @@ import anyio
 
 from actors.clock import VirtualTimeLoop
 from actors.errors import ActorsError, Escalation, GraphFileError
-from actors.graph import GraphFile, load_graph
+from actors.graph import GraphFile, NodeEntry, load_graph
 from actors.log import LEVELS, configure_console
 from actors.node import Node
 from actors.runtime import Runtime
@@ -61,23 +61,40 @@ async def run_graph(
     raises (wrapped in GraphFileError naming the node's entry).
     """
     async with Runtime(name=name, supervisor=graph.supervisor.policy()) as rt:
-        for i, (entry, cls) in enumerate(zip(graph.nodes, classes)):
-            try:
-                rt.spawn(
-                    cls,
-                    name=entry.name,
-                    namespace=entry.namespace or None,
-                    params=entry.params,
-                    remap=entry.remap,
-                    restart=entry.restart,
-                )
-            except ActorsError as exc:
-                raise GraphFileError(f"nodes[{i}] ({entry.use}): {exc}") from None
+        entries = list(enumerate(zip(graph.nodes, classes)))
+        for i, (entry, cls) in entries:
+            if not entry.delay:
+                _spawn(rt, i, entry, cls)
         async with anyio.create_task_group() as tg:
+            for i, (entry, cls) in entries:
+                if entry.delay:
+                    tg.start_soon(_spawn_later, rt, i, entry, cls)
             if handle_signals:
                 tg.start_soon(_stop_on_signal, rt)
             await rt.wait(duration or None)
             tg.cancel_scope.cancel()
+
+
+def _spawn(rt: Runtime, index: int, entry: NodeEntry, cls: type[Node]) -> None:
+    try:
+        rt.spawn(
+            cls,
+            name=entry.name,
+            namespace=entry.namespace or None,
+            params=entry.params,
+            remap=entry.remap,
+            restart=entry.restart,
+        )
+    except ActorsError as exc:
+        raise GraphFileError(f"nodes[{index}] ({entry.use}): {exc}") from None
+
+
+async def _spawn_later(rt: Runtime, index: int, entry: NodeEntry, cls: type[Node]) -> None:
+    await anyio.sleep(entry.delay)
+    try:
+        _spawn(rt, index, entry, cls)
+    except GraphFileError as exc:
+        rt._fail(exc)
 
 
 async def _stop_on_signal(rt: Runtime) -> None:

@@ -24,6 +24,7 @@ from actors.errors import InvalidNameError
 from actors.introspection import GraphView
 from actors.log import NodeLogger
 from actors.node import Node, NodeCore, SpawnRequest, _spawning
+from actors.services import ServiceTable
 from actors.supervisor import Child, RestartType, Supervisor, SupervisorPolicy
 from actors.topics import Publisher, QoSProfile, Subscription, TopicTable, type_name
 
@@ -43,6 +44,8 @@ class Runtime:
         self.name = name
         self.policy = supervisor or SupervisorPolicy()
         self.topics = TopicTable(self._incompatible_qos)
+        self.services = ServiceTable()
+        self._owner = _RuntimeEndpointOwner(self)
         self.nodes: dict[str, NodeCore] = {}
         self.graph = GraphView(self)
         self._state = "unopened"
@@ -57,7 +60,8 @@ class Runtime:
             raise RuntimeError(f"runtime {self.name!r} is {self._state}; a Runtime is entered once")
         self.loop: asyncio.AbstractEventLoop = asyncio.get_running_loop()
         self.clock = Clock(self.loop)
-        self._rosout = self._make_rosout_publisher()
+        self._rosout = self._runtime_publisher("/rosout", "Log")
+        self.parameter_events = self._runtime_publisher("/parameter_events", "ParameterEvent")
         self.logger = self.make_logger("actors")
         self.supervisor = Supervisor(self, self.policy)
         self._stopped = anyio.Event()
@@ -77,7 +81,12 @@ class Runtime:
             with anyio.CancelScope(shield=True):
                 await self.supervisor.stop_all()
             self._task_group.cancel_scope.cancel()
-            suppressed = await self._task_group.__aexit__(exc_type, exc, tb)
+            if exc is not None and not isinstance(exc, anyio.get_cancelled_exc_class()):
+                # The block's own error: let it out as it is, not wrapped in an ExceptionGroup.
+                await self._task_group.__aexit__(None, None, None)
+                suppressed = None
+            else:
+                suppressed = await self._task_group.__aexit__(exc_type, exc, tb)
         finally:
             self._state = "closed"
             assert self._stopped is not None
@@ -194,13 +203,13 @@ class Runtime:
         msg.stamp.sec, msg.stamp.nanosec = sec, nanosec
         pub.publish(msg)
 
-    def _make_rosout_publisher(self) -> Publisher:
-        from interfaces.rcl_interfaces.msg import Log
+    def _runtime_publisher(self, topic: str, rcl_type: str) -> Publisher:
+        # One publisher per runtime, not per node.  Volatile, unlike ROS's transient-local
+        # /rosout: with nobody subscribed, logging and parameter events then cost nothing.
+        from interfaces.rcl_interfaces import msg
 
-
-        # One publisher for the whole runtime.  Volatile, unlike ROS's transient-local
-        # /rosout: with nobody subscribed, logging then costs nothing here.
-        pub = Publisher(_RuntimeEndpointOwner(self), "/rosout", Log, QoSProfile(depth=1000))
+        msg_type = getattr(msg, rcl_type)
+        pub = Publisher(self._owner, topic, msg_type, QoSProfile(depth=1000))
         self.topics.add_publisher(pub)
         return pub
 

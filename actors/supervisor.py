@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, Any
 import anyio
 import msgspec
 
-from actors.actor import CallbackFailed
+from actors.actor import CallbackFailed, OneShot
 from actors.errors import Escalation
 
 if TYPE_CHECKING:
@@ -130,6 +130,9 @@ class Supervisor:
         core = self.runtime._instantiate(child)
         for leftover in core.leftovers():
             leftover.destroy()
+        on_start = getattr(core.node, "on_start", None)
+        if on_start is not None:
+            core.actor.schedule(OneShot(on_start, "on_start"))
         child.core = core
         child.state = "running"
         child._done = anyio.Event()
@@ -302,4 +305,6 @@ def _describe(entity: Any) -> str:
     service = getattr(entity, "service_name", None)
     if service is not None:
         return f"service handler of {service}"
+    if isinstance(entity, OneShot):
+        return entity.name
     return f"{type(entity).__name__.lower()} callback"

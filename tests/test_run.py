@@ -65,6 +65,14 @@ use = "graph_nodes:Counter"
     assert result.stdout.count("dead letter") == 3
 
 
+def wait_for_line(proc: subprocess.Popen[str], text: str) -> None:
+    assert proc.stdout is not None
+    for _ in range(100):
+        if text in proc.stdout.readline():
+            return
+    raise AssertionError(f"{text!r} never printed")
+
+
 def test_sigint_on_the_wall_clock_exits_0_quickly_without_traceback():
     proc = subprocess.Popen(
         [sys.executable, "-m", "actors.run", "graph.toml"],
@@ -76,8 +84,7 @@ def test_sigint_on_the_wall_clock_exits_0_quickly_without_traceback():
     )
     try:
         assert proc.stdout is not None
-        first = proc.stdout.readline()  # the graph runs: the talker has published once
-        assert "Publishing" in first
+        wait_for_line(proc, "Publishing")  # the graph runs: the talker has published once
         proc.send_signal(signal.SIGINT)
         out, err = proc.communicate(timeout=5)
     finally:
@@ -96,10 +103,38 @@ def test_sigterm_also_stops_gracefully():
         text=True,
     )
     try:
-        assert proc.stdout is not None
-        proc.stdout.readline()
+        wait_for_line(proc, "Publishing")
         proc.send_signal(signal.SIGTERM)
         out, err = proc.communicate(timeout=5)
     finally:
         proc.kill()
     assert proc.returncode == 0 and "Traceback" not in out + err
+
+
+def test_the_services_graph_waits_for_its_servers_then_succeeds(run_module):
+    result = run_module("actors.run", "graphs/services.toml", "--clock", "virtual", "--duration", "5")
+    assert result.returncode == 0, result.stderr
+    out = result.stdout
+    waiting = out.index("[minimal_client_async]: service not available, waiting again...")
+    answered = out.index("[minimal_client_async]: Result of add_two_ints: for 41 + 1 = 42")
+    assert waiting < out.index("[minimal_service]: Incoming request\na: 41 b: 1") < answered
+    assert "[add_three_ints_client]: Result of add_three_ints: for 2 + 3 + 1 = 6" in out
+
+
+def test_a_parameter_override_of_the_wrong_type_exits_2(run_module, tmp_path):
+    graph = tmp_path / "params.toml"
+    graph.write_text('[[nodes]]\nuse = "nodes.param_talker:MinimalParam"\nparams = { my_parameter = 3 }\n')
+    result = run_module("actors.run", str(graph), "--clock", "virtual", "--duration", "1")
+    assert result.returncode == 2
+    assert result.stderr.strip() == (
+        f"error: {graph}: nodes[0] (nodes.param_talker:MinimalParam): parameter 'my_parameter' of "
+        "/minimal_param_node: wrong type: expected STRING, got INTEGER (3)"
+    )
+
+
+def test_the_params_graph_with_an_override(run_module, tmp_path):
+    graph = tmp_path / "params.toml"
+    graph.write_text('[[nodes]]\nuse = "nodes.param_talker:MinimalParam"\nparams = { my_parameter = "earth" }\n')
+    result = run_module("actors.run", str(graph), "--clock", "virtual", "--duration", "2.5")
+    hellos = re.findall(r"\[minimal_param_node\]: (Hello \w+!)", result.stdout)
+    assert hellos == ["Hello earth!", "Hello world!"]

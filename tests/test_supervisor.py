@@ -151,7 +151,9 @@ async def test_stop_runs_shutdown_hooks_and_removes_the_node():
         rt.spawn(Hooked)
         await rt.stop("hooked")
         assert events == ["on_shutdown", "destroy_node"]
-        assert rt.graph.nodes() == [] and rt.graph.topics() == [t for t in rt.graph.topics() if t.name == "/rosout"]
+        assert rt.graph.nodes() == []
+        assert [t.name for t in rt.graph.topics()] == ["/parameter_events", "/rosout"]  # the runtime's own
+        assert rt.services.servers == {}
 
 
 async def test_shutdown_stops_nodes_in_reverse_order():

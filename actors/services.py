@@ -1,0 +1,247 @@
+"""Services: servers as node entities, clients with request/response futures.
+
+A call puts ``(request, future)`` in the server's queue and wakes the server's
+node; the server's handler runs in that node's task, one request at a time,
+and its response resolves the future directly — never through the caller's
+mailbox — so awaiting a call from inside a callback cannot deadlock.
+
+- An exception in the handler reaches the caller as ServiceError carrying the
+  server's error; the server keeps serving (it is logged on the server's side).
+- A call to a service that does not exist yet waits for it to appear; with a
+  timeout it raises TimeoutError.  While a server's node restarts its queue
+  stays attached, and the new instance answers what was queued.
+- A node calling its own service gets ServiceError at once: its callbacks run
+  one at a time, so the request could never be handled while it waits.
+- A cancelled or timed-out caller does not disturb the server: the response is
+  simply dropped.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections import deque
+from collections.abc import Callable
+from inspect import isawaitable
+from typing import TYPE_CHECKING, Any
+
+import anyio
+
+from actors.errors import ServiceError
+from actors.topics import type_name
+
+if TYPE_CHECKING:
+    from actors.node import NodeCore
+
+__all__ = ["Service", "Client", "ServiceTable"]
+
+
+class _Call:
+    __slots__ = ("request", "future")
+
+    def __init__(self, request: Any, future: asyncio.Future[Any]) -> None:
+        self.request = request
+        self.future = future
+
+
+def _check_srv_type(srv_type: Any, where: str) -> None:
+    if not (isinstance(srv_type, type) and hasattr(srv_type, "Request") and hasattr(srv_type, "Response")):
+        raise TypeError(f"{where} needs a service type (with .Request and .Response), got {srv_type!r}")
+
+
+class Service:
+    """A service server.  Create with ``Node.create_service``."""
+
+    __slots__ = ("node", "service_name", "srv_type", "handler", "handled", "_queue", "_scheduled", "_actor")
+
+    def __init__(self, node: NodeCore, service_name: str, srv_type: type, handler: Callable[..., Any]) -> None:
+        _check_srv_type(srv_type, "create_service")
+        if not callable(handler):
+            raise TypeError(f"service handler must be callable, got {handler!r}")
+        self.node = node
+        self.service_name = service_name
+        self.srv_type = srv_type
+        self.handler = handler
+        self.handled = 0
+        self._queue: deque[_Call] = deque()
+        self._scheduled = False
+        self._actor = node.actor
+
+    @property
+    def queued(self) -> int:
+        """Requests waiting to be handled."""
+        return len(self._queue)
+
+    def _push(self, call: _Call) -> None:
+        self._queue.append(call)
+        if not self._scheduled:
+            self._scheduled = True
+            self._actor.schedule(self)
+
+    def _adopt(self, old: Service) -> None:
+        # A restarted server answers what was queued for its predecessor.
+        self._queue = old._queue
+        self.handled = old.handled
+        if self._queue:
+            self._scheduled = True
+            self._actor.schedule(self)
+
+    async def _run(self) -> None:
+        queue = self._queue
+        response_type = self.srv_type.Response
+        for _ in range(len(queue)):
+            call = queue.popleft()
+            if call.future.done():
+                continue  # the caller gave up
+            try:
+                response = self.handler(call.request, response_type())
+                if isawaitable(response):
+                    response = await response
+                if type(response) is not response_type:
+                    raise TypeError(
+                        f"handler returned {type_name(type(response))}, "
+                        f"expected {type_name(response_type)}"
+                    )
+            except Exception as exc:
+                self.node.logger.error(
+                    f"service handler of {self.service_name} raised {exc!r}", exc_info=exc
+                )
+                if not call.future.done():
+                    call.future.set_exception(
+                        ServiceError(f"service {self.service_name} on {self.node.fqn} raised {exc!r}")
+                    )
+                continue
+            self.handled += 1
+            if not call.future.done():
+                call.future.set_result(response)
+        if queue:
+            self._actor.schedule(self)
+        else:
+            self._scheduled = False
+
+    def destroy(self) -> None:
+        """Stop serving; queued calls fail with ServiceError."""
+        self.node.destroy_service(self)
+
+
+class Client:
+    """A service client.  Create with ``Node.create_client``."""
+
+    __slots__ = ("node", "service_name", "srv_type", "_table", "_loop")
+
+    def __init__(self, node: NodeCore, service_name: str, srv_type: type, table: ServiceTable) -> None:
+        _check_srv_type(srv_type, "create_client")
+        self.node = node
+        self.service_name = service_name
+        self.srv_type = srv_type
+        self._table = table
+        self._loop = node.loop
+
+    def service_is_ready(self) -> bool:
+        """Whether a server for this service exists now."""
+        return self.service_name in self._table.servers
+
+    async def wait_for_service(self, timeout: float | None = None, *, timeout_sec: float | None = None) -> bool:
+        """Wait until the service exists; False if ``timeout`` seconds pass first.
+
+        ``timeout_sec`` is rclpy's spelling of ``timeout``.  Cancelling the wait
+        cancels only the wait.
+        """
+        if timeout is None:
+            timeout = timeout_sec
+        with anyio.move_on_after(timeout):
+            while not self.service_is_ready():
+                await self._table.appeared(self.service_name).wait()
+        return self.service_is_ready()
+
+    def call_async(self, request: Any) -> asyncio.Future[Any]:
+        """Send ``request``; return a future of the response.
+
+        Raises TypeError for a request of the wrong type and ServiceError when a
+        node calls its own service.  The future fails with ServiceError when the
+        server's handler raises.
+        """
+        if type(request) is not self.srv_type.Request:
+            raise TypeError(
+                f"client of {self.service_name} takes {type_name(self.srv_type.Request)}, "
+                f"got {type_name(type(request))}"
+            )
+        server = self._table.servers.get(self.service_name)
+        if server is not None and server.node is self.node:
+            raise ServiceError(
+                f"node {self.node.fqn} calls its own service {self.service_name}: its callbacks "
+                f"run one at a time, so the call would wait forever; call the handler directly"
+            )
+        future: asyncio.Future[Any] = self._loop.create_future()
+        call = _Call(request, future)
+        if server is not None:
+            server._push(call)
+        else:
+            self._table.park(self.service_name, call)
+        return future
+
+    async def call(self, request: Any, timeout: float | None = None) -> Any:
+        """Send ``request`` and wait for the response.
+
+        Raises TimeoutError after ``timeout`` seconds (the request is then
+        dropped unanswered), ServiceError when the server's handler raises or the
+        node calls its own service, TypeError for a request of the wrong type.
+        Cancelling the call does not disturb the server.
+        """
+        future = self.call_async(request)
+        with anyio.fail_after(timeout):
+            return await future
+
+    def destroy(self) -> None:
+        """Forget this client."""
+        self.node.destroy_client(self)
+
+
+class ServiceTable:
+    """Every service of a runtime, and the calls waiting for services not yet there."""
+
+    __slots__ = ("servers", "_parked", "_appeared")
+
+    def __init__(self) -> None:
+        self.servers: dict[str, Service] = {}
+        self._parked: dict[str, list[_Call]] = {}
+        self._appeared: dict[str, anyio.Event] = {}
+
+    def add(self, service: Service, *, replacing: Service | None = None) -> None:
+        """Register ``service``; raise ServiceError if another server has the name."""
+        name = service.service_name
+        existing = self.servers.get(name)
+        if existing is not None and existing is not replacing:
+            raise ServiceError(
+                f"cannot serve {name} from {service.node.fqn}: {existing.node.fqn} already serves it "
+                f"({type_name(existing.srv_type)})"
+            )
+        self.servers[name] = service
+        for call in self._parked.pop(name, ()):
+            if not call.future.done():
+                service._push(call)
+        event = self._appeared.pop(name, None)
+        if event is not None:
+            event.set()
+
+    def remove(self, service: Service) -> None:
+        """Unregister ``service``; its queued calls fail."""
+        if self.servers.get(service.service_name) is service:
+            del self.servers[service.service_name]
+        while service._queue:
+            call = service._queue.popleft()
+            if not call.future.done():
+                call.future.set_exception(ServiceError(f"service {service.service_name} was destroyed"))
+
+    def park(self, name: str, call: _Call) -> None:
+        """Keep ``call`` until a server for ``name`` appears."""
+        parked = self._parked.setdefault(name, [])
+        if len(parked) >= 64:  # drop calls whose callers gave up, so the list stays bounded
+            parked[:] = [c for c in parked if not c.future.done()]
+        parked.append(call)
+
+    def appeared(self, name: str) -> anyio.Event:
+        """An event set when a server for ``name`` registers."""
+        event = self._appeared.get(name)
+        if event is None:
+            event = self._appeared[name] = anyio.Event()
+        return event

@@ -1,0 +1,220 @@
+"""Services: calls, errors that reach the caller, timeouts, self-calls, restarts, concurrency."""
+
+from __future__ import annotations
+
+import asyncio
+import logging
+
+import anyio
+import pytest
+
+from actors import Node, Runtime, ServiceError, SupervisorPolicy
+from interfaces.example_interfaces.srv import AddTwoInts
+from interfaces.std_msgs.msg import Int64
+from interfaces.std_srvs.srv import SetBool, Trigger
+
+pytestmark = pytest.mark.virtual_time
+
+
+class Adder(Node):
+    """Serves add_two_ints; raises for negative numbers; crashes on a message to /adder_crash."""
+
+    instances = 0
+    latency = 0.0
+
+    def __init__(self) -> None:
+        super().__init__("adder")
+        Adder.instances += 1
+        self.create_service(AddTwoInts, "add_two_ints", self.add)
+        self.create_subscription(Int64, "/adder_crash", self.crash, 10)
+
+    async def add(self, request: AddTwoInts.Request, response: AddTwoInts.Response) -> AddTwoInts.Response:
+        if request.a < 0:
+            raise ValueError(f"negative: {request.a}")
+        if self.latency:
+            await anyio.sleep(self.latency)
+        response.sum = request.a + request.b
+        return response
+
+    def crash(self, msg: Int64) -> None:
+        raise RuntimeError("crash on purpose")
+
+
+class Caller(Node):
+    def __init__(self) -> None:
+        super().__init__("caller")
+        self.cli = self.create_client(AddTwoInts, "add_two_ints")
+        self.crash_pub = self.create_publisher(Int64, "/adder_crash", 10)
+
+
+async def test_a_call_returns_the_sum():
+    async with Runtime() as rt:
+        rt.spawn(Adder)
+        caller = rt.spawn(Caller)
+        assert caller.cli.service_is_ready()
+        response = await caller.cli.call(AddTwoInts.Request(a=41, b=1), timeout=1)
+        assert response.sum == 42
+        (info,) = [s for s in rt.graph.services() if s.name == "/add_two_ints"]
+        assert (info.node, info.type, info.handled) == ("/adder", "example_interfaces/srv/AddTwoInts", 1)
+
+
+async def test_an_error_in_the_handler_reaches_the_caller_and_the_server_keeps_serving(caplog):
+    caplog.set_level(logging.ERROR, logger="actors")
+    async with Runtime() as rt:
+        rt.spawn(Adder)
+        caller = rt.spawn(Caller)
+        with pytest.raises(ServiceError, match=r"/add_two_ints on /adder raised ValueError\('negative: -1'\)"):
+            await caller.cli.call(AddTwoInts.Request(a=-1, b=1), timeout=1)
+        assert (await caller.cli.call(AddTwoInts.Request(a=1, b=1), timeout=1)).sum == 2
+        assert Adder.instances >= 1 and rt.graph.nodes()[0].crashes == 0
+    assert any("negative" in r.getMessage() and r.exc_info for r in caplog.records)
+
+
+async def test_a_missing_service_times_out():
+    async with Runtime() as rt:
+        caller = rt.spawn(Caller)
+        assert not caller.cli.service_is_ready()
+        assert await caller.cli.wait_for_service(timeout=2.0) is False
+        start = rt.clock.monotonic()
+        with pytest.raises(TimeoutError):
+            await caller.cli.call(AddTwoInts.Request(a=1, b=2), timeout=0.5)
+        assert rt.clock.monotonic() - start == pytest.approx(0.5)
+
+
+async def test_a_call_made_before_the_server_exists_is_answered_when_it_appears():
+    async with Runtime() as rt:
+        caller = rt.spawn(Caller)
+        future = caller.cli.call_async(AddTwoInts.Request(a=2, b=3))
+        await anyio.sleep(1)
+        assert not future.done()
+        rt.spawn(Adder)
+        assert (await future).sum == 5
+
+
+async def test_wait_for_service_returns_when_the_server_appears():
+    async with Runtime() as rt:
+        caller = rt.spawn(Caller)
+
+        async def spawn_later() -> None:
+            await anyio.sleep(3)
+            rt.spawn(Adder)
+
+        async with anyio.create_task_group() as tg:
+            tg.start_soon(spawn_later)
+            assert await caller.cli.wait_for_service(timeout_sec=10) is True
+        assert rt.clock.monotonic() == pytest.approx(3)
+
+
+async def test_a_thousand_concurrent_calls_all_complete():
+    class SlowAdder(Adder):
+        latency = 0.001
+
+    async with Runtime() as rt:
+        rt.spawn(SlowAdder)
+        caller = rt.spawn(Caller)
+        futures = [caller.cli.call_async(AddTwoInts.Request(a=i, b=2 * i)) for i in range(1000)]
+        responses = await asyncio.gather(*futures)
+        assert [r.sum for r in responses] == [3 * i for i in range(1000)]
+
+
+async def test_calling_its_own_service_from_a_callback_is_a_clear_error():
+    class SelfCaller(Node):
+        def __init__(self) -> None:
+            super().__init__("self_caller")
+            self.create_service(Trigger, "ping", lambda req, res: res)
+            self.cli = self.create_client(Trigger, "ping")
+            self.outcome: BaseException | None = None
+            self.create_timer(0.5, self.tick)
+
+        async def tick(self) -> None:
+            try:
+                await self.cli.call(Trigger.Request(), timeout=5)
+            except ServiceError as exc:
+                self.outcome = exc
+
+    async with Runtime() as rt:
+        node = rt.spawn(SelfCaller)
+        await anyio.sleep(0.5)
+        assert rt.clock.monotonic() == 0.5
+        await anyio.sleep(0)
+        assert isinstance(node.outcome, ServiceError)
+        assert "calls its own service /ping" in str(node.outcome)
+
+
+async def test_a_call_inside_a_callback_does_not_deadlock():
+    class Relay(Node):
+        """A subscription callback that awaits a service before answering."""
+
+        def __init__(self) -> None:
+            super().__init__("relay")
+            self.cli = self.create_client(AddTwoInts, "add_two_ints")
+            self.sums: list[int] = []
+            self.create_subscription(Int64, "numbers", self.on_number, 10)
+
+        async def on_number(self, msg: Int64) -> None:
+            self.sums.append((await self.cli.call(AddTwoInts.Request(a=msg.data, b=100), timeout=1)).sum)
+
+    class Numbers(Node):
+        def __init__(self) -> None:
+            super().__init__("numbers")
+            self.pub = self.create_publisher(Int64, "numbers", 10)
+
+    async with Runtime() as rt:
+        rt.spawn(Adder)
+        relay = rt.spawn(Relay)
+        numbers = rt.spawn(Numbers)
+        for i in range(3):
+            numbers.pub.publish(Int64(data=i))
+        await anyio.sleep(1)
+        assert relay.sums == [100, 101, 102]
+
+
+async def test_a_cancelled_caller_does_not_disturb_the_server():
+    class SlowAdder(Adder):
+        latency = 1.0
+
+    async with Runtime() as rt:
+        rt.spawn(SlowAdder)
+        caller = rt.spawn(Caller)
+        with anyio.move_on_after(0.5):
+            await caller.cli.call(AddTwoInts.Request(a=1, b=1))
+        response = await caller.cli.call(AddTwoInts.Request(a=2, b=2), timeout=5)
+        assert response.sum == 4
+        assert rt.graph.nodes()[0].crashes == 0
+
+
+async def test_requests_queued_while_the_server_restarts_are_answered_by_the_new_instance():
+    Adder.instances = 0
+    async with Runtime(supervisor=SupervisorPolicy(backoff=1.0)) as rt:
+        rt.spawn(Adder)
+        caller = rt.spawn(Caller)
+        caller.crash_pub.publish(Int64(data=1))
+        await anyio.sleep(0.1)  # the adder has crashed and waits 1 s before restarting
+        assert Adder.instances == 1
+        response = await caller.cli.call(AddTwoInts.Request(a=20, b=22), timeout=5)
+        assert response.sum == 42
+        assert Adder.instances == 2
+        assert rt.clock.monotonic() == pytest.approx(1.0)  # crashed at 0, 1 s backoff
+
+
+async def test_a_second_server_on_the_same_name_is_refused():
+    async with Runtime() as rt:
+        rt.spawn(Adder)
+        with pytest.raises(ServiceError, match="/adder already serves it"):
+            rt.spawn(Adder, name="adder2")
+
+
+async def test_request_and_response_types_are_checked():
+    class WrongResponse(Node):
+        def __init__(self) -> None:
+            super().__init__("wrong")
+            self.create_service(SetBool, "set", lambda req, res: Trigger.Response())
+
+    async with Runtime() as rt:
+        rt.spawn(WrongResponse)
+        caller = rt.spawn(Caller)
+        with pytest.raises(TypeError, match="takes example_interfaces/srv/AddTwoInts_Request"):
+            caller.cli.call_async(SetBool.Request())
+        cli = caller._core.create_client(SetBool, "/set")
+        with pytest.raises(ServiceError, match="expected std_srvs/srv/SetBool_Response"):
+            await cli.call(SetBool.Request(data=True), timeout=1)
