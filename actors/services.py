@@ -94,7 +94,7 @@ class Service:
                 continue  # the caller gave up
             try:
                 response = self.handler(call.request, response_type())
-                if isawaitable(response):
+                if type(response) is not response_type and isawaitable(response):
                     response = await response
                 if type(response) is not response_type:
                     raise TypeError(
@@ -188,6 +188,8 @@ class Client:
         Cancelling the call does not disturb the server.
         """
         future = self.call_async(request)
+        if timeout is None:
+            return await future  # no cancel scope: it would cost more than the call itself
         with anyio.fail_after(timeout):
             return await future
 

@@ -1,0 +1,120 @@
+"""Service round trip (std_srvs/SetBool), sequential and with 100 concurrent callers.
+
+Beside the same request/response through a bare future and an asyncio.Queue
+(what a hand-written actor does), and the floor (calling the handler directly).
+Run: ``python -m bench.services [--quick]``.  Ratios are "× faster than the
+baseline" (higher is better; 0.5× means twice the baseline's time).
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import time
+
+from actors import Node, Runtime
+from bench.harness import Result, repeat, table
+from interfaces.std_srvs.srv import SetBool
+
+CONCURRENT = 100
+
+
+def handle(request: SetBool.Request, response: SetBool.Response) -> SetBool.Response:
+    response.success = request.data
+    return response
+
+
+def actors_call_time(n: int, callers: int) -> float:
+    """Microseconds per completed call through actors (server and clients in one runtime)."""
+
+    class Server(Node):
+        def __init__(self) -> None:
+            super().__init__("server")
+            self.create_service(SetBool, "set_bool", handle)
+
+    class Caller(Node):
+        def __init__(self) -> None:
+            super().__init__("caller")
+            self.cli = self.create_client(SetBool, "set_bool")
+
+    async def main() -> float:
+        async with Runtime() as rt:
+            rt.spawn(Server)
+            cli = rt.spawn(Caller).cli
+            request = SetBool.Request(data=True)
+
+            async def one_caller() -> None:
+                call = cli.call
+                for _ in range(n // callers):
+                    await call(request)
+
+            start = time.perf_counter()
+            await asyncio.gather(*(one_caller() for _ in range(callers)))
+            return (time.perf_counter() - start) / n * 1e6
+
+    return asyncio.run(main())
+
+
+def future_call_time(n: int, callers: int) -> float:
+    """Microseconds per call with a bare asyncio.Queue of (request, future) and one server task."""
+
+    async def main() -> float:
+        loop = asyncio.get_running_loop()
+        queue: asyncio.Queue = asyncio.Queue()
+
+        async def server() -> None:
+            while True:
+                request, future = await queue.get()
+                future.set_result(handle(request, SetBool.Response()))
+
+        async def one_caller() -> None:
+            request = SetBool.Request(data=True)
+            for _ in range(n // callers):
+                future = loop.create_future()
+                queue.put_nowait((request, future))
+                await future
+
+        task = asyncio.ensure_future(server())
+        start = time.perf_counter()
+        await asyncio.gather(*(one_caller() for _ in range(callers)))
+        elapsed = time.perf_counter() - start
+        task.cancel()
+        return elapsed / n * 1e6
+
+    return asyncio.run(main())
+
+
+def floor_call_time(n: int, callers: int) -> float:
+    """Microseconds per call when the handler is called directly."""
+    request = SetBool.Request(data=True)
+    start = time.perf_counter()
+    for _ in range(n):
+        handle(request, SetBool.Response())
+    return (time.perf_counter() - start) / n * 1e6
+
+
+def run(quick: bool = False) -> list[Result]:
+    """Measure sequential and concurrent round trips with their baselines, in one run."""
+    n = 10_000 if quick else 100_000
+    results = []
+    for scenario, callers in (("c. service sequential", 1), (f"c. service {CONCURRENT} callers", CONCURRENT)):
+        bases = {"future": "future+Queue", "floor": "direct call (floor)"}
+        cases = (
+            ("actors", actors_call_time, bases),
+            ("future+Queue", future_call_time, {}),
+            ("direct call (floor)", floor_call_time, {}),
+        )
+        for case, fn, baselines in cases:
+            samples = repeat(lambda: fn(n, callers), 5)
+            results.append(Result(scenario, case, "µs/call", samples, higher_better=False, baselines=baselines))
+    return results
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="fewer calls")
+    print(table(run(parser.parse_args().quick)))
+
+
+if __name__ == "__main__":
+    main()
