@@ -23,14 +23,14 @@ ODOMETRY_EVERY = 5  # steps: 20 Hz
 
 
 def real_time_factor(robots: int, seconds: float, *, batched: bool, world: str = "empty") -> float:
-    """Simulate ``robots`` robots driving arcs for ``seconds`` simulated seconds; return sim s per wall s.
+    """Run ``robots`` robots on arcs for ``seconds`` simulated seconds; return sim s per wall s.
 
     ``batched`` scans all robots with one ``scan_all()``, otherwise with one ``scan()`` each.
     """
     sim = Simulation.from_file(world, dt=1.0 / PHYSICS_HZ)
     side = math.ceil(math.sqrt(robots))
     for i in range(robots):
-        # A grid over the middle of the arena, each robot on its own arc, so they meet walls and each other.
+        # A grid over the middle of the arena, each robot on its own arc, meeting walls and robots.
         x = -3.0 + 6.0 * (i % side + 0.5) / side
         y = -3.0 + 6.0 * (i // side + 0.5) / side
         robot = sim.add_robot(f"tb{i}", "burger", x=x, y=y, theta=i * 0.7)
@@ -54,18 +54,28 @@ def real_time_factor(robots: int, seconds: float, *, batched: bool, world: str =
 
 def main(argv: list[str] | None = None) -> None:
     """Print a table of real-time factors for 1 and 20 robots."""
-    parser = argparse.ArgumentParser(prog="python -m bench.sim", description=__doc__.splitlines()[0])
-    parser.add_argument("--seconds", type=float, default=30.0, help="simulated seconds per run (default 30)")
-    parser.add_argument("--repeat", type=int, default=5, help="runs per case; the median is shown (default 5)")
+    parser = argparse.ArgumentParser(
+        prog="python -m bench.sim", description=__doc__.splitlines()[0]
+    )
+    parser.add_argument(
+        "--seconds", type=float, default=30.0, help="simulated seconds per run (default 30)"
+    )
+    parser.add_argument(
+        "--repeat", type=int, default=5, help="runs per case; the median is shown (default 5)"
+    )
     args = parser.parse_args(argv)
-    print(f"physics {PHYSICS_HZ} Hz, scans {PHYSICS_HZ // SCAN_EVERY} Hz, odometry {PHYSICS_HZ // ODOMETRY_EVERY} Hz, "
-          f"{args.seconds:g} s simulated, median of {args.repeat}")  # fmt: skip
+    rates = f"scans {PHYSICS_HZ // SCAN_EVERY} Hz, odometry {PHYSICS_HZ // ODOMETRY_EVERY} Hz"
+    print(
+        f"physics {PHYSICS_HZ} Hz, {rates}, {args.seconds:g} s simulated, median of {args.repeat}"
+    )
     print(f"{'robots':>6}  {'scans':<16}  {'real-time factor':>16}  {'min':>8}  {'max':>8}")
     for robots in (1, 20):
         for batched, how in ((False, "scan() each"), (True, "scan_all()")):
-            factors = [real_time_factor(robots, args.seconds, batched=batched) for _ in range(args.repeat)]
-            median = statistics.median(factors)
-            print(f"{robots:>6}  {how:<16}  {median:>15.0f}x  {min(factors):>7.0f}x  {max(factors):>7.0f}x")
+            factors = [
+                real_time_factor(robots, args.seconds, batched=batched) for _ in range(args.repeat)
+            ]
+            low, median, high = min(factors), statistics.median(factors), max(factors)
+            print(f"{robots:>6}  {how:<16}  {median:>15.0f}x  {low:>7.0f}x  {high:>7.0f}x")
 
 
 if __name__ == "__main__":

@@ -10,7 +10,8 @@ import pytest
 from actors.errors import WorldFileError
 from world.arena import WORLDS_DIR, Box, World, load_world, posts, solids
 
-MINIMAL = 'bounds = { min = [-1, -1], max = [1, 1] }\n'
+MINIMAL = "bounds = { min = [-1, -1], max = [1, 1] }\n"
+BOX = "[[boxes]]\ncenter = [0, 0]\nsize = [1, 1]\n"
 
 
 def write(tmp_path: Path, text: str) -> Path:
@@ -48,19 +49,44 @@ def test_empty_world_is_a_10_m_square_around_the_origin() -> None:
     ("text", "expected"),
     [
         (MINIMAL + "colour = 1\n", "colour: unknown key"),
-        (MINIMAL + "[[boxes]]\ncenter = [0, 0]\nsize = [1, 1]\n[[boxes]]\ncenter = [0, 0]\nsize = [1, 1]\ncolour = 'red'\n",
-         "boxes[1].colour: unknown key"),
-        (MINIMAL + "[[boxes]]\ncenter = [0, 0]\nsize = [1, 1]\n[[boxes]]\ncenter = [0, 0]\nsize = [1, 2, 3]\n",
-         "boxes[1].size: expected an array of 2 numbers, got 3 items"),
-        (MINIMAL + "[[boxes]]\ncenter = [0, 0]\nsize = 'big'\n", "boxes[0].size: expected an array, got a string"),
+        (MINIMAL + BOX + BOX + "colour = 'red'\n", "boxes[1].colour: unknown key"),
+        (
+            MINIMAL + BOX + BOX.replace("[1, 1]", "[1, 2, 3]"),
+            "boxes[1].size: expected an array of 2 numbers, got 3 items",
+        ),
+        (
+            MINIMAL + "[[boxes]]\ncenter = [0, 0]\nsize = 'big'\n",
+            "boxes[0].size: expected an array, got a string",
+        ),
         (MINIMAL + "[[boxes]]\nsize = [1, 1]\n", "boxes[0].center: missing required key"),
-        (MINIMAL + "[[walls]]\nstart = [0, 0]\nend = [1, 0]\nthickness = -0.1\n", "walls[0].thickness: expected a number > 0.0"),
-        (MINIMAL + "[[walls]]\nstart = [nan, 0]\nend = [1, 0]\n", "walls[0].start[0]: expected a number >= -10000.0"),
-        (MINIMAL + "[[walls]]\nstart = [1, 0]\nend = [1, 0]\n", "walls[0]: start and end are the same point"),
-        (MINIMAL + "[[stop_signs]]\nposition = [0, 'north']\n", "stop_signs[0].position[1]: expected a number, got a string"),
-        (MINIMAL + "[[polygons]]\nvertices = [[0, 0], [1, 1], [1, 0], [0, 1]]\n", "polygons[0]: vertices: edges cross each other"),
-        (MINIMAL + "[[polygons]]\nvertices = [[0, 0], [1, 1]]\n", "polygons[0].vertices: expected an array of length >= 3"),
-        ("bounds = { min = [1, -1], max = [1, 1] }\n", "bounds: min must be below max on both axes"),
+        (
+            MINIMAL + "[[walls]]\nstart = [0, 0]\nend = [1, 0]\nthickness = -0.1\n",
+            "walls[0].thickness: expected a number > 0.0",
+        ),
+        (
+            MINIMAL + "[[walls]]\nstart = [nan, 0]\nend = [1, 0]\n",
+            "walls[0].start[0]: expected a number >= -10000.0",
+        ),
+        (
+            MINIMAL + "[[walls]]\nstart = [1, 0]\nend = [1, 0]\n",
+            "walls[0]: start and end are the same point",
+        ),
+        (
+            MINIMAL + "[[stop_signs]]\nposition = [0, 'north']\n",
+            "stop_signs[0].position[1]: expected a number, got a string",
+        ),
+        (
+            MINIMAL + "[[polygons]]\nvertices = [[0, 0], [1, 1], [1, 0], [0, 1]]\n",
+            "polygons[0]: vertices: edges cross each other",
+        ),
+        (
+            MINIMAL + "[[polygons]]\nvertices = [[0, 0], [1, 1]]\n",
+            "polygons[0].vertices: expected an array of length >= 3",
+        ),
+        (
+            "bounds = { min = [1, -1], max = [1, 1] }\n",
+            "bounds: min must be below max on both axes",
+        ),
         ("walls = []\n", "bounds: missing required key"),
         ("bounds = { min = [-1, -1], max = [1, 1]\n", "TOML syntax: "),
     ],
@@ -75,7 +101,9 @@ def test_malformed_world_names_file_and_key_path(tmp_path: Path, text: str, expe
 
 
 def test_missing_world_file(tmp_path: Path) -> None:
-    with pytest.raises(WorldFileError, match=r"nowhere\.toml: cannot read world file: No such file"):
+    with pytest.raises(
+        WorldFileError, match=r"nowhere\.toml: cannot read world file: No such file"
+    ):
         load_world(tmp_path / "nowhere.toml")
     with pytest.raises(WorldFileError, match=r"worlds/nowhere\.toml: cannot read"):
         load_world("nowhere")
@@ -90,11 +118,16 @@ def test_defaults_and_frozen(tmp_path: Path) -> None:
 
 def area(vertices: tuple[tuple[float, float], ...]) -> float:
     n = len(vertices)
-    return 0.5 * sum(vertices[i][0] * vertices[(i + 1) % n][1] - vertices[(i + 1) % n][0] * vertices[i][1] for i in range(n))
+    return 0.5 * sum(
+        vertices[i][0] * vertices[(i + 1) % n][1] - vertices[(i + 1) % n][0] * vertices[i][1]
+        for i in range(n)
+    )
 
 
 def test_solids_wind_counter_clockwise_and_keep_kind_and_name(tmp_path: Path) -> None:
-    clockwise = "[[polygons]]\nname = 'ell'\nvertices = [[0, 0], [0, 2], [1, 2], [1, 1], [2, 1], [2, 0]]\n"
+    clockwise = (
+        "[[polygons]]\nname = 'ell'\nvertices = [[0, 0], [0, 2], [1, 2], [1, 1], [2, 1], [2, 0]]\n"
+    )
     world = load_world(write(tmp_path, MINIMAL + clockwise))
     (ell,) = solids(world)
     assert ell.kind == "obstacle" and ell.name == "ell"
@@ -103,7 +136,10 @@ def test_solids_wind_counter_clockwise_and_keep_kind_and_name(tmp_path: Path) ->
 
 
 def test_box_outline_is_turned_about_its_centre() -> None:
-    world = World(bounds=load_world("empty").bounds, boxes=[Box(center=(1.0, 2.0), size=(2.0, 1.0), angle=math.pi / 2)])
+    world = World(
+        bounds=load_world("empty").bounds,
+        boxes=[Box(center=(1.0, 2.0), size=(2.0, 1.0), angle=math.pi / 2)],
+    )
     (box,) = solids(world)
     xs, ys = zip(*box.vertices)
     assert (min(xs), max(xs), min(ys), max(ys)) == pytest.approx((0.5, 1.5, 1.0, 3.0))

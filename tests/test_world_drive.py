@@ -1,13 +1,14 @@
-"""Differential-drive robots: command limits, unicycle accuracy, and stopping at walls, obstacles and robots."""
+"""Differential-drive robots: limits, unicycle accuracy, stopping at walls, obstacles, robots."""
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 
-from world.arena import solids
+from world.arena import World, posts, solids
 from world.drive import MODELS, Contact, Robot, Twist
 from world.simulation import Simulation
 
@@ -32,13 +33,28 @@ def gap_between(a: Robot, b: Robot) -> float:
     return math.dist(a.pose[:2], b.pose[:2]) - a.model.radius - b.model.radius
 
 
-def drive_for(sim: Simulation, steps: int, watch=lambda: 0.0) -> float:  # noqa: ANN001 - a gap callable
+def gap_to(robot: Robot, name: str, world: World) -> float:
+    """Distance (m) from the robot's edge to the named obstacle; negative when they overlap."""
+    for solid in solids(world):
+        if solid.name == name:
+            return gap_to_polygon(robot, solid.vertices)
+    (post,) = [p for p in posts(world) if p.name == name]
+    return math.dist(robot.pose[:2], post.center) - post.radius - robot.model.radius
+
+
+def drive_for(sim: Simulation, steps: int, watch: Callable[[], float] = lambda: 0.0) -> float:
     """Step ``steps`` times and return the smallest value ``watch()`` took after any step."""
     smallest = math.inf
     for _ in range(steps):
         sim.step()
         smallest = min(smallest, watch())
     return smallest
+
+
+def assert_stops_flush(sim: Simulation, gap: Callable[[], float]) -> None:
+    """Drive a simulated minute: the gap never goes below -1 mm, and ends within 2 mm of zero."""
+    assert drive_for(sim, MINUTE, gap) > -0.001, "went into it"
+    assert abs(gap()) < 0.002, "did not come to rest against it"
 
 
 # --- limits -----------------------------------------------------------------------
@@ -54,7 +70,9 @@ def drive_for(sim: Simulation, steps: int, watch=lambda: 0.0) -> float:  # noqa:
         ("asl_tb3", (-1.0, -5.0), (-0.5, -1.0)),
     ],
 )
-def test_commands_are_clipped(model: str, command: tuple[float, float], expected: tuple[float, float]) -> None:
+def test_commands_are_clipped(
+    model: str, command: tuple[float, float], expected: tuple[float, float]
+) -> None:
     sim = Simulation.from_file("empty")
     robot = sim.add_robot("r", model)
     robot.command(*command)
@@ -149,9 +167,9 @@ def test_stops_at_a_wall_without_passing_or_creeping(model: str) -> None:
     sim = Simulation.from_file("empty")
     robot = sim.add_robot("r", model, x=4.0, y=0.0)
     robot.command(1.0, 0.0)
-    gap = lambda: 5.0 - robot.pose.x - robot.model.radius  # noqa: E731 - the inner face is at x = 5
-    assert drive_for(sim, MINUTE, gap) > -0.001
-    assert abs(gap()) < 0.002
+    assert_stops_flush(
+        sim, lambda: 5.0 - robot.pose.x - robot.model.radius
+    )  # the inner face is at x = 5
     assert robot.contacts == (Contact("wall", None),) and robot.in_contact
     assert robot.pose == (pytest.approx(4.895, abs=0.002), 0.0, 0.0)  # no bounce, no spin, no drift
     assert robot.twist == (pytest.approx(0.0, abs=1e-9), 0.0)
@@ -176,58 +194,39 @@ def test_pushing_while_turning_keeps_the_heading_rate_and_the_wall() -> None:
     sim = Simulation.from_file("empty")
     robot = sim.add_robot("r", x=4.8, y=0.0)
     robot.command(0.22, 0.5)
-    gap = lambda: 5.0 - robot.pose.x - robot.model.radius  # noqa: E731
     before = robot.pose.theta
-    assert drive_for(sim, 100, gap) > -0.001
+    assert drive_for(sim, 100, lambda: 5.0 - robot.pose.x - robot.model.radius) > -0.001
     assert robot.pose.theta == pytest.approx(before + 0.5, abs=1e-9)
 
 
-def test_stops_at_a_box() -> None:
+@pytest.mark.parametrize(
+    ("name", "start"),
+    [
+        ("box_east", (0.5, 0.0, 0.0)),
+        ("box_west", (-1.0, -1.5, math.pi / 2)),  # turned 1.2 rad: met on a corner-ish face
+        ("stop_sign", (0.15, -1.0, -math.pi / 2)),
+    ],
+)
+def test_stops_at_an_obstacle(name: str, start: tuple[float, float, float]) -> None:
     sim = Simulation.from_file("signs")
-    robot = sim.add_robot("r", x=0.5, y=0.0)
+    x, y, theta = start
+    robot = sim.add_robot("r", x=x, y=y, theta=theta)
     robot.command(0.22, 0.0)
-    box = next(s for s in solids(sim.world) if s.name == "box_east")
-    gap = lambda: gap_to_polygon(robot, box.vertices)  # noqa: E731
-    assert drive_for(sim, MINUTE, gap) > -0.001
-    assert abs(gap()) < 0.002
-    assert robot.contacts == (Contact("obstacle", "box_east"),)
-
-
-def test_stops_at_a_turned_box() -> None:
-    sim = Simulation.from_file("signs")
-    robot = sim.add_robot("r", x=-1.0, y=-1.5, theta=math.pi / 2)
-    robot.command(0.22, 0.0)
-    box = next(s for s in solids(sim.world) if s.name == "box_west")
-    gap = lambda: gap_to_polygon(robot, box.vertices)  # noqa: E731
-    assert drive_for(sim, MINUTE, gap) > -0.001
-    assert abs(gap()) < 0.002
-    assert Contact("obstacle", "box_west") in robot.contacts
-
-
-def test_stops_at_a_stop_sign() -> None:
-    sim = Simulation.from_file("signs")
-    robot = sim.add_robot("r", x=0.15, y=-1.0, theta=-math.pi / 2)
-    robot.command(0.22, 0.0)
-    gap = lambda: math.dist(robot.pose[:2], (0.15, -2.0)) - 0.05 - robot.model.radius  # noqa: E731
-    assert drive_for(sim, MINUTE, gap) > -0.001
-    assert abs(gap()) < 0.002
-    assert robot.contacts == (Contact("obstacle", "stop_sign"),)
+    assert_stops_flush(sim, lambda: gap_to(robot, name, sim.world))
+    assert robot.contacts == (Contact("obstacle", name),)
 
 
 def test_stops_in_a_concave_polygon_corner(tmp_path: Path) -> None:
     path = tmp_path / "ell.toml"
     path.write_text(
-        'bounds = { min = [-3, -3], max = [3, 3] }\n'
+        "bounds = { min = [-3, -3], max = [3, 3] }\n"
         "[[polygons]]\nname = 'ell'\nvertices = [[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]]\n"
     )
     sim = Simulation.from_file(path)
     # Into the inner corner at (1, 1) along the diagonal: it must stop against both edges.
     robot = sim.add_robot("r", x=2.0, y=2.0, theta=-3 * math.pi / 4)
     robot.command(0.22, 0.0)
-    (ell,) = solids(sim.world)
-    gap = lambda: gap_to_polygon(robot, ell.vertices)  # noqa: E731
-    assert drive_for(sim, MINUTE, gap) > -0.001
-    assert abs(gap()) < 0.002
+    assert_stops_flush(sim, lambda: gap_to(robot, "ell", sim.world))
     assert robot.pose[:2] == pytest.approx((1.105, 1.105), abs=0.002)
 
 
@@ -236,9 +235,7 @@ def test_stops_at_a_standing_robot_without_pushing_it() -> None:
     mover = sim.add_robot("mover", "asl_tb3", x=0.0, y=0.0)
     still = sim.add_robot("still", x=1.0, y=0.05)
     mover.command(0.5, 0.0)
-    gap = lambda: gap_between(mover, still)  # noqa: E731
-    assert drive_for(sim, MINUTE, gap) > -0.001
-    assert abs(gap()) < 0.002
+    assert_stops_flush(sim, lambda: gap_between(mover, still))
     assert still.pose == pytest.approx((1.0, 0.05, 0.0), abs=1e-6)
     assert mover.contacts == (Contact("robot", "still"),)
     assert still.contacts == (Contact("robot", "mover"),)
@@ -250,9 +247,7 @@ def test_robots_meeting_head_on_both_stop() -> None:
     b = sim.add_robot("b", x=1.0, theta=math.pi)
     a.command(0.22, 0.0)
     b.command(0.22, 0.0)
-    gap = lambda: gap_between(a, b)  # noqa: E731
-    assert drive_for(sim, MINUTE, gap) > -0.001
-    assert abs(gap()) < 0.002
+    assert_stops_flush(sim, lambda: gap_between(a, b))
     assert a.pose.x == pytest.approx(-b.pose.x)
 
 
@@ -260,13 +255,21 @@ def test_a_crowd_never_overlaps() -> None:
     sim = Simulation.from_file("signs")
     rows = (-2.5, 1.0, 2.2)
     robots = [
-        sim.add_robot(f"r{i}", "asl_tb3" if i % 2 else "burger", x=-2.4 + 0.6 * (i % 9), y=rows[i // 9], theta=i)
+        sim.add_robot(
+            f"r{i}",
+            "asl_tb3" if i % 2 else "burger",
+            x=-2.4 + 0.6 * (i % 9),
+            y=rows[i // 9],
+            theta=i,
+        )
         for i in range(27)
     ]
     for i, robot in enumerate(robots):
         robot.command(0.5, 0.3 * math.sin(i))
+
     def worst() -> float:
         return min(gap_between(a, b) for i, a in enumerate(robots) for b in robots[i + 1 :])
+
     assert drive_for(sim, 1000, worst) > -0.001
 
 

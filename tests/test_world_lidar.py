@@ -75,12 +75,16 @@ def test_finish_ranges_marks_both_ends() -> None:
     assert ranges.tolist() == [-np.inf, 0.1, 1.0, 2.0, np.inf, np.inf]
 
 
-def brute_force(space: pymunk.Space, x: float, y: float, heading: float, reach: float) -> np.ndarray:
+def brute_force(
+    space: pymunk.Space, x: float, y: float, heading: float, reach: float
+) -> np.ndarray:
     """One pymunk segment query per beam: slow, and independent of Lidar's arithmetic."""
     out = np.full(BEAMS, np.inf)
     for i in range(BEAMS):
         a = heading + i * 2 * math.pi / BEAMS
-        hit = space.segment_query_first((x, y), (x + reach * math.cos(a), y + reach * math.sin(a)), 0, pymunk.ShapeFilter())
+        hit = space.segment_query_first(
+            (x, y), (x + reach * math.cos(a), y + reach * math.sin(a)), 0, pymunk.ShapeFilter()
+        )
         if hit is not None:
             out[i] = hit.alpha * reach
     return out
@@ -97,7 +101,9 @@ def test_matches_a_beam_by_beam_query_and_batches_like_single_scans() -> None:
         space.add(pymunk.Circle(space.static_body, post.radius, post.center))
     for x, y, r in robots:
         space.add(pymunk.Circle(space.static_body, r, (x, y)))
-    lidar = Lidar([s.vertices for s in solids(world)], [(*p.center, p.radius) for p in posts(world)])
+    lidar = Lidar(
+        [s.vertices for s in solids(world)], [(*p.center, p.radius) for p in posts(world)]
+    )
     poses = []
     while len(poses) < 25:
         x, y = rng.uniform(-2.9, 2.9, 2)
@@ -107,7 +113,9 @@ def test_matches_a_beam_by_beam_query_and_batches_like_single_scans() -> None:
     for row, (x, y, heading) in zip(batch, poses):
         expected = brute_force(space, x, y, heading, 3.5)
         np.testing.assert_allclose(row, expected, atol=1e-9)
-        np.testing.assert_array_equal(row, lidar.distances(np.array([(x, y, heading)]), BEAMS, 3.5, robots)[0])
+        np.testing.assert_array_equal(
+            row, lidar.distances(np.array([(x, y, heading)]), BEAMS, 3.5, robots)[0]
+        )
 
 
 def test_scan_all_gives_each_robots_scan() -> None:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from itertools import pairwise
+
 import pytest
 
 from world.record import Recorder
@@ -48,7 +50,7 @@ def test_memory_is_bounded_and_the_whole_run_stays_covered() -> None:
     samples = recorder.trajectories["r"]
     assert len(samples) <= 100 and len(recorder.frames) <= 10
     assert samples[0].t == 0.0 and samples[-1].t > 0.9 * sim.time
-    spacing = {round(b.t - a.t, 6) for a, b in zip(samples, samples[1:])}
+    spacing = {round(b.t - a.t, 6) for a, b in pairwise(samples)}
     assert len(spacing) == 1  # still evenly spaced, just coarser
 
 

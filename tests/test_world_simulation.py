@@ -76,10 +76,18 @@ NOISY = Noise(position=0.01, heading=0.01, linear=0.01, angular=0.01, ranges=0.0
 
 
 def run(seed_base: int, steps: int = 400) -> tuple[list, list, list]:
-    """A busy run: robots on arcs that meet walls, boxes and each other; every pose, odometry and scan."""
+    """A busy run: robots on arcs meeting walls, boxes, each other; all poses, odometry, scans."""
     sim = Simulation.from_file("signs")
     for i in range(6):
-        robot = sim.add_robot(f"r{i}", "asl_tb3" if i % 2 else "burger", x=-2.5 + i, y=1.0, theta=i, seed=seed_base + i, noise=NOISY)
+        robot = sim.add_robot(
+            f"r{i}",
+            "asl_tb3" if i % 2 else "burger",
+            x=-2.5 + i,
+            y=1.0,
+            theta=i,
+            seed=seed_base + i,
+            noise=NOISY,
+        )
         robot.command(0.5, math.sin(i))
     poses, odometry, scans = [], [], []
     for k in range(steps):
@@ -107,7 +115,7 @@ def test_same_seeds_give_identical_runs_and_other_seeds_other_noise() -> None:
 def test_noise_is_off_by_default() -> None:
     sim = Simulation.from_file("signs")
     robot = sim.add_robot("r", seed=5)
-    assert robot.noise.noise == Noise()
+    assert robot.noise == Noise()
     assert robot.odometry() == (*robot.pose, *robot.twist)
 
 

@@ -44,6 +44,7 @@ import msgspec
 from actors.errors import WorldFileError
 
 __all__ = [
+    "WORLDS_DIR",
     "Bounds",
     "Box",
     "Polygon",
@@ -52,7 +53,6 @@ __all__ = [
     "StopSign",
     "Wall",
     "World",
-    "WORLDS_DIR",
     "load_world",
     "posts",
     "solids",
@@ -197,7 +197,7 @@ def _lower_first(text: str) -> str:
 
 
 class Solid(NamedTuple):
-    """A static polygon of the world: ``kind`` is "wall" or "obstacle"; vertices wind counter-clockwise."""
+    """A static polygon: ``kind`` is "wall" or "obstacle"; its vertices wind counter-clockwise."""
 
     kind: str
     name: str | None
@@ -239,9 +239,7 @@ def _box_outline(box: Box) -> tuple[XY, ...]:
     return _rectangle(box.center, box.size, box.angle)
 
 
-def _rectangle(
-    center: XY, size: XY, angle: float
-) -> tuple[XY, ...]:
+def _rectangle(center: XY, size: XY, angle: float) -> tuple[XY, ...]:
     cx, cy = center
     hx, hy = size[0] / 2, size[1] / 2
     c, s = math.cos(angle), math.sin(angle)

@@ -1,4 +1,4 @@
-"""Differential-drive robots: the TurtleBot models, their command limits, and the driven pymunk body.
+"""Differential-drive robots: the TurtleBot models, their limits, and the driven pymunk body.
 
 How a robot moves. Each step the command (v, w) is clipped to the model's
 limits and rate-limited by its accelerations. The robot is a DYNAMIC pymunk
@@ -66,8 +66,13 @@ class RobotModel(msgspec.Struct, frozen=True, kw_only=True):
     mass: float = 1.0
     lidar: LidarSpec = LidarSpec()
 
-    def limit(self, v: float, w: float, last_v: float, last_w: float, dt: float) -> tuple[float, float]:
-        """The twist to drive this step: (v, w) clipped to the limits, then moved from (last_v, last_w) by at most accel * dt."""
+    def limit(
+        self, v: float, w: float, last_v: float, last_w: float, dt: float
+    ) -> tuple[float, float]:
+        """The twist to drive this step: (v, w) clipped to the limits.
+
+        Then rate-limited: at most ``accel * dt`` away from the last step's ``(last_v, last_w)``.
+        """
         v = min(max(v, -self.max_linear), self.max_linear)
         w = min(max(w, -self.max_angular), self.max_angular)
         if self.linear_accel is not None:
@@ -89,7 +94,7 @@ MODELS: dict[str, RobotModel] = {
 
 
 class Pose(NamedTuple):
-    """Where a robot is: ``x``, ``y`` (m) and ``theta`` (rad, in [-pi, pi], 0 along +x, counter-clockwise)."""
+    """Where a robot is: ``x``, ``y`` (m), ``theta`` (rad in [-pi, pi], 0 along +x, CCW)."""
 
     x: float
     y: float
@@ -97,7 +102,7 @@ class Pose(NamedTuple):
 
 
 class Twist(NamedTuple):
-    """How a robot moves in its own frame: ``v`` forward (m/s) and ``w`` turning (rad/s, counter-clockwise)."""
+    """Motion in the robot's own frame: ``v`` forward (m/s), ``w`` turning (rad/s, CCW)."""
 
     v: float
     w: float
@@ -114,7 +119,7 @@ class Odometry(NamedTuple):
 
 
 class Contact(NamedTuple):
-    """Something a robot touches: ``kind`` is "wall", "obstacle" or "robot"; ``name`` is the obstacle's or robot's, if any."""
+    """Something a robot touches: ``kind`` "wall", "obstacle" or "robot"; ``name`` if any."""
 
     kind: str
     name: str | None
@@ -136,10 +141,13 @@ class Robot:
     ``odometry()`` is what its sensors report, with noise when some is set.
     """
 
-    def __init__(self, name: str, model: RobotModel, pose: Pose, *, seed: int, noise: Noise) -> None:
+    def __init__(
+        self, name: str, model: RobotModel, pose: Pose, *, seed: int, noise: Noise
+    ) -> None:
         self.name = name
         self.model = model
-        self.noise = NoiseSource(noise, seed)
+        self.noise = noise
+        self.noise_source = NoiseSource(noise, seed)
         self.body = pymunk.Body(model.mass, pymunk.moment_for_circle(model.mass, 0.0, model.radius))
         self.body.position = (pose.x, pose.y)
         self.body.angle = pose.theta
@@ -154,7 +162,7 @@ class Robot:
         self._near: list[_Near] = []
 
     def command(self, v: float, w: float) -> None:
-        """Drive at ``v`` m/s forward and ``w`` rad/s counter-clockwise, within the model's limits, from the next step on."""
+        """Drive at ``v`` m/s turning at ``w`` rad/s, within limits, from the next step on."""
         self._command = (float(v), float(w))
 
     @property
@@ -170,7 +178,7 @@ class Robot:
 
     @property
     def twist(self) -> Twist:
-        """The true body-frame twist of the last step: the command as limited, less what contacts blocked."""
+        """The true twist of the last step: the limited command, less what contacts blocked."""
         return self._twist
 
     @property
@@ -184,13 +192,13 @@ class Robot:
         return any(near.gap <= TOUCHING for near in self._near)
 
     def odometry(self) -> Odometry:
-        """The pose and twist as odometry reports them: the truth plus this robot's odometry noise."""
+        """The pose and twist as odometry reports them: the truth plus the robot's noise."""
         (x, y), theta = self.body.position, self.body.angle
-        x, y, theta, v, w = self.noise.odometry(x, y, theta, *self._twist)
+        x, y, theta, v, w = self.noise_source.odometry(x, y, theta, *self._twist)
         return Odometry(x, y, math.remainder(theta, math.tau), v, w)
 
     def _drive(self, dt: float) -> None:
-        """Set the body's velocity for the coming step of ``dt`` seconds (called by the Simulation)."""
+        """Set the body's velocity for the coming step of ``dt`` s (called by the Simulation)."""
         v, w = self._wheels = self.model.limit(*self._command, *self._wheels, dt)
         half = 0.5 * w * dt
         heading = self.body.angle + half
@@ -219,7 +227,7 @@ class Robot:
         self._twist = Twist((ux * cos_h + uy * sin_h) / sinc, w)
 
     def _sense(self, arbiter: pymunk.Arbiter, what: Contact) -> None:
-        """Note a thing near the sensor circle during a step (called from the collision callback)."""
+        """Note a thing near the sensor circle during a step (called by the collision callback)."""
         points = arbiter.contact_point_set
         nx, ny = points.normal
         gap = points.points[0].distance + LOOKAHEAD

@@ -1,4 +1,4 @@
-"""A 2D lidar: ranges along evenly spaced beams, cast against every edge and circle at once with numpy.
+"""A 2D lidar: ranges along evenly spaced beams, cast at every edge and circle at once with numpy.
 
 Beams are not pymunk queries. Seen from a scanner, each edge or circle covers
 an arc of angles, so only the few beams inside that arc can hit it: the cast
@@ -25,7 +25,7 @@ __all__ = ["Lidar", "LidarSpec", "finish_ranges"]
 
 
 class LidarSpec(msgspec.Struct, frozen=True, kw_only=True):
-    """A scanner: ``beams`` beams over a full turn, beam i at ``i * 2 pi / beams`` rad from the heading.
+    """A scanner: ``beams`` beams over a full turn, beam i at ``i * 2 pi / beams`` rad from heading.
 
     ``range_min`` and ``range_max`` are in metres, as in sensor_msgs/LaserScan.
     """
@@ -43,7 +43,7 @@ class Lidar:
         polygons: Sequence[Sequence[tuple[float, float]]],
         circles: Sequence[tuple[float, float, float]] = (),
     ) -> None:
-        """Take closed counter-clockwise ``polygons`` (vertex lists) and ``(x, y, radius)`` circles."""
+        """Take closed counter-clockwise ``polygons`` (vertex lists) and ``(x, y, r)`` circles."""
         starts = [p for poly in polygons for p in poly]
         ends = [poly[(i + 1) % len(poly)] for poly in polygons for i in range(len(poly))]
         self._p = np.array(starts, dtype=float).reshape(-1, 2)
@@ -117,7 +117,7 @@ class _Fan:
     def spread(
         self, scanner: np.ndarray, first: np.ndarray, width: np.ndarray
     ) -> tuple[np.ndarray, np.ndarray]:
-        """(item, flat beam) pairs: each beam of ``scanner[item]`` within ``[first, first + width]`` rad.
+        """(item, flat beam) pairs: each beam of ``scanner[item]`` in ``[first, first + width]``.
 
         May include a beam either side of each interval: callers test each pair exactly.
         """
@@ -141,7 +141,9 @@ def _cast_circles(best: np.ndarray, fan: _Fan, circles: np.ndarray, reach: float
     half = np.arcsin(r / np.sqrt(dist2))  # half the angle the circle subtends
     pair, beam = fan.spread(scanner, np.arctan2(cy, cx) - half, 2 * half)
     cx, cy, r, dist2 = cx[pair], cy[pair], r[pair], dist2[pair]
-    along = fan.dx[beam] * cx + fan.dy[beam] * cy  # distance to the point of the beam nearest the centre
+    along = (
+        fan.dx[beam] * cx + fan.dy[beam] * cy
+    )  # distance to the point of the beam nearest the centre
     half_chord2 = r * r - (dist2 - along * along)
     hit = (along > 0) & (half_chord2 >= 0)
     np.minimum.at(best, beam[hit], along[hit] - np.sqrt(half_chord2[hit]))

@@ -1,4 +1,4 @@
-"""Sensor noise: Gaussian errors on odometry and lidar ranges, drawn from per-robot seeded generators."""
+"""Sensor noise: Gaussian errors on odometry and lidar ranges, from per-robot seeded generators."""
 
 from __future__ import annotations
 
@@ -26,7 +26,9 @@ class Noise(msgspec.Struct, frozen=True, kw_only=True):
         for field in self.__struct_fields__:
             value = getattr(self, field)
             if not 0.0 <= value < float("inf"):
-                raise ValueError(f"noise {field} must be a finite standard deviation >= 0, got {value!r}")
+                raise ValueError(
+                    f"noise {field} must be a finite standard deviation >= 0, got {value!r}"
+                )
 
     @property
     def odometry(self) -> bool:
@@ -49,7 +51,7 @@ class NoiseSource:
     def odometry(
         self, x: float, y: float, theta: float, v: float, w: float
     ) -> tuple[float, float, float, float, float]:
-        """The given pose (m, m, rad) and twist (m/s, rad/s) plus noise; unchanged when odometry noise is off."""
+        """The pose (m, m, rad) and twist (m/s, rad/s) plus noise; unchanged when it is off."""
         noise = self.noise
         if not noise.odometry:
             return x, y, theta, v, w
@@ -58,7 +60,7 @@ class NoiseSource:
         return x + dx, y + dy, theta + dtheta, v + dv, w + dw
 
     def ranges(self, distances: np.ndarray) -> np.ndarray:
-        """Add range noise to ``distances`` (m) in place and return them; infinities stay infinite."""
+        """Add range noise to ``distances`` (m) in place and return them; infinities stay."""
         if self.noise.ranges:
             distances += self._ranges.normal(0.0, self.noise.ranges, distances.shape)
         return distances

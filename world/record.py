@@ -1,4 +1,4 @@
-"""Recording a run: each robot's trajectory, and snapshots of every robot for an animation, in bounded memory."""
+"""Recording a run in bounded memory: each robot's trajectory, and snapshots for an animation."""
 
 from __future__ import annotations
 

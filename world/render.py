@@ -1,4 +1,4 @@
-"""Pictures of a recorded run: the arena, its obstacles and stop signs, each robot and its trajectory, as PNG or GIF.
+"""Pictures of a recorded run as PNG or GIF: the arena, obstacles, stop signs, robots, trajectories.
 
 Pillow is an optional dependency (the ``viz`` extra), imported only when a
 picture is drawn. North is up: +y points to the top of the image.
@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import math
 import os
-from pathlib import Path
 from collections.abc import Mapping
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from world.arena import posts, solids
@@ -26,12 +26,22 @@ _FLOOR = (246, 246, 242)
 _WALL = (70, 70, 76)
 _OBSTACLE = (166, 124, 82)
 _SIGN = (200, 30, 36)
-_ROBOTS = [(31, 119, 180), (255, 127, 14), (44, 160, 44), (214, 39, 40), (148, 103, 189),
-           (140, 86, 75), (227, 119, 194), (127, 127, 127), (188, 189, 34), (23, 190, 207)]  # fmt: skip
+_ROBOTS = [
+    (31, 119, 180),
+    (255, 127, 14),
+    (44, 160, 44),
+    (214, 39, 40),
+    (148, 103, 189),
+    (140, 86, 75),
+    (227, 119, 194),
+    (127, 127, 127),
+    (188, 189, 34),
+    (23, 190, 207),
+]
 
 
 def image_size(recorder: Recorder, scale: float) -> tuple[int, int]:
-    """The (width, height) in pixels of a picture of the world's bounds at ``scale`` pixels per metre."""
+    """The (width, height) in pixels of a picture of the world's bounds at ``scale`` px/m."""
     (x0, y0), (x1, y1) = recorder.sim.world.bounds.min, recorder.sim.world.bounds.max
     return max(1, round((x1 - x0) * scale)), max(1, round((y1 - y0) * scale))
 
@@ -89,7 +99,9 @@ class _Canvas:
         self.size = image_size(recorder, scale)
         self._scale = scale * _SUPERSAMPLE
         self._origin = (recorder.sim.world.bounds.min[0], recorder.sim.world.bounds.max[1])
-        self._colours = {name: _ROBOTS[i % len(_ROBOTS)] for i, name in enumerate(recorder.radii)}
+        live = {name: robot.model.radius for name, robot in recorder.sim.robots.items()}
+        self._radii = {**recorder.radii, **live}  # robots ever recorded, and any added since
+        self._colours = {name: _ROBOTS[i % len(_ROBOTS)] for i, name in enumerate(self._radii)}
         self._background = self._draw_world()
 
     def picture(self, poses: Mapping[str, Pose], *, until: float) -> Image:
@@ -102,7 +114,7 @@ class _Canvas:
             if name in poses:
                 points.append(self._px(poses[name].x, poses[name].y))
             if len(points) > 1:
-                draw.line(points, fill=self._colour(name), width=width, joint="curve")
+                draw.line(points, fill=self._colours[name], width=width, joint="curve")
         for name, pose in poses.items():
             self._draw_robot(draw, name, pose)
         return image.resize(self.size, self._pil.Image.Resampling.LANCZOS)
@@ -117,23 +129,30 @@ class _Canvas:
         for post in posts(self.recorder.sim.world):
             # Drawn larger than the post itself, like the sign on top of it.
             radius = max(post.radius, 0.08) * self._scale
-            draw.regular_polygon((*self._px(*post.center), radius), 8, rotation=22.5,
-                                 fill=_SIGN, outline=(255, 255, 255), width=max(1, round(radius / 6)))  # fmt: skip
+            draw.regular_polygon(
+                (*self._px(*post.center), radius),
+                8,
+                rotation=22.5,
+                fill=_SIGN,
+                outline=(255, 255, 255),
+                width=max(1, round(radius / 6)),
+            )
         return image
 
     def _draw_robot(self, draw: Any, name: str, pose: Pose) -> None:
-        radius = self.recorder.radii.get(name, 0.105)
+        radius = self._radii[name]
         cx, cy = self._px(pose.x, pose.y)
         r = radius * self._scale
-        draw.ellipse((cx - r, cy - r, cx + r, cy + r), fill=self._colour(name), outline=(20, 20, 20),
-                     width=max(1, round(r / 10)))  # fmt: skip
-        tip = self._px(pose.x + radius * math.cos(pose.theta), pose.y + radius * math.sin(pose.theta))
+        draw.ellipse(
+            (cx - r, cy - r, cx + r, cy + r),
+            fill=self._colours[name],
+            outline=(20, 20, 20),
+            width=max(1, round(r / 10)),
+        )
+        tip = self._px(
+            pose.x + radius * math.cos(pose.theta), pose.y + radius * math.sin(pose.theta)
+        )
         draw.line([(cx, cy), tip], fill=(255, 255, 255), width=max(1, round(r / 5)))
-
-    def _colour(self, name: str) -> tuple[int, int, int]:
-        if name not in self._colours:
-            self._colours[name] = _ROBOTS[len(self._colours) % len(_ROBOTS)]
-        return self._colours[name]
 
     def _px(self, x: float, y: float) -> tuple[float, float]:
         return (x - self._origin[0]) * self._scale, (self._origin[1] - y) * self._scale
@@ -147,4 +166,3 @@ def _pillow() -> Any:
     except ImportError as exc:
         raise ImportError("drawing a world needs Pillow: pip install 'actors[viz]'") from exc
     return PIL
-

@@ -1,4 +1,4 @@
-"""The simulated world: a top-down pymunk space built from a world file, its robots, stepping and lidar scans.
+"""The simulated world: a top-down pymunk space built from a world file, its robots, and scans.
 
 Deterministic by construction: no wall clock and no global random state. The
 same world, the same robots added in the same order with the same seeds, and
@@ -7,7 +7,6 @@ the same commands at the same steps give bit-identical poses and scans.
 
 from __future__ import annotations
 
-import math
 import os
 from collections.abc import Mapping
 from types import MappingProxyType
@@ -37,7 +36,7 @@ class Simulation:
     """
 
     def __init__(self, world: World, *, dt: float = 0.01) -> None:
-        """Build the static world (walls, boxes, polygons, stop signs); ``dt`` (s) is the default step."""
+        """Build the static world (walls, boxes, polygons, stop signs); ``dt`` (s) is the step."""
         if not dt > 0:
             raise ValueError(f"dt must be > 0 s, got {dt!r}")
         self.world = world
@@ -55,12 +54,14 @@ class Simulation:
             self._add_solid(solid)
         for post in the_posts:
             self._add_post(post)
-        self.lidar = Lidar([s.vertices for s in the_solids], [(*p.center, p.radius) for p in the_posts])
+        self.lidar = Lidar(
+            [s.vertices for s in the_solids], [(*p.center, p.radius) for p in the_posts]
+        )
         self.space.on_collision(_SENSOR_TYPE, None, pre_solve=self._on_sensor)
 
     @classmethod
     def from_file(cls, source: str | os.PathLike[str], *, dt: float = 0.01) -> Simulation:
-        """Load a world file (a path, or a shipped world's name) and build it; raises WorldFileError."""
+        """Load a world file (a path, or a shipped world's name); raises WorldFileError."""
         return cls(load_world(source), dt=dt)
 
     @property
@@ -95,10 +96,15 @@ class Simulation:
         robot = Robot(name, model, Pose(x, y, theta), seed=seed, noise=noise or Noise())
         (x0, y0), (x1, y1) = self.world.bounds.min, self.world.bounds.max
         if not (x0 <= x <= x1 and y0 <= y <= y1):
-            raise ValueError(f"robot {name!r} would start at ({x}, {y}), outside the world's bounds")
-        robot.shape.filter = pymunk.ShapeFilter(categories=_SOLID, mask=_SOLID)  # sensors are not obstacles
+            raise ValueError(
+                f"robot {name!r} would start at ({x}, {y}), outside the world's bounds"
+            )
+        # Query solids only: another robot's sensor circle is no obstacle.
+        robot.shape.filter = pymunk.ShapeFilter(categories=_SOLID, mask=_SOLID)
         if hits := self.space.shape_query(robot.shape):
-            raise ValueError(f"robot {name!r} would start overlapping {self._describe(hits[0].shape)}")
+            raise ValueError(
+                f"robot {name!r} would start overlapping {self._describe(hits[0].shape)}"
+            )
         robot.shape.filter = pymunk.ShapeFilter(categories=_SOLID)
         robot.sensor.collision_type = _SENSOR_TYPE
         robot.sensor.filter = pymunk.ShapeFilter(categories=_SENSING, mask=_SOLID)
@@ -117,7 +123,7 @@ class Simulation:
         self._circles = None
 
     def step(self, dt: float | None = None) -> None:
-        """Advance ``dt`` seconds (default ``self.dt``): apply every robot's command, then move everything."""
+        """Advance ``dt`` s (default ``self.dt``): apply every robot's command, then move it all."""
         dt = self.dt if dt is None else dt
         if not dt > 0:
             raise ValueError(f"dt must be > 0 s, got {dt!r}")
@@ -139,7 +145,7 @@ class Simulation:
         return self._scan([self._robots[name]])[name]
 
     def scan_all(self) -> dict[str, np.ndarray]:
-        """A sweep of every robot, by name, as ``scan`` gives it; much cheaper than one ``scan`` per robot."""
+        """A sweep of every robot by name, as ``scan`` gives it; cheaper than ``scan`` each."""
         return self._scan(list(self._robots.values()))
 
     def _scan(self, robots: list[Robot]) -> dict[str, np.ndarray]:
@@ -151,7 +157,7 @@ class Simulation:
             poses = np.array([(*robot.body.position, robot.body.angle) for robot in group])
             rows = self.lidar.distances(poses, spec.beams, spec.range_max, self._robot_circles())
             for robot, row in zip(group, rows):
-                scans[robot.name] = finish_ranges(robot.noise.ranges(row), spec)
+                scans[robot.name] = finish_ranges(robot.noise_source.ranges(row), spec)
         return scans
 
     def _robot_circles(self) -> np.ndarray:
@@ -168,7 +174,9 @@ class Simulation:
             closed = [*solid.vertices, solid.vertices[0]]
             pieces = [hull[:-1] for hull in pymunk.autogeometry.convex_decomposition(closed, 0.0)]
         for piece in pieces:
-            self._add_static(pymunk.Poly(self.space.static_body, piece), Contact(solid.kind, solid.name))
+            self._add_static(
+                pymunk.Poly(self.space.static_body, piece), Contact(solid.kind, solid.name)
+            )
 
     def _add_post(self, post: Post) -> None:
         shape = pymunk.Circle(self.space.static_body, post.radius, post.center)
