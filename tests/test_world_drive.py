@@ -110,6 +110,15 @@ def test_asl_tb3_ramps_at_its_accelerations() -> None:
     assert robot.twist == (pytest.approx(0.49), pytest.approx(-0.98))
 
 
+@pytest.mark.parametrize("bad", [float("nan"), float("inf")])
+def test_non_finite_commands_are_refused(bad: float) -> None:
+    robot = Simulation.from_file("empty").add_robot("r")
+    robot.command(0.1, 0.2)
+    with pytest.raises(ValueError, match="robot 'r': command must be finite"):
+        robot.command(bad, 0.0)
+    assert robot.commanded == (0.1, 0.2)
+
+
 def test_limits_are_pure() -> None:
     model = MODELS["asl_tb3"]
     assert model.limit(2.0, 0.0, 0.0, 0.0, 0.1) == pytest.approx((0.1, 0.0))
@@ -172,6 +181,9 @@ def test_stops_at_a_wall_without_passing_or_creeping(model: str) -> None:
     )  # the inner face is at x = 5
     assert robot.contacts == (Contact("wall", None),) and robot.in_contact
     assert robot.pose == (pytest.approx(4.895, abs=0.002), 0.0, 0.0)  # no bounce, no spin, no drift
+    resting = robot.pose
+    drive_for(sim, 100)
+    assert robot.pose == resting  # no jitter either
     assert robot.twist == (pytest.approx(0.0, abs=1e-9), 0.0)
 
 

@@ -56,6 +56,7 @@ def test_add_and_remove_robots() -> None:
         ({"name": "c", "x": 3.0}, "would start overlapping a wall"),
         ({"name": "c", "x": -2.0, "y": 0.1}, "would start overlapping robot 'a'"),
         ({"name": "c", "x": 9.0}, "outside the world's bounds"),
+        ({"name": "c", "theta": float("nan")}, "start pose must be finite"),
     ],
 )
 def test_add_robot_rejects(kwargs: dict, message: str) -> None:

@@ -162,8 +162,14 @@ class Robot:
         self._near: list[_Near] = []
 
     def command(self, v: float, w: float) -> None:
-        """Drive at ``v`` m/s turning at ``w`` rad/s, within limits, from the next step on."""
-        self._command = (float(v), float(w))
+        """Drive at ``v`` m/s turning at ``w`` rad/s, within limits, from the next step on.
+
+        Raises ValueError for a value that is not a finite number, and keeps the last command.
+        """
+        v, w = float(v), float(w)
+        if not (math.isfinite(v) and math.isfinite(w)):
+            raise ValueError(f"robot {self.name!r}: command must be finite, got v={v}, w={w}")
+        self._command = (v, w)
 
     @property
     def commanded(self) -> Twist:

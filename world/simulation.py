@@ -7,6 +7,7 @@ the same commands at the same steps give bit-identical poses and scans.
 
 from __future__ import annotations
 
+import math
 import os
 from collections.abc import Mapping
 from types import MappingProxyType
@@ -84,8 +85,8 @@ class Simulation:
 
         ``model`` is a name from ``MODELS`` ("burger", "asl_tb3") or a RobotModel.
         ``seed`` seeds the robot's own noise generators; ``noise`` defaults to none.
-        Raises ValueError if the name is taken, the model unknown, or the robot
-        would start outside the bounds or overlapping anything.
+        Raises ValueError if the name is taken, the model unknown, the pose not
+        finite, or the robot would start outside the bounds or overlapping anything.
         """
         if name in self._robots:
             raise ValueError(f"a robot named {name!r} already exists")
@@ -93,6 +94,8 @@ class Simulation:
             if model not in MODELS:
                 raise ValueError(f"unknown robot model {model!r}; known: {', '.join(MODELS)}")
             model = MODELS[model]
+        if not all(math.isfinite(value) for value in (x, y, theta)):
+            raise ValueError(f"robot {name!r}: start pose must be finite, got ({x}, {y}, {theta})")
         robot = Robot(name, model, Pose(x, y, theta), seed=seed, noise=noise or Noise())
         (x0, y0), (x1, y1) = self.world.bounds.min, self.world.bounds.max
         if not (x0 <= x <= x1 and y0 <= y <= y1):
