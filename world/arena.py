@@ -126,7 +126,12 @@ class StopSign(_Spec):
 
 
 class World(_Spec):
-    """A whole world file."""
+    """A whole world file.
+
+    ``load_world`` checks every value; building one in code checks only the
+    relations between fields (``__post_init__``), as msgspec checks value
+    constraints when decoding.
+    """
 
     bounds: Bounds
     description: str = ""
