@@ -17,19 +17,37 @@ T = TypeVar("T")
 
 # msgspec says e.g. "Object contains unknown field `foo` - at `$.nodes[0]`".
 _AT = re.compile(r"^(?P<problem>.*?)(?: - at `\$(?P<path>[^`]*)`)?$", re.S)
-_FIELD = re.compile(r"Object (?:contains unknown|missing required) field `(?P<field>[^`]+)`")
+_FIELD = re.compile(r"^Object (?P<what>contains unknown|missing required) field `(?P<key>[^`]+)`$")
+_LENGTH = re.compile(r"^Expected `array` of length (?P<want>\d+), got (?P<got>\d+)$")
+# msgspec's type names in the words a TOML file uses.
+_TYPE_NAMES = {
+    "float": "a number",
+    "int": "an integer",
+    "str": "a string",
+    "bool": "a boolean",
+    "array": "an array",
+    "object": "a table",
+    "null": "nothing",
+}
 
 
 def key_path_error(exc: msgspec.ValidationError) -> tuple[str, str]:
-    """Split a msgspec validation error into ``(key path, problem)``, e.g. ``("nodes[0].use", "missing")``."""
+    """Split a msgspec validation error into ``(key path, problem)`` in TOML's words.
+
+    ``"Object missing required field `use` - at `$.nodes[0]`"`` gives
+    ``("nodes[0].use", "missing required key")``.
+    """
     match = _AT.match(str(exc))
     assert match is not None  # the pattern matches any text
     problem, path = match["problem"], (match["path"] or "").lstrip(".")
-    field = _FIELD.match(problem)
-    if field is not None:
-        path = f"{path}.{field['field']}" if path else field["field"]
-        problem = "unknown key" if "unknown" in problem else "missing required key"
-    return path or "(top level)", problem[0].lower() + problem[1:]
+    if field := _FIELD.match(problem):
+        path = f"{path}.{field['key']}" if path else field["key"]
+        problem = "unknown key" if field["what"] == "contains unknown" else "missing required key"
+    elif length := _LENGTH.match(problem):
+        problem = f"expected an array of {length['want']} numbers, got {length['got']} items"
+    else:
+        problem = re.sub(r"`(\w+)`", lambda m: _TYPE_NAMES.get(m[1], m[1]), problem)
+    return path or "(top level)", problem[:1].lower() + problem[1:]
 
 
 def load_toml(path: str | Path, type_: type[T], error: type[ActorsError]) -> T:

@@ -53,9 +53,9 @@ restart = "permanent"
     ("text", "expected"),
     [
         ('[runtime]\nclok = "wall"\n', "runtime.clok: unknown key"),
-        ("[supervisor]\nintensity = \"three\"\n", "supervisor.intensity: expected `int`, got `str`"),
+        ("[supervisor]\nintensity = \"three\"\n", "supervisor.intensity: expected an integer, got a string"),
         ('[runtime]\nclock = "sundial"\n', "runtime.clock: invalid enum value 'sundial'"),
-        ("[runtime]\nduration = -1\n", "runtime.duration: expected `float` >= 0"),
+        ("[runtime]\nduration = -1\n", "runtime.duration: expected a number >= 0"),
         ('[[nodes]]\nname = "x"\n', "nodes[0].use: missing required key"),
         ('[[nodes]]\nuse = "nodes.nope:Missing"\n', "nodes[0].use: cannot import 'nodes.nope'"),
         ('[[nodes]]\nuse = "nodes.talker:Nope"\n', "nodes[0].use: module 'nodes.talker' has no 'Nope'"),

@@ -88,7 +88,7 @@ def test_empty_world_is_a_10_m_square_around_the_origin() -> None:
             "bounds: min must be below max on both axes",
         ),
         ("walls = []\n", "bounds: missing required key"),
-        ("bounds = { min = [-1, -1], max = [1, 1]\n", "TOML syntax: "),
+        ("bounds = { min = [-1, -1], max = [1, 1]\n", "TOML syntax error: "),
     ],
 )
 def test_malformed_world_names_file_and_key_path(tmp_path: Path, text: str, expected: str) -> None:
@@ -102,7 +102,7 @@ def test_malformed_world_names_file_and_key_path(tmp_path: Path, text: str, expe
 
 def test_missing_world_file(tmp_path: Path) -> None:
     with pytest.raises(
-        WorldFileError, match=r"nowhere\.toml: cannot read world file: No such file"
+        WorldFileError, match=r"nowhere\.toml: cannot read: No such file"
     ):
         load_world(tmp_path / "nowhere.toml")
     with pytest.raises(WorldFileError, match=r"worlds/nowhere\.toml: cannot read"):

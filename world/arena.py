@@ -34,13 +34,13 @@ from __future__ import annotations
 
 import math
 import os
-import re
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Annotated, NamedTuple
 
 import msgspec
 
+from actors.config import load_toml
 from actors.errors import WorldFileError
 
 __all__ = [
@@ -152,50 +152,7 @@ def load_world(source: str | os.PathLike[str]) -> World:
     path = Path(source)
     if path.suffix == "" and path.parent == Path("."):
         path = WORLDS_DIR / f"{path.name}.toml"
-    try:
-        data = path.read_bytes()
-    except OSError as exc:
-        raise WorldFileError(f"{path}: cannot read world file: {exc.strerror}") from None
-    try:
-        return msgspec.toml.decode(data, type=World)
-    except msgspec.ValidationError as exc:
-        raise WorldFileError(f"{path}: {_readable(str(exc))}") from None
-    except msgspec.DecodeError as exc:
-        raise WorldFileError(f"{path}: TOML syntax: {_lower_first(str(exc))}") from None
-
-
-# msgspec says "Expected `array` of length 2, got 3 - at `$.boxes[1].size`".
-_AT = re.compile(r"^(?P<problem>.*) - at `\$(?P<path>[^`]*)`$", re.DOTALL)
-_FIELD = re.compile(r"^Object (?P<what>contains unknown|missing required) field `(?P<key>[^`]*)`$")
-_LENGTH = re.compile(r"^Expected `array` of length (?P<want>\d+), got (?P<got>\d+)$")
-_TYPE_NAMES = {
-    "float": "a number",
-    "int": "an integer",
-    "str": "a string",
-    "bool": "a boolean",
-    "array": "an array",
-    "object": "a table",
-    "null": "nothing",
-}
-
-
-def _readable(message: str) -> str:
-    """Turn msgspec's validation message into ``key.path: problem`` in TOML's words."""
-    match = _AT.match(message)
-    problem, path = (match["problem"], match["path"]) if match else (message, "")
-    if field := _FIELD.match(problem):
-        path = f"{path}.{field['key']}"
-        problem = "unknown key" if field["what"] == "contains unknown" else "missing required key"
-    elif length := _LENGTH.match(problem):
-        problem = f"expected an array of {length['want']} numbers, got {length['got']} items"
-    else:
-        problem = re.sub(r"`(\w+)`", lambda m: _TYPE_NAMES.get(m[1], m[1]), problem)
-    path = path.removeprefix(".")
-    return f"{path}: {_lower_first(problem)}" if path else _lower_first(problem)
-
-
-def _lower_first(text: str) -> str:
-    return text[:1].lower() + text[1:]
+    return load_toml(path, World, WorldFileError)
 
 
 # --- static geometry -------------------------------------------------------------
