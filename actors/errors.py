@@ -8,7 +8,8 @@
     ├── InvalidNameError             a node, topic or service name breaks the ROS rules
     ├── TopicTypeError               publisher and subscription disagree on a topic's type
     ├── GraphFileError               graph.toml is malformed (names file and key path)
-    ├── WorldFileError               a world file is malformed (names file and key path)
+    ├── WorldError                   a robot without a world, a start pose that does not fit
+    │   └── WorldFileError           a world file is malformed (names file and key path)
     ├── ServiceError                 a service call failed on the server's side
     ├── ParameterError               a parameter is undeclared, or already declared
     ├── ControlError                 the command line cannot reach or use a running graph
@@ -30,6 +31,7 @@ __all__ = [
     "InvalidNameError",
     "TopicTypeError",
     "GraphFileError",
+    "WorldError",
     "WorldFileError",
     "ServiceError",
     "ParameterError",
@@ -77,7 +79,11 @@ class GraphFileError(ActorsError):
     """A graph file is malformed; the text names the file and the key path."""
 
 
-class WorldFileError(ActorsError):
+class WorldError(ActorsError):
+    """The simulated world cannot do what was asked (no World node, a robot that does not fit)."""
+
+
+class WorldFileError(WorldError):
     """A world file is malformed; the text names the file and the key path."""
 
 

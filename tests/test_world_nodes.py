@@ -1,0 +1,181 @@
+"""The World and TurtleBot nodes, and the constant-control exercise, on virtual time."""
+
+from __future__ import annotations
+
+import math
+
+import anyio
+import msgspec
+import pytest
+
+from actors import Node, Runtime, VirtualTimeLoop
+from actors.errors import WorldError
+from interfaces.geometry_msgs.msg import PoseStamped, Twist
+from interfaces.nav_msgs.msg import Odometry
+from interfaces.sensor_msgs.msg import LaserScan
+from interfaces.std_msgs.msg import Bool
+from conftest import ROOT
+from nodes.constant_control import ConstantControl
+from world.robot import TurtleBot
+from world.sim import World
+
+pytestmark = pytest.mark.virtual_time
+
+
+class Observer(Node):
+    """Records stamped cmd_vel, ground-truth poses, odometry, scans and contact of /<ns>/..."""
+
+    def __init__(self) -> None:
+        super().__init__("observer")
+        self.cmds: list[tuple[float, Twist]] = []
+        self.poses: list[tuple[float, float, float]] = []
+        self.odom: list[Odometry] = []
+        self.scans: list[LaserScan] = []
+        self.contact: list[bool] = []
+        now = self.get_clock().monotonic
+        self.create_subscription(Twist, "cmd_vel", lambda m: self.cmds.append((now(), m)), 100)
+        self.create_subscription(
+            PoseStamped, "sim/pose", lambda m: self.poses.append((now(), m.pose.position.x, m.pose.position.y)), 100
+        )
+        self.create_subscription(Odometry, "odom", self.odom.append, 100)
+        self.create_subscription(LaserScan, "scan", self.scans.append, 100)
+        self.create_subscription(Bool, "sim/contact", lambda m: self.contact.append(m.data), 10)
+
+
+class Killer(Node):
+    """Publishes std_msgs/Bool true on /kill at t = 5 s."""
+
+    def __init__(self) -> None:
+        super().__init__("killer")
+        self.pub = self.create_publisher(Bool, "/kill", 10)
+        self.timer = self.create_timer(5.0, self.kill)
+
+    def kill(self) -> None:
+        self.timer.cancel()
+        self.pub.publish(Bool(data=True))
+
+
+async def test_kill_stops_the_constant_control_robot():
+    async with Runtime() as rt:
+        rt.spawn(World, params={"world": "empty"})
+        rt.spawn(TurtleBot)
+        observer = rt.spawn(Observer)
+        rt.spawn(ConstantControl)
+        rt.spawn(Killer)
+        await anyio.sleep(10)
+    stop = next(i for i, (_, cmd) in enumerate(observer.cmds) if cmd.linear.x == 0.0)
+    stop_time, stop_cmd = observer.cmds[stop]
+    assert 5.0 <= stop_time <= 5.2  # within one control period of the kill
+    assert (stop_cmd.linear.x, stop_cmd.angular.z) == (0.0, 0.0)
+    assert stop == len(observer.cmds) - 1  # nothing after it: the timer is cancelled
+    assert all(cmd.linear.x == pytest.approx(0.2) for _, cmd in observer.cmds[:stop])
+    # It moved at 0.2 m/s until then, and its true pose stops changing after the kill.
+    at_kill = next(p for p in observer.poses if p[0] >= 5.05)
+    last = observer.poses[-1]
+    assert at_kill[1] == pytest.approx(0.2 * 4.8, abs=1e-6)  # first command at 0.2 s
+    assert math.dist(at_kill[1:], last[1:]) < 1e-3
+
+
+async def test_driving_into_a_wall_stops_against_it_and_never_through():
+    async with Runtime() as rt:
+        rt.spawn(World, params={"world": "empty"})
+        rt.spawn(TurtleBot, params={"x": 3.0})
+        observer = rt.spawn(Observer)
+        rt.spawn(ConstantControl, params={"v": 0.2})
+        await anyio.sleep(60)
+    wall, radius = 5.0, 0.105
+    assert max(x for _, x, _ in observer.poses) <= wall - radius + 1e-3
+    assert observer.poses[-1][1] == pytest.approx(wall - radius, abs=2e-3)
+    assert observer.contact[0] is False and observer.contact[-1] is True
+
+
+async def test_the_scan_sees_walls_nothing_and_other_robots():
+    async with Runtime() as rt:
+        rt.spawn(World, params={"world": "empty"})
+        rt.spawn(TurtleBot, params={"x": 4.0})
+        rt.spawn(TurtleBot, name="other", params={"x": 4.0, "y": 1.5})
+        observer = rt.spawn(Observer)
+        await anyio.sleep(0.15)
+    scan = observer.scans[-1]
+    assert len(scan.ranges) == 360 and scan.header.frame_id == "base_scan"
+    assert scan.ranges[0] == pytest.approx(1.0, abs=0.01)  # the wall ahead
+    assert scan.ranges[180] == math.inf  # 9 m behind: nothing within 3.5 m
+    assert scan.ranges[90] == pytest.approx(1.5 - 0.105, abs=0.01)  # the other robot
+    assert (scan.range_min, scan.range_max) == (pytest.approx(0.12), pytest.approx(3.5))
+
+
+async def test_odometry_is_relative_to_the_start_pose():
+    async with Runtime() as rt:
+        rt.spawn(World, params={"world": "empty"})
+        rt.spawn(TurtleBot, params={"x": 1.0, "y": 2.0, "theta": math.pi / 2})
+        observer = rt.spawn(Observer)
+        rt.spawn(ConstantControl, params={"v": 0.2, "omega": 0.0})
+        await anyio.sleep(5.02)
+    odom = observer.odom[-1]
+    assert (odom.header.frame_id, odom.child_frame_id) == ("odom", "base_footprint")
+    assert odom.pose.pose.position.x == pytest.approx(0.2 * 4.8, abs=0.02)  # straight ahead
+    assert odom.pose.pose.position.y == pytest.approx(0.0, abs=1e-6)
+    assert odom.twist.twist.linear.x == pytest.approx(0.2)
+    _, x, y = observer.poses[-1]
+    assert (x, y) == (pytest.approx(1.0, abs=1e-6), pytest.approx(2.0 + 0.96, abs=0.02))
+
+
+async def test_namespaced_robots_have_their_own_topics():
+    async with Runtime() as rt:
+        rt.spawn(World)
+        rt.spawn(TurtleBot, name="turtlebot", namespace="robot1", params={"x": -1.0})
+        rt.spawn(TurtleBot, name="turtlebot", namespace="robot2", params={"x": 1.0})
+        names = {t.name for t in rt.graph.topics()}
+    assert {"/robot1/cmd_vel", "/robot1/odom", "/robot2/scan", "/robot2/sim/pose"} <= names
+
+
+async def test_a_turtlebot_without_a_world_is_a_clear_error():
+    async with Runtime() as rt:
+        with pytest.raises(WorldError, match="/turtlebot needs a world: start a world.sim:World node"):
+            rt.spawn(TurtleBot)
+
+
+async def test_a_robot_that_does_not_fit_is_a_clear_error():
+    async with Runtime() as rt:
+        rt.spawn(World)
+        with pytest.raises(WorldError, match="/turtlebot: .*outside"):
+            rt.spawn(TurtleBot, params={"x": 50.0})
+
+
+async def odometry_run() -> list[dict]:
+    noise = {"noise_position": 0.01, "noise_heading": 0.01, "noise_linear": 0.02, "noise_angular": 0.02}
+    async with Runtime() as rt:
+        rt.spawn(World, params={"world": "signs"})
+        rt.spawn(TurtleBot, params={"seed": 7, **noise})
+        observer = rt.spawn(Observer)
+        rt.spawn(ConstantControl, params={"v": 0.2, "omega": 0.3})
+        await anyio.sleep(10)
+    return [msgspec.to_builtins(m) for m in observer.odom]
+
+
+def test_the_same_graph_and_seed_give_identical_odometry_with_noise():
+    # Two runs, each on its own virtual clock starting at 0, as two `actors.run` processes would.
+    first, second = (anyio.run(odometry_run, backend_options={"loop_factory": VirtualTimeLoop}) for _ in "12")
+    assert len(first) == 200
+    assert first == second
+    assert first[10]["pose"]["pose"]["position"]["y"] != 0.0  # the noise is on
+
+
+def test_the_turtlebot_graph_draws_its_run(run_module, tmp_path):
+    graph = tmp_path / "tb.toml"
+    image = tmp_path / "run.png"
+    text = (ROOT / "graphs" / "turtlebot.toml").read_text().replace('image = ""', f'image = "{image}"')
+    graph.write_text(text)
+    result = run_module("actors.run", str(graph), "--clock", "virtual", "--duration", "30")
+    assert result.returncode == 0, result.stderr
+    assert image.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_a_bad_world_file_exits_2_naming_file_and_key(run_module, tmp_path):
+    world = tmp_path / "w.toml"
+    world.write_text("[[boxes]]\ncenter = [0, 0]\nsize = [1, 2, 3]\n")
+    graph = tmp_path / "g.toml"
+    graph.write_text(f'[[nodes]]\nuse = "world.sim:World"\nparams = {{ world = "{world}" }}\n')
+    result = run_module("actors.run", str(graph), "--clock", "virtual", "--duration", "1")
+    assert result.returncode == 2
+    assert result.stderr.strip().endswith(f"{world}: boxes[0].size: expected an array of 2 numbers, got 3 items")

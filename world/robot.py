@@ -1,0 +1,132 @@
+"""The TurtleBot node: a differential-drive robot in the runtime's World, with ROS's topics.
+
+Topics (relative, so a namespace gives ``/robot1/cmd_vel`` and so on):
+
+- subscribes ``cmd_vel`` (geometry_msgs/Twist): linear.x and angular.z, clipped
+  to the model's limits and rate-limited by its accelerations;
+- publishes ``odom`` (nav_msgs/Odometry, 20 Hz): frame ``odom`` (the start
+  pose, as on a real robot), child ``base_footprint``, pose and body twist;
+- publishes ``scan`` (sensor_msgs/LaserScan, 10 Hz): 360 beams over 0..2π from
+  the heading, counter-clockwise; +inf where nothing is in range, -inf where
+  something is closer than ``range_min`` (REP 117);
+- publishes ``sim/pose`` (geometry_msgs/PoseStamped, 20 Hz): ground truth in
+  frame ``world``;
+- publishes ``sim/contact`` (std_msgs/Bool, transient-local depth 1): true when
+  the robot touches a wall, an obstacle or another robot, false when it leaves
+  it; sent on each change, and a late subscriber gets the current state.
+
+Parameters: ``model`` (``burger`` or ``asl_tb3``), start pose ``x``, ``y``,
+``theta``, ``seed``, and noise standard deviations ``noise_position``,
+``noise_heading``, ``noise_linear``, ``noise_angular``, ``noise_ranges`` (all 0).
+"""
+
+from __future__ import annotations
+
+import math
+
+import msgspec
+
+from actors import DurabilityPolicy, Node, QoSProfile
+from actors.errors import WorldError
+from interfaces.geometry_msgs.msg import PoseStamped, Quaternion, Twist
+from interfaces.nav_msgs.msg import Odometry
+from interfaces.sensor_msgs.msg import LaserScan
+from interfaces.std_msgs.msg import Bool, Header
+from world.noise import Noise
+from world.sim import world_of
+
+__all__ = ["TurtleBot"]
+
+ODOM_PERIOD = 0.05
+SCAN_PERIOD = 0.1
+
+
+def yaw_quaternion(yaw: float) -> Quaternion:
+    """A rotation of ``yaw`` radians about z."""
+    return Quaternion(z=math.sin(yaw / 2), w=math.cos(yaw / 2))
+
+
+class TurtleBot(Node):
+    """Node ``turtlebot``: one simulated robot; needs a world.sim:World started before it."""
+
+    def __init__(self) -> None:
+        super().__init__("turtlebot")
+        model = self.declare_parameter("model", "burger").value
+        x = self.declare_parameter("x", 0.0).value
+        y = self.declare_parameter("y", 0.0).value
+        theta = self.declare_parameter("theta", 0.0).value
+        seed = self.declare_parameter("seed", 0).value
+        noise = {k: self.declare_parameter(f"noise_{k}", 0.0).value for k in Noise.__struct_fields__}
+        self.world = world_of(self)
+        self.name = self.get_fully_qualified_name()
+        # The node is the robot's driver: when it stops or restarts, the body stays in
+        # the world (as a Gazebo model does), and a new instance drives it again.
+        existing = self.world.sim.robots.get(self.name)
+        if existing is not None:
+            self.robot = existing
+        else:
+            try:
+                self.robot = self.world.sim.add_robot(
+                    self.name, model, x=x, y=y, theta=theta, seed=seed, noise=Noise(**noise)
+                )
+            except ValueError as exc:
+                raise WorldError(f"{self.name}: {exc}") from None
+        self._start = (x, y, theta)
+        lidar = self.robot.model.lidar
+        self._scan = LaserScan(
+            angle_min=0.0,
+            angle_max=2 * math.pi * (lidar.beams - 1) / lidar.beams,
+            angle_increment=2 * math.pi / lidar.beams,
+            scan_time=SCAN_PERIOD,
+            range_min=lidar.range_min,
+            range_max=lidar.range_max,
+        )
+        self.odom_pub = self.create_publisher(Odometry, "odom", 10)
+        self.scan_pub = self.create_publisher(LaserScan, "scan", 10)
+        self.pose_pub = self.create_publisher(PoseStamped, "sim/pose", 10)
+        self.contact_pub = self.create_publisher(
+            Bool, "sim/contact", QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        )
+        self._touching: bool | None = None
+        self.create_subscription(Twist, "cmd_vel", self.on_cmd_vel, 10)
+        self.create_timer(ODOM_PERIOD, self.publish_odometry)
+        self.create_timer(SCAN_PERIOD, self.publish_scan)
+
+    def on_cmd_vel(self, msg: Twist) -> None:
+        """Command the robot: linear.x (m/s) and angular.z (rad/s)."""
+        self.robot.command(msg.linear.x, msg.angular.z)
+
+    def publish_odometry(self) -> None:
+        """Publish odom, the ground-truth pose, and the contact state if it changed."""
+        stamp = self.get_clock().now().to_msg()
+        # Plain floats: noise arrives as numpy scalars, which no codec encodes.
+        x, y, theta, v, w = map(float, self.robot.odometry())
+        x0, y0, theta0 = self._start
+        # Odometry starts at the start pose: express the pose in that frame.
+        c, s = math.cos(theta0), math.sin(theta0)
+        dx, dy = x - x0, y - y0
+        msg = Odometry(child_frame_id="base_footprint")
+        msg.header.stamp, msg.header.frame_id = stamp, "odom"
+        pose = msg.pose.pose
+        pose.position.x, pose.position.y = c * dx + s * dy, -s * dx + c * dy
+        pose.orientation = yaw_quaternion(math.remainder(theta - theta0, math.tau))
+        msg.twist.twist.linear.x, msg.twist.twist.angular.z = v, w
+        self.odom_pub.publish(msg)
+
+        truth = self.robot.pose
+        ground = PoseStamped()
+        ground.header.stamp, ground.header.frame_id = stamp, "world"
+        ground.pose.position.x, ground.pose.position.y = truth.x, truth.y
+        ground.pose.orientation = yaw_quaternion(truth.theta)
+        self.pose_pub.publish(ground)
+
+        touching = self.robot.in_contact
+        if touching != self._touching:
+            self._touching = touching
+            self.contact_pub.publish(Bool(data=touching))
+
+    def publish_scan(self) -> None:
+        """Publish the lidar scan."""
+        header = Header(stamp=self.get_clock().now().to_msg(), frame_id="base_scan")
+        ranges = self.world.scan(self.name).tolist()
+        self.scan_pub.publish(msgspec.structs.replace(self._scan, header=header, ranges=ranges))

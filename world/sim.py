@@ -1,0 +1,96 @@
+"""The World node: steps the pymunk simulation on the runtime clock and hosts the robots.
+
+One World per runtime; TurtleBot nodes started after it find it with
+:func:`world_of`.  Parameters:
+
+- ``world``: a world file path, or the name of a shipped world (``empty``, ``signs``);
+- ``dt``: the physics step in seconds (0.01);
+- ``image``: a PNG to draw the run into when the node stops (arena, obstacles,
+  robots, trajectories); ``gif``: an animated GIF of the run.  Both need the
+  ``viz`` extra (Pillow).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+from weakref import WeakKeyDictionary
+
+import numpy as np
+
+from actors import Node
+from actors.errors import WorldError
+from world.record import Recorder
+from world.simulation import Simulation
+
+if TYPE_CHECKING:
+    from actors.runtime import Runtime
+
+__all__ = ["World", "world_of"]
+
+_WORLDS: WeakKeyDictionary[Runtime, World] = WeakKeyDictionary()
+
+
+def world_of(node: Node) -> World:
+    """The World node of ``node``'s runtime; WorldError if there is none."""
+    world = _WORLDS.get(node._core.runtime)
+    if world is None:
+        raise WorldError(
+            f"{node.get_fully_qualified_name()} needs a world: start a world.sim:World node "
+            f"before it in the same graph"
+        )
+    return world
+
+
+class World(Node):
+    """Node ``world``: the simulation, stepped every ``dt`` seconds of runtime clock."""
+
+    def __init__(self) -> None:
+        super().__init__("world")
+        source = self.declare_parameter("world", "empty").value
+        dt = self.declare_parameter("dt", 0.01).value
+        self._image = self.declare_parameter("image", "").value
+        self._gif = self.declare_parameter("gif", "").value
+        runtime = self._core.runtime
+        other = _WORLDS.get(runtime)
+        if other is not None and other is not self and not other._core.destroyed:
+            raise WorldError(f"a runtime has one World; {other.get_fully_qualified_name()} is already running")
+        self.sim = Simulation.from_file(source, dt=dt)
+        self.recorder = (
+            Recorder(self.sim, every=10, frame_every=10 if self._gif else None)
+            if self._image or self._gif
+            else None
+        )
+        self._scans: dict[str, np.ndarray] = {}
+        self._scanned_at = -1
+        _WORLDS[runtime] = self
+        self.timer = self.create_timer(dt, self.step)
+
+    def step(self) -> None:
+        """Advance the physics one step (the timer's callback)."""
+        self.sim.step()
+        if self.recorder is not None:
+            self.recorder.update()
+
+    def scan(self, robot: str) -> np.ndarray:
+        """``robot``'s 360 ranges now; all robots are scanned in one batch per physics step."""
+        if self._scanned_at != self.sim.steps:
+            self._scans = self.sim.scan_all()
+            self._scanned_at = self.sim.steps
+        return self._scans[robot]
+
+    def on_shutdown(self) -> None:
+        """Draw the run into the files named by ``image`` and ``gif``."""
+        if self.recorder is None:
+            return
+        from world.render import save_gif, save_png
+
+        if self._image:
+            self.get_logger().info(f"wrote {save_png(self.recorder, self._image)}")
+        if self._gif:
+            self.get_logger().info(f"wrote {save_gif(self.recorder, self._gif)}")
+
+    def destroy_node(self) -> None:
+        runtime = self._core.runtime
+        if _WORLDS.get(runtime) is self:
+            del _WORLDS[runtime]
+        super().destroy_node()
