@@ -1,81 +1,96 @@
-"""Real-time factor of the pure simulation core (no nodes, no messages): ``python -m bench.sim``.
+"""Real-time factor of the simulated world, through the nodes and for the bare core.
 
-Physics runs at 100 Hz, every robot is scanned at 10 Hz and its odometry read
-at 20 Hz, as the TurtleBot nodes will. The real-time factor is simulated
-seconds per wall-clock second, the median over the repetitions. For scale: the
-node version is to reach >= 200x with 1 robot and >= 10x with 20.
+``python -m bench.sim [--quick]``.  Physics at 100 Hz, odometry at 20 Hz and a
+360-beam scan at 10 Hz per robot.  "nodes" runs World + TurtleBot +
+ConstantControl nodes on the virtual clock, publishing every message; "core"
+drives the same robots through world.simulation alone (the floor: no runtime,
+no messages).  The factor is simulated seconds per wall-clock second.
+Targets for the nodes: >= 200x with 1 robot, >= 10x with 20.
 """
 
 from __future__ import annotations
 
 import argparse
 import math
-import statistics
 import time
 
+import anyio
+
+from actors import Runtime, VirtualTimeLoop
+from bench.harness import Result, repeat, table
+from nodes.constant_control import ConstantControl
+from world.robot import TurtleBot
+from world.sim import World
 from world.simulation import Simulation
 
-__all__ = ["main", "real_time_factor"]
+__all__ = ["run", "nodes_factor", "core_factor"]
 
 PHYSICS_HZ = 100
 SCAN_EVERY = 10  # steps: 10 Hz
 ODOMETRY_EVERY = 5  # steps: 20 Hz
 
 
-def real_time_factor(robots: int, seconds: float, *, batched: bool, world: str = "empty") -> float:
-    """Run ``robots`` robots on arcs for ``seconds`` simulated seconds; return sim s per wall s.
-
-    ``batched`` scans all robots with one ``scan_all()``, otherwise with one ``scan()`` each.
-    """
-    sim = Simulation.from_file(world, dt=1.0 / PHYSICS_HZ)
+def _grid(robots: int) -> list[tuple[float, float, float, float]]:
+    """Start poses and turn rates: a grid over the arena's middle, each robot on its own arc."""
     side = math.ceil(math.sqrt(robots))
-    for i in range(robots):
-        # A grid over the middle of the arena, each robot on its own arc, meeting walls and robots.
-        x = -3.0 + 6.0 * (i % side + 0.5) / side
-        y = -3.0 + 6.0 * (i // side + 0.5) / side
-        robot = sim.add_robot(f"tb{i}", "burger", x=x, y=y, theta=i * 0.7)
-        robot.command(0.2, 0.4 * ((i % 5) - 2) / 2)
-    names = list(sim.robots)
-    steps = round(seconds * PHYSICS_HZ)
+    return [
+        (-3.0 + 6.0 * (i % side + 0.5) / side, -3.0 + 6.0 * (i // side + 0.5) / side, i * 0.7, 0.2 * ((i % 5) - 2))
+        for i in range(robots)
+    ]
+
+
+def nodes_factor(robots: int, seconds: float) -> float:
+    """Simulated seconds per wall second for the World, TurtleBot and ConstantControl nodes."""
+
+    async def main() -> float:
+        async with Runtime(name="bench_sim") as rt:
+            rt.spawn(World, params={"world": "empty", "dt": 1.0 / PHYSICS_HZ})
+            for i, (x, y, theta, omega) in enumerate(_grid(robots)):
+                ns = f"tb{i}"
+                rt.spawn(TurtleBot, namespace=ns, params={"x": x, "y": y, "theta": theta})
+                rt.spawn(ConstantControl, namespace=ns, params={"v": 0.2, "omega": omega})
+            start = time.perf_counter()
+            await anyio.sleep(seconds)
+            return seconds / (time.perf_counter() - start)
+
+    return anyio.run(main, backend_options={"loop_factory": VirtualTimeLoop})
+
+
+def core_factor(robots: int, seconds: float) -> float:
+    """The same robots, odometry and batched scans through the simulation core alone."""
+    sim = Simulation.from_file("empty", dt=1.0 / PHYSICS_HZ)
+    for i, (x, y, theta, omega) in enumerate(_grid(robots)):
+        sim.add_robot(f"tb{i}", "burger", x=x, y=y, theta=theta).command(0.2, omega)
+    robots_now = list(sim.robots.values())
     start = time.perf_counter()
-    for k in range(steps):
+    for k in range(round(seconds * PHYSICS_HZ)):
         sim.step()
         if k % ODOMETRY_EVERY == 0:
-            for name in names:
-                sim.robots[name].odometry()
+            for robot in robots_now:
+                robot.odometry()
         if k % SCAN_EVERY == 0:
-            if batched:
-                sim.scan_all()
-            else:
-                for name in names:
-                    sim.scan(name)
+            sim.scan_all()
     return seconds / (time.perf_counter() - start)
 
 
-def main(argv: list[str] | None = None) -> None:
-    """Print a table of real-time factors for 1 and 20 robots."""
-    parser = argparse.ArgumentParser(
-        prog="python -m bench.sim", description=__doc__.splitlines()[0]
-    )
-    parser.add_argument(
-        "--seconds", type=float, default=30.0, help="simulated seconds per run (default 30)"
-    )
-    parser.add_argument(
-        "--repeat", type=int, default=5, help="runs per case; the median is shown (default 5)"
-    )
-    args = parser.parse_args(argv)
-    rates = f"scans {PHYSICS_HZ // SCAN_EVERY} Hz, odometry {PHYSICS_HZ // ODOMETRY_EVERY} Hz"
-    print(
-        f"physics {PHYSICS_HZ} Hz, {rates}, {args.seconds:g} s simulated, median of {args.repeat}"
-    )
-    print(f"{'robots':>6}  {'scans':<16}  {'real-time factor':>16}  {'min':>8}  {'max':>8}")
+def run(quick: bool = False) -> list[Result]:
+    """Real-time factors for 1 and 20 robots, nodes beside the bare core, in one run."""
+    seconds = 10.0 if quick else 30.0
+    results = []
     for robots in (1, 20):
-        for batched, how in ((False, "scan() each"), (True, "scan_all()")):
-            factors = [
-                real_time_factor(robots, args.seconds, batched=batched) for _ in range(args.repeat)
-            ]
-            low, median, high = min(factors), statistics.median(factors), max(factors)
-            print(f"{robots:>6}  {how:<16}  {median:>15.0f}x  {low:>7.0f}x  {high:>7.0f}x")
+        scenario = f"g. sim RTF, {robots} robot{'s' if robots > 1 else ''}"
+        results.append(
+            Result(scenario, "nodes", "× real time", repeat(lambda: nodes_factor(robots, seconds), 5),
+                   baselines={"core": "core (floor)"})
+        )
+        results.append(Result(scenario, "core (floor)", "× real time", repeat(lambda: core_factor(robots, seconds), 5)))
+    return results
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(prog="python -m bench.sim", description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="10 simulated seconds per run instead of 30")
+    print(table(run(parser.parse_args().quick)))
 
 
 if __name__ == "__main__":
