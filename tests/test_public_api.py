@@ -1,0 +1,36 @@
+"""Every public module's ``__all__`` names what it defines; ``actors`` re-exports what it lists."""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+
+import pytest
+
+import actors
+import world
+
+MODULES = sorted(
+    name
+    for package in (actors, world)
+    for _, name, _ in pkgutil.walk_packages(package.__path__, f"{package.__name__}.")
+    if not name.rsplit(".", 1)[-1].startswith("_") and name not in {"actors.__main__", "actors.run"}
+)
+
+
+@pytest.mark.parametrize("name", MODULES)
+def test_all_is_declared_and_exists(name):
+    module = importlib.import_module(name)
+    exported = getattr(module, "__all__", None)
+    assert exported is not None, f"{name} has no __all__"
+    missing = [n for n in exported if not hasattr(module, n)]
+    assert missing == [], f"{name}.__all__ lists names it does not define: {missing}"
+    assert len(set(exported)) == len(exported), f"{name}.__all__ has duplicates"
+
+
+def test_actors_reexports_its_public_names():
+    # ("@..." names are pytest's: it rewrites the package of its actors.testing plugin.)
+    public = {n for n in vars(actors) if not n.startswith(("_", "@"))} - {
+        m.rsplit(".", 1)[-1] for m in MODULES
+    } - {"annotations", "cli"}
+    assert set(actors.__all__) == public
