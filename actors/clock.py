@@ -28,8 +28,8 @@ __all__ = ["Time", "Duration", "Clock", "Rate", "VirtualTimeLoop", "is_virtual"]
 _NS = 1_000_000_000
 
 
-class Duration:
-    """A span of time in integer nanoseconds, as ``rclpy.duration.Duration``."""
+class _Nanoseconds:
+    """An integer count of nanoseconds, built from ``seconds`` and/or ``nanoseconds``."""
 
     __slots__ = ("nanoseconds",)
 
@@ -37,47 +37,42 @@ class Duration:
         self.nanoseconds = int(round(seconds * _NS)) + int(nanoseconds)
 
     def __repr__(self) -> str:
-        return f"Duration(nanoseconds={self.nanoseconds})"
+        return f"{type(self).__name__}(nanoseconds={self.nanoseconds})"
 
     def __eq__(self, other: object) -> bool:
-        return isinstance(other, Duration) and other.nanoseconds == self.nanoseconds
+        return type(other) is type(self) and other.nanoseconds == self.nanoseconds  # type: ignore[attr-defined]
 
-    def __lt__(self, other: Duration) -> bool:
+    def __lt__(self, other: _Nanoseconds) -> bool:
         return self.nanoseconds < other.nanoseconds
 
+    def __le__(self, other: _Nanoseconds) -> bool:
+        return self.nanoseconds <= other.nanoseconds
+
     def __hash__(self) -> int:
-        return hash(("Duration", self.nanoseconds))
+        return hash((type(self).__name__, self.nanoseconds))
+
+    def seconds_nanoseconds(self) -> tuple[int, int]:
+        """``(sec, nanosec)``, as ``builtin_interfaces`` messages hold them."""
+        return divmod(self.nanoseconds, _NS)
+
+
+class Duration(_Nanoseconds):
+    """A span of time in integer nanoseconds, as ``rclpy.duration.Duration``."""
+
+    __slots__ = ()
 
     def to_msg(self) -> Any:
         """This duration as a ``builtin_interfaces/msg/Duration``."""
         from interfaces.builtin_interfaces.msg import Duration as DurationMsg
 
-        sec, nanosec = divmod(self.nanoseconds, _NS)
+        sec, nanosec = self.seconds_nanoseconds()
         return DurationMsg(sec=sec, nanosec=nanosec)
 
 
-class Time:
+class Time(_Nanoseconds):
     """A point in time in integer nanoseconds since the clock's epoch, as ``rclpy.time.Time``."""
 
-    __slots__ = ("nanoseconds",)
-
-    def __init__(self, *, seconds: float = 0, nanoseconds: int = 0) -> None:
-        self.nanoseconds = int(round(seconds * _NS)) + int(nanoseconds)
-
-    def __repr__(self) -> str:
-        return f"Time(nanoseconds={self.nanoseconds})"
-
-    def __eq__(self, other: object) -> bool:
-        return isinstance(other, Time) and other.nanoseconds == self.nanoseconds
-
-    def __lt__(self, other: Time) -> bool:
-        return self.nanoseconds < other.nanoseconds
-
-    def __le__(self, other: Time) -> bool:
-        return self.nanoseconds <= other.nanoseconds
-
-    def __hash__(self) -> int:
-        return hash(("Time", self.nanoseconds))
+    __slots__ = ()
 
     def __sub__(self, other: Time | Duration) -> Any:
         if isinstance(other, Time):
@@ -87,15 +82,11 @@ class Time:
     def __add__(self, other: Duration) -> Time:
         return Time(nanoseconds=self.nanoseconds + other.nanoseconds)
 
-    def seconds_nanoseconds(self) -> tuple[int, int]:
-        """``(sec, nanosec)``, as a ``builtin_interfaces/msg/Time`` holds them."""
-        return divmod(self.nanoseconds, _NS)
-
     def to_msg(self) -> Any:
         """This time as a ``builtin_interfaces/msg/Time``."""
         from interfaces.builtin_interfaces.msg import Time as TimeMsg
 
-        sec, nanosec = divmod(self.nanoseconds, _NS)
+        sec, nanosec = self.seconds_nanoseconds()
         return TimeMsg(sec=sec, nanosec=nanosec)
 
 

@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+import contextlib
 import re
 import signal
 import subprocess
 import sys
+from collections.abc import Iterator
+
+import pytest
 
 from conftest import ROOT, python_env
 
@@ -65,15 +69,9 @@ use = "graph_nodes:Counter"
     assert result.stdout.count("dead letter") == 3
 
 
-def wait_for_line(proc: subprocess.Popen[str], text: str) -> None:
-    assert proc.stdout is not None
-    for _ in range(100):
-        if text in proc.stdout.readline():
-            return
-    raise AssertionError(f"{text!r} never printed")
-
-
-def test_sigint_on_the_wall_clock_exits_0_quickly_without_traceback():
+@contextlib.contextmanager
+def running_demo() -> Iterator[subprocess.Popen[str]]:
+    """``python -m actors.run graph.toml`` on the wall clock, once the talker has published."""
     proc = subprocess.Popen(
         [sys.executable, "-m", "actors.run", "graph.toml"],
         cwd=ROOT,
@@ -84,31 +82,23 @@ def test_sigint_on_the_wall_clock_exits_0_quickly_without_traceback():
     )
     try:
         assert proc.stdout is not None
-        wait_for_line(proc, "Publishing")  # the graph runs: the talker has published once
-        proc.send_signal(signal.SIGINT)
-        out, err = proc.communicate(timeout=5)
+        for _ in range(200):
+            if "Publishing" in proc.stdout.readline():
+                break
+        else:
+            raise AssertionError("the demo graph never published")
+        yield proc
     finally:
         proc.kill()
+
+
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+def test_a_signal_on_the_wall_clock_stops_gracefully_without_traceback(signum):
+    with running_demo() as proc:
+        proc.send_signal(signum)
+        out, err = proc.communicate(timeout=5)
     assert proc.returncode == 0, err
     assert "Traceback" not in out + err
-
-
-def test_sigterm_also_stops_gracefully():
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "actors.run", "graph.toml"],
-        cwd=ROOT,
-        env=python_env(),
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-    )
-    try:
-        wait_for_line(proc, "Publishing")
-        proc.send_signal(signal.SIGTERM)
-        out, err = proc.communicate(timeout=5)
-    finally:
-        proc.kill()
-    assert proc.returncode == 0 and "Traceback" not in out + err
 
 
 def test_the_services_graph_waits_for_its_servers_then_succeeds(run_module):
