@@ -19,7 +19,7 @@ from world.record import Recorder
 if TYPE_CHECKING:
     from PIL.Image import Image
 
-__all__ = ["image_size", "save_gif", "save_png"]
+__all__ = ["image_size", "pillow", "save_gif", "save_png"]
 
 _SUPERSAMPLE = 2  # draw larger, then shrink: Pillow's drawing has no anti-aliasing
 _FLOOR = (246, 246, 242)
@@ -94,7 +94,7 @@ class _Canvas:
     def __init__(self, recorder: Recorder, scale: float) -> None:
         if not scale > 0:
             raise ValueError(f"scale must be > 0 pixels per metre, got {scale!r}")
-        self._pil = _pillow()
+        self._pil = pillow()
         self.recorder = recorder
         self.size = image_size(recorder, scale)
         self._scale = scale * _SUPERSAMPLE
@@ -158,7 +158,7 @@ class _Canvas:
         return (x - self._origin[0]) * self._scale, (self._origin[1] - y) * self._scale
 
 
-def _pillow() -> Any:
+def pillow() -> Any:
     """Import Pillow's Image and ImageDraw, or say how to install it."""
     try:
         import PIL.Image

@@ -55,11 +55,15 @@ class World(Node):
         if other is not None and other is not self and not other._core.destroyed:
             raise WorldError(f"a runtime has one World; {other.get_fully_qualified_name()} is already running")
         self.sim = Simulation.from_file(source, dt=dt)
-        self.recorder = (
-            Recorder(self.sim, every=10, frame_every=10 if self._gif else None)
-            if self._image or self._gif
-            else None
-        )
+        self.recorder: Recorder | None = None
+        if self._image or self._gif:
+            from world.render import pillow
+
+            try:
+                pillow()  # no Pillow: say so now, not after the whole run
+            except ImportError as exc:
+                raise WorldError(f"{self.get_fully_qualified_name()}: image/gif: {exc}") from None
+            self.recorder = Recorder(self.sim, every=10, frame_every=10 if self._gif else None)
         self._scans: dict[str, np.ndarray] = {}
         self._scanned_at = -1
         _WORLDS[runtime] = self
