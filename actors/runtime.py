@@ -15,7 +15,7 @@ from __future__ import annotations
 import asyncio
 from collections.abc import Mapping
 from types import TracebackType
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import anyio
 
@@ -28,6 +28,9 @@ from actors.services import ServiceTable
 from actors.supervisor import Child, RestartType, Supervisor, SupervisorPolicy
 from actors.topics import Publisher, QoSProfile, Subscription, TopicTable, type_name
 
+if TYPE_CHECKING:
+    from actors.control import ControlServer
+
 __all__ = ["Runtime"]
 
 N = TypeVar("N", bound=Node)
@@ -37,11 +40,18 @@ class Runtime:
     """A graph of nodes in one process, on the running event loop.
 
     ``name`` names the graph (the command line finds it by this name);
-    ``supervisor`` sets restart strategy, intensity and backoff.
+    ``supervisor`` sets restart strategy, intensity and backoff.  With
+    ``control`` (the default) the runtime serves a control endpoint for the
+    command line while it runs (see :mod:`actors.control`; ``self.control`` is
+    the server, None when off); embedding code may turn it off.
     """
 
-    def __init__(self, *, name: str = "actors", supervisor: SupervisorPolicy | None = None) -> None:
+    def __init__(
+        self, *, name: str = "actors", supervisor: SupervisorPolicy | None = None, control: bool = True
+    ) -> None:
         self.name = name
+        self._serve_control = control
+        self.control: ControlServer | None = None
         self.policy = supervisor or SupervisorPolicy()
         self.topics = TopicTable(self._incompatible_qos)
         self.services = ServiceTable()
@@ -68,6 +78,11 @@ class Runtime:
         self._task_group = anyio.create_task_group()
         await self._task_group.__aenter__()
         self._task_group.start_soon(self.supervisor.run, name="supervisor")
+        if self._serve_control:
+            from actors.control import serve
+
+            # Cancelled with the task group on exit; it removes its socket file then.
+            self.control = await self._task_group.start(serve, self, name="control")
         self._state = "running"
         return self
 

@@ -1,0 +1,197 @@
+"""The command line's side of the control endpoint: finding the running graph, requests, samples.
+
+Every verb that talks to a graph goes through :func:`connect` (or
+:func:`query` for one request).  Whatever goes wrong (no graph, an error
+reply, a graph that stops answering) is raised as ControlError, which the
+dispatcher prints as one line on stderr, exiting 2.
+
+The client is plain blocking sockets: a command makes a request or two and
+waits, so it needs no event loop.
+"""
+
+from __future__ import annotations
+
+import argparse
+import socket
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any, TypeVar
+
+import msgspec
+
+from actors.control import (
+    Call,
+    GetGraph,
+    GraphSnapshot,
+    Request,
+    Sample,
+    decode_reply,
+    endpoint_paths,
+    frame,
+    is_alive,
+)
+from actors.errors import ControlError
+
+__all__ = [
+    "NO_GRAPH",
+    "Connection",
+    "add_verb",
+    "connect",
+    "query",
+    "graph_snapshot",
+    "call_service",
+]
+
+T = TypeVar("T")
+
+NO_GRAPH = "no running actors graph found (start one with: python -m actors.run graph.toml)"
+_sample_decoder = msgspec.msgpack.Decoder(Sample)
+
+
+def add_verb(verbs: Any, name: str, func: Callable[[argparse.Namespace], int | None], help: str) -> Any:
+    """Add a verb that runs ``func(args)`` and takes ``--graph NAME``; return its parser."""
+    parser = verbs.add_parser(name, help=help)
+    parser.add_argument(
+        "--graph", metavar="NAME",
+        help="the graph to talk to when several run (its file's stem, e.g. graph)",
+    )
+    parser.set_defaults(func=func)
+    return parser
+
+
+class Connection:
+    """A connection to one graph's endpoint: requests, then possibly a stream of samples.
+
+    ``name`` is the endpoint's name.  Use as a context manager; closing the
+    connection removes whatever its requests created in the graph.
+    """
+
+    def __init__(self, sock: socket.socket, name: str) -> None:
+        self.name = name
+        self._sock = sock
+        self._buffer = bytearray()
+
+    def __enter__(self) -> Connection:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def close(self) -> None:
+        """Close the connection."""
+        self._sock.close()
+
+    def request(self, request: Request, result_type: type[T] | Any = Any, *, timeout: float = 10.0) -> T:
+        """Send ``request``; return its result as ``result_type``.
+
+        Raises ControlError with the graph's reason when the request failed,
+        or when no reply came within ``timeout`` seconds.
+        """
+        try:
+            self._sock.sendall(frame(request))
+        except OSError as exc:  # not BrokenPipeError: that means our stdout was closed
+            raise ControlError(f"lost the connection to graph {self.name}: {exc.strerror or exc}") from None
+        body = self._read(timeout)
+        if body is None:
+            raise ControlError(f"graph {self.name} did not answer within {timeout:g} s")
+        reply = decode_reply(body)
+        if not reply.ok:
+            raise ControlError(reply.error)
+        if result_type is Any:
+            return reply.result  # type: ignore[no-any-return]
+        return msgspec.convert(reply.result, result_type)
+
+    def graph(self) -> GraphSnapshot:
+        """The graph as it is now."""
+        return self.request(GetGraph(), GraphSnapshot)
+
+    def sample(self, timeout: float | None = None) -> Sample | None:
+        """The next streamed sample, or None if ``timeout`` seconds pass first (None: wait forever)."""
+        body = self._read(timeout)
+        return None if body is None else _sample_decoder.decode(body)
+
+    def _read(self, timeout: float | None) -> bytes | None:
+        """One frame body, or None on timeout; a partial frame stays buffered for the next call."""
+        deadline = None if timeout is None else time.monotonic() + timeout
+        buffer = self._buffer
+        while True:
+            if len(buffer) >= 4:
+                size = int.from_bytes(buffer[:4], "big")
+                if len(buffer) >= 4 + size:
+                    body = bytes(buffer[4 : 4 + size])
+                    del buffer[: 4 + size]
+                    return body
+            remaining = None if deadline is None else deadline - time.monotonic()
+            if remaining is not None and remaining <= 0:
+                return None
+            self._sock.settimeout(remaining)
+            try:
+                chunk = self._sock.recv(1 << 16)
+            except TimeoutError:
+                return None
+            if not chunk:
+                raise ControlError(f"graph {self.name} closed the connection (did it stop?)")
+            buffer += chunk
+
+
+def _open(path: Path) -> socket.socket | None:
+    sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    sock.settimeout(2.0)
+    try:
+        sock.connect(str(path))
+    except OSError:
+        sock.close()
+        return None  # a stale socket: its graph is gone
+    return sock
+
+
+def connect(graph: str | None) -> Connection:
+    """A connection to the graph named ``graph``, or to the only one running when None.
+
+    Raises ControlError when no graph runs, when ``graph`` is not running, or
+    when several run and ``graph`` is None.
+    """
+    paths = endpoint_paths()
+    if graph is not None:
+        sock = _open(paths[graph]) if graph in paths else None
+        if sock is None:
+            others = [name for name, path in paths.items() if is_alive(path)]
+            running = f" (running: {', '.join(others)})" if others else ""
+            raise ControlError(f"no running actors graph named {graph!r}{running}")
+        return Connection(sock, graph)
+    live = {name: sock for name, path in paths.items() if (sock := _open(path)) is not None}
+    if len(live) == 1:
+        ((name, sock),) = live.items()
+        return Connection(sock, name)
+    for sock in live.values():
+        sock.close()
+    if not live:
+        raise ControlError(NO_GRAPH)
+    raise ControlError(f"several actors graphs are running ({', '.join(live)}): choose one with --graph NAME")
+
+
+def query(args: argparse.Namespace, request: Request, result_type: type[T] | Any = Any) -> T:
+    """Connect to ``args.graph``, make one request and return its result; raises ControlError."""
+    with connect(args.graph) as conn:
+        return conn.request(request, result_type)
+
+
+def graph_snapshot(args: argparse.Namespace) -> GraphSnapshot:
+    """The graph ``args.graph`` as it is now."""
+    with connect(args.graph) as conn:
+        return conn.graph()
+
+
+def call_service(conn: Connection, service: str, srv_type: type, request: Any, *, timeout: float = 10.0) -> Any:
+    """Call ``service`` of ``srv_type`` with the ``request`` message; return the response message.
+
+    Raises ControlError for an unknown service, another type, a handler that
+    raised, or no answer within ``timeout`` seconds.
+    """
+    from actors import codec
+
+    call = Call(
+        service=service, type=codec.ros_name(srv_type), request=codec.to_builtins(request), timeout=timeout
+    )
+    return codec.convert(conn.request(call, timeout=timeout + 5.0), srv_type.Response)

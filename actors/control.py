@@ -1,0 +1,554 @@
+"""The control endpoint: the Unix socket through which the command line reads and drives a graph.
+
+Every :class:`~actors.runtime.Runtime` (unless built with ``control=False``)
+serves one endpoint while it runs.
+
+Where.  ``<dir>/<graph name>.sock``.  ``<dir>`` is ``$XDG_RUNTIME_DIR/actors``
+when that variable names a directory owned by this user, else
+``/tmp/actors-<uid>``; it is made with mode 0700 and refused when it belongs to
+someone else or is open to group or others.  The socket is 0600: only the same
+user can connect.  A name taken by a live graph moves on to ``<name>-2``,
+``<name>-3``...; a socket whose server is gone (a killed process) is replaced.
+Names are claimed under a lock file, so two graphs starting at once cannot
+steal each other's socket.
+
+Frames.  A 4-byte big-endian length, then a msgpack body (msgspec, never
+pickle).  A request body over :data:`MAX_FRAME` bytes, or not msgpack, closes
+that connection and nothing else; replies are not capped (a large message may
+be streamed to a subscriber).  A body is one request, tagged by its
+``op`` field (the Structs below); the reply is a :class:`Reply` whose ``result``
+has the type each request names.  A request that fails gets ``ok=False`` and
+the reason; it never stops the graph.
+
+Sessions.  One connection is one session.  The publishers, subscriptions and
+clients its requests create belong to a hidden owner ``/_actors_cli_<n>``
+(hidden as ROS hides names starting with ``_``: ``node list`` and ``doctor``
+leave them out, ``topic info`` shows them) and are removed when the connection
+closes.  After a :class:`Subscribe` reply the server streams :class:`Sample`
+frames until the client disconnects.  The owner has its own actor, so a slow
+reader only fills its own mailbox (KEEP_LAST: the oldest samples drop) and
+never holds up the graph.
+
+The server runs in the runtime's task group; sockets are non-blocking, so it
+never blocks the loop.  With it, on a wall-clock runtime, runs doctor's
+:class:`~actors.doctor.LagMonitor`.
+"""
+
+from __future__ import annotations
+
+import os
+import socket
+import stat
+import struct
+from collections.abc import Iterable, Iterator
+from contextlib import contextmanager, suppress
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import anyio
+import anyio.abc
+import msgspec
+from anyio.streams.buffered import BufferedByteReceiveStream
+
+from actors import codec
+from actors.actor import Actor, CallbackFailed
+from actors.errors import ActorsError, ControlError
+from actors.introspection import NodeInfo, ServiceInfo, TopicInfo
+from actors.names import expand
+from actors.services import Client
+from actors.topics import (
+    DurabilityPolicy,
+    Publisher,
+    QoSProfile,
+    ReliabilityPolicy,
+    Subscription,
+    type_name,
+)
+
+if TYPE_CHECKING:
+    from actors.doctor import LagMonitor, Report
+    from actors.runtime import Runtime
+
+__all__ = [
+    "MAX_FRAME",
+    "Request",
+    "GetGraph",
+    "GetNode",
+    "Publish",
+    "Subscribe",
+    "Call",
+    "Diagnose",
+    "Reply",
+    "Sample",
+    "GraphSnapshot",
+    "NodeDetail",
+    "ControlServer",
+    "serve",
+    "endpoint_dir",
+    "endpoint_paths",
+    "is_alive",
+    "is_hidden",
+    "frame",
+    "decode_reply",
+]
+
+MAX_FRAME = 1 << 20
+"""The largest request body the server reads, in bytes."""
+
+_HEADER = struct.Struct(">I")
+_SUFFIX = ".sock"
+
+
+def is_hidden(name: str) -> bool:
+    """Whether a node name is hidden, as in ROS: its last part starts with ``_``."""
+    return name.rsplit("/", 1)[-1].startswith("_")
+
+
+# --------------------------------------------------------------------------- requests and replies
+
+
+class Request(msgspec.Struct, tag_field="op", kw_only=True, forbid_unknown_fields=True):
+    """Base of every request; the ``op`` field names the operation."""
+
+
+class GetGraph(Request, tag="graph"):
+    """The whole graph.  Result: :class:`GraphSnapshot`."""
+
+
+class GetNode(Request, tag="node"):
+    """One node (``/ns/name``, or a plain name) and the types it uses.  Result: :class:`NodeDetail`."""
+
+    name: str
+
+
+class Publish(Request, tag="publish"):
+    """Publish ``msg`` (field values) on ``topic`` as ``type``, from the session's publisher.
+
+    The publisher is made on first use and kept until the connection closes.
+    Result: ``{"subscribers": n}``.  Fails when the topic carries another type.
+    """
+
+    topic: str
+    type: str
+    msg: dict[str, Any] = {}
+
+
+class Subscribe(Request, tag="subscribe"):
+    """Stream ``topic``: result ``{"type": ros_name}``, then :class:`Sample` frames until disconnect.
+
+    ``content=False`` streams stamps only (what ``topic hz`` needs).  Fails for
+    a topic that does not exist.
+    """
+
+    topic: str
+    content: bool = True
+    depth: int = 100
+
+
+class Call(Request, tag="call"):
+    """Call ``service`` (of type ``type``) with ``request`` field values; wait ``timeout`` seconds.
+
+    Result: the response message.  Fails for an unknown service, another type,
+    a handler that raised, or no answer in time.
+    """
+
+    service: str
+    type: str
+    request: dict[str, Any] = {}
+    timeout: float = 10.0
+
+
+class Diagnose(Request, tag="doctor"):
+    """Run doctor's checks.  Result: :class:`~actors.doctor.Report`."""
+
+
+_Requests = GetGraph | GetNode | Publish | Subscribe | Call | Diagnose
+
+
+class Reply(msgspec.Struct, kw_only=True, omit_defaults=True):
+    """The answer to one request: ``ok`` and ``result``, or the ``error`` text."""
+
+    ok: bool = True
+    result: Any = None
+    error: str = ""
+
+
+class Sample(msgspec.Struct, kw_only=True, omit_defaults=True):
+    """One streamed message: when it was received (runtime clock, seconds), and its fields."""
+
+    stamp: float
+    msg: Any = None
+
+
+class GraphSnapshot(msgspec.Struct, frozen=True, kw_only=True):
+    """The graph as ``GraphView`` sees it, with its name and clock (``wall`` or ``virtual``)."""
+
+    name: str
+    clock: str
+    nodes: tuple[NodeInfo, ...]
+    topics: tuple[TopicInfo, ...]
+    services: tuple[ServiceInfo, ...]
+
+
+class NodeDetail(msgspec.Struct, frozen=True, kw_only=True):
+    """A node's endpoints as ``(name, type)`` pairs, in the sections ``ros2 node info`` prints."""
+
+    name: str
+    subscribers: tuple[tuple[str, str], ...]
+    publishers: tuple[tuple[str, str], ...]
+    servers: tuple[tuple[str, str], ...]
+    clients: tuple[tuple[str, str], ...]
+
+
+def frame(obj: Any) -> bytes:
+    """``obj`` encoded as one frame: length header and msgpack body."""
+    body = codec.encode(obj)
+    return _HEADER.pack(len(body)) + body
+
+
+def decode_reply(body: bytes) -> Reply:
+    """A :class:`Reply` from a frame body; msgspec.DecodeError when it is not one."""
+    return _reply_decoder.decode(body)
+
+
+_reply_decoder = msgspec.msgpack.Decoder(Reply)
+
+
+# --------------------------------------------------------------------------- where endpoints live
+
+
+def endpoint_dir(*, create: bool = False) -> Path:
+    """The per-user directory of the endpoints (see the module docstring).
+
+    With ``create``, it is made (mode 0700) when missing.  Raises ControlError
+    when it exists but is not a real directory owned by this user and closed to
+    group and others: someone else could read or plant sockets there.
+    """
+    uid = os.getuid()
+    runtime_dir = os.environ.get("XDG_RUNTIME_DIR")
+    directory = Path(f"/tmp/actors-{uid}")
+    if runtime_dir:
+        with suppress(OSError):
+            if os.stat(runtime_dir).st_uid == uid:
+                directory = Path(runtime_dir) / "actors"
+    if create:
+        with suppress(FileExistsError):
+            os.mkdir(directory, 0o700)
+    try:
+        info = os.lstat(directory)
+    except FileNotFoundError:
+        return directory  # nothing runs yet
+    if not stat.S_ISDIR(info.st_mode) or info.st_uid != uid or info.st_mode & 0o077:
+        raise ControlError(
+            f"refusing the control directory {directory}: it must be a directory owned by "
+            f"uid {uid} with mode 0700 (it is {stat.filemode(info.st_mode)}, uid {info.st_uid})"
+        )
+    return directory
+
+
+def endpoint_paths() -> dict[str, Path]:
+    """The socket of every graph that may be running, by endpoint name (stale ones included)."""
+    directory = endpoint_dir()
+    if not directory.is_dir():
+        return {}
+    return {path.name[: -len(_SUFFIX)]: path for path in sorted(directory.glob(f"*{_SUFFIX}"))}
+
+
+def is_alive(path: Path) -> bool:
+    """Whether a server listens on ``path``; never blocks."""
+    probe = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    probe.setblocking(False)
+    try:
+        probe.connect(str(path))
+    except BlockingIOError:
+        return True  # its backlog is full: it is alive, just busy
+    except OSError:
+        return False
+    finally:
+        probe.close()
+    return True
+
+
+@contextmanager
+def _claim_lock(directory: Path) -> Iterator[None]:
+    import fcntl
+
+    fd = os.open(directory / ".lock", os.O_CREAT | os.O_RDWR, 0o600)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)  # held for a few system calls only
+        yield
+    finally:
+        os.close(fd)
+
+
+def _bind(name: str) -> tuple[socket.socket, Path]:
+    """A listening socket on the first free ``<name>[-n].sock``; raises ControlError or OSError."""
+    directory = endpoint_dir(create=True)
+    base = "".join(c if c.isalnum() or c in "-_." else "_" for c in name) or "actors"
+    with _claim_lock(directory):
+        for n in range(1, 1000):
+            path = directory / f"{base if n == 1 else f'{base}-{n}'}{_SUFFIX}"
+            if len(os.fsencode(path)) >= 104:  # sun_path holds 104 bytes on macOS, 108 on Linux
+                raise ControlError(f"control socket path too long: {path}")
+            if path.exists() or path.is_symlink():
+                if is_alive(path):
+                    continue
+                path.unlink()  # stale: its graph was killed
+            sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+            try:
+                sock.setblocking(False)
+                sock.bind(str(path))
+                os.chmod(path, 0o600)
+                sock.listen(64)
+            except BaseException:
+                sock.close()
+                raise
+            return sock, path
+    raise ControlError(f"no free control socket name for graph {name!r} in {directory}")
+
+
+# --------------------------------------------------------------------------- the server
+
+
+class ControlServer:
+    """A running endpoint: its socket ``path`` and the loop-lag ``monitor`` (None on virtual time)."""
+
+    def __init__(self, runtime: Runtime, path: Path) -> None:
+        self.runtime = runtime
+        self.path = path
+        self.monitor: LagMonitor | None = None
+        self._sessions = 0
+
+    def snapshot(self) -> GraphSnapshot:
+        """The graph now."""
+        rt = self.runtime
+        graph = rt.graph
+        return GraphSnapshot(
+            name=rt.name,
+            clock="virtual" if rt.clock.virtual else "wall",
+            nodes=tuple(graph.nodes()),
+            topics=tuple(graph.topics()),
+            services=tuple(graph.services()),
+        )
+
+    def diagnose(self) -> Report:
+        """Doctor's report on the graph now."""
+        from actors.doctor import diagnose
+
+        return diagnose(self.runtime, self.monitor)
+
+    async def handle(self, stream: anyio.abc.SocketStream) -> None:
+        """Serve one connection until it closes or sends a bad frame; never raises."""
+        self._sessions += 1
+        session = _Session(self, self._sessions, stream)
+        try:
+            async with stream, anyio.create_task_group() as tg:
+                tg.start_soon(session.run_actor, tg.cancel_scope)
+                await session.serve(BufferedByteReceiveStream(stream))
+                tg.cancel_scope.cancel()
+        finally:
+            session.close()
+
+
+class _Session:
+    """One connection's hidden owner of publishers, subscriptions and clients.
+
+    It quacks like the NodeCore its entities expect (``fqn``, ``runtime``,
+    ``loop``, ``actor``) without being a node of the graph.
+    """
+
+    def __init__(self, server: ControlServer, number: int, stream: anyio.abc.SocketStream) -> None:
+        rt = server.runtime
+        self.server = server
+        self.runtime = rt
+        self.fqn = f"/_actors_cli_{number}"
+        self.loop = rt.loop
+        self.actor = Actor(rt.loop)
+        self._stream = stream
+        self._send_lock = anyio.Lock()
+        self._publishers: dict[str, Publisher] = {}
+        self._subscriptions: list[Subscription] = []
+        self._clients: dict[str, Client] = {}
+
+    async def run_actor(self, scope: anyio.CancelScope) -> None:
+        """Run the session's callbacks; a failed stream (client gone) ends the session."""
+        try:
+            await self.actor.run()
+        except CallbackFailed:
+            scope.cancel()
+
+    async def serve(self, receive: BufferedByteReceiveStream) -> None:
+        """Answer requests until the client goes away or sends a bad frame."""
+        try:
+            while True:
+                (size,) = _HEADER.unpack(await receive.receive_exactly(_HEADER.size))
+                if size > MAX_FRAME:
+                    return  # oversized: drop this connection only
+                body = await receive.receive_exactly(size)
+                try:
+                    request: Any = msgspec.msgpack.decode(body)
+                except msgspec.DecodeError:
+                    return  # not msgpack: drop this connection only
+                await self.send(await self.answer(request))
+        except (anyio.IncompleteRead, anyio.BrokenResourceError, anyio.ClosedResourceError):
+            pass  # the client went away
+
+    async def send(self, data: bytes) -> None:
+        """Send one frame; replies and samples never interleave."""
+        async with self._send_lock:
+            await self._stream.send(data)
+
+    async def answer(self, raw: Any) -> bytes:
+        """The reply frame to one decoded request body; errors become ``ok=False`` replies."""
+        try:
+            request = msgspec.convert(raw, _Requests)
+        except msgspec.ValidationError as exc:
+            return frame(Reply(ok=False, error=f"bad request: {exc}"))
+        try:
+            return frame(Reply(result=await self._dispatch(request)))
+        except (ActorsError, TimeoutError) as exc:
+            return frame(Reply(ok=False, error=str(exc)))
+        except Exception as exc:
+            self.runtime.logger.error(f"control request {request!r} failed: {exc!r}", exc_info=exc)
+            return frame(Reply(ok=False, error=f"internal error in the graph: {exc!r}"))
+
+    async def _dispatch(self, request: Request) -> Any:
+        if isinstance(request, GetGraph):
+            return self.server.snapshot()
+        if isinstance(request, GetNode):
+            return self._node(request.name)
+        if isinstance(request, Publish):
+            return self._publish(request)
+        if isinstance(request, Subscribe):
+            return self._subscribe(request)
+        if isinstance(request, Call):
+            return await self._call(request)
+        assert isinstance(request, Diagnose)
+        return self.server.diagnose()
+
+    # -- the operations ---------------------------------------------------------
+
+    def _node(self, name: str) -> NodeDetail:
+        full = name if name.startswith("/") else "/" + name
+        core = self.runtime.nodes.get(full)
+        if core is None:
+            raise ControlError(f"unknown node {full}")
+        return NodeDetail(
+            name=core.fqn,
+            subscribers=_pairs((s.topic_name, s.msg_type) for s in core.subscriptions),
+            publishers=_pairs((p.topic_name, p.msg_type) for p in core.publishers),
+            servers=_pairs((s.service_name, s.srv_type) for s in core.services),
+            clients=_pairs((c.service_name, c.srv_type) for c in core.clients),
+        )
+
+    def _publish(self, request: Publish) -> dict[str, int]:
+        name = expand(request.topic, "/", "_")
+        msg_type = codec.get_type(request.type)
+        topic = self.runtime.topics.topics.get(name)
+        if topic is not None and topic.msg_type is not msg_type:
+            raise ControlError(f"topic {name} carries {type_name(topic.msg_type)}, not {request.type}")
+        pub = self._publishers.get(name)
+        if pub is None:
+            pub = Publisher(self, name, msg_type, QoSProfile())  # type: ignore[arg-type]
+            self.runtime.topics.add_publisher(pub)
+            self._publishers[name] = pub
+        pub.publish(codec.convert(request.msg, msg_type))
+        return {"subscribers": pub.get_subscription_count()}
+
+    def _subscribe(self, request: Subscribe) -> dict[str, str]:
+        name = expand(request.topic, "/", "_")
+        topic = self.runtime.topics.topics.get(name)
+        if topic is None:
+            raise ControlError(f"unknown topic {name}")
+        # Best effort and volatile match every publisher; transient local when all
+        # publishers keep history, so that a latched topic's last message shows up.
+        pubs = topic.publishers
+        latched = bool(pubs) and all(p.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in pubs)
+        qos = QoSProfile(
+            depth=max(1, request.depth),
+            reliability=ReliabilityPolicy.BEST_EFFORT,
+            durability=DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE,
+        )
+        clock = self.runtime.clock
+        content = request.content
+
+        async def forward(msg: Any) -> None:
+            await self.send(frame(Sample(stamp=clock.monotonic(), msg=msg if content else None)))
+
+        sub = Subscription(self, name, topic.msg_type, forward, qos)  # type: ignore[arg-type]
+        self.runtime.topics.add_subscription(sub)
+        self._subscriptions.append(sub)
+        return {"type": type_name(topic.msg_type)}
+
+    async def _call(self, request: Call) -> Any:
+        name = expand(request.service, "/", "_", what="service name")
+        server = self.runtime.services.servers.get(name)
+        if server is None:
+            raise ControlError(f"unknown service {name}")
+        srv_type = codec.get_type(request.type)
+        if srv_type is not server.srv_type:
+            raise ControlError(f"service {name} has type {type_name(server.srv_type)}, not {request.type}")
+        client = self._clients.get(name)
+        if client is None:
+            client = self._clients[name] = Client(self, name, srv_type, self.runtime.services)  # type: ignore[arg-type]
+        try:
+            return await client.call(codec.convert(request.request, srv_type.Request), timeout=request.timeout)
+        except TimeoutError:
+            raise TimeoutError(f"service {name} did not answer within {request.timeout:g} s") from None
+
+    def close(self) -> None:
+        """Remove everything this session created from the graph."""
+        self.actor.stop()
+        topics = self.runtime.topics
+        for pub in self._publishers.values():
+            topics.remove_publisher(pub)
+        for sub in self._subscriptions:
+            topics.remove_subscription(sub)
+        self._publishers.clear()
+        self._subscriptions.clear()
+        self._clients.clear()
+
+
+def _pairs(items: Iterable[tuple[str, type]]) -> tuple[tuple[str, str], ...]:
+    return tuple(sorted({(name, type_name(t)) for name, t in items}))
+
+
+async def serve(runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any] = anyio.TASK_STATUS_IGNORED) -> None:
+    """Serve ``runtime``'s endpoint until cancelled, then remove its socket file.
+
+    Reports the :class:`ControlServer` through ``task_status`` once the socket
+    listens, or None (with a warning in the log) when no endpoint can be made:
+    no Unix sockets on this platform, or an unsafe or unusable directory.  The
+    graph runs either way.
+    """
+    try:
+        if not hasattr(socket, "AF_UNIX"):
+            raise ControlError("this platform has no Unix sockets")
+        sock, path = _bind(runtime.name)
+    except (ControlError, OSError) as exc:
+        runtime.logger.warning(f"no control endpoint, the command line cannot reach this graph: {exc}")
+        task_status.started(None)
+        return
+    inode = os.stat(path).st_ino
+    server = ControlServer(runtime, path)
+    try:
+        listener = await anyio.abc.SocketListener.from_socket(sock)
+        async with listener, anyio.create_task_group() as tg:
+            if not runtime.clock.virtual:
+                from actors.doctor import LagMonitor
+
+                server.monitor = LagMonitor(runtime)
+                tg.start_soon(server.monitor.run)
+            task_status.started(server)
+            await listener.serve(server.handle, tg)
+    finally:
+        sock.close()
+        _unlink_if_same(path, inode)
+
+
+def _unlink_if_same(path: Path, inode: int) -> None:
+    # Only our own socket: after a stale-name takeover the file may be another graph's.
+    # Failing to remove it is harmless: the next graph of that name replaces a stale socket.
+    with suppress(OSError):
+        if os.stat(path).st_ino == inode:
+            path.unlink()

@@ -1,0 +1,286 @@
+"""Doctor: health checks of a running graph, the loop-lag monitor, and the platform report.
+
+:func:`diagnose` runs every check on a runtime's graph as it is now; each
+check passes or fails with one reason per problem found:
+
+- publishers without subscribers, and subscriptions without publishers;
+- endpoints whose type differs from their topic's (the topic table refuses
+  them, so this guards the invariant rather than expecting failures);
+- QoS incompatibility: a best-effort publisher to a reliable subscription, a
+  volatile publisher to a transient-local one (such pairs are not connected);
+- nodes that crashed or keep restarting;
+- subscriptions that dropped messages (a full KEEP_LAST mailbox);
+- callbacks that block the loop, named by node and callback (wall clock only:
+  on virtual time the loop's clock stands still while a callback runs);
+- required packages installed.
+
+``/rosout``, ``/parameter_events`` and hidden endpoints (the command line's
+own, the runtime's) are left out of the topic checks.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections import deque
+from collections.abc import Callable, Iterable
+from typing import TYPE_CHECKING, Any
+
+import anyio
+import msgspec
+
+from actors.control import is_hidden
+from actors.introspection import EndpointInfo, NodeInfo, TopicInfo
+from actors.topics import qos_incompatibility
+
+if TYPE_CHECKING:
+    from actors.runtime import Runtime
+
+__all__ = ["IGNORED_TOPICS", "Check", "LagEvent", "Report", "LagMonitor", "diagnose"]
+
+IGNORED_TOPICS = frozenset({"/rosout", "/parameter_events"})
+"""Topics every graph has, left out of the publisher/subscriber checks."""
+
+_REQUIRED = ("anyio", "msgspec", "pymunk", "numpy", "pyyaml")
+_OPTIONAL = ("pillow",)
+
+
+class Check(msgspec.Struct, frozen=True, kw_only=True):
+    """One check: its name, whether it passed, and a reason per problem found."""
+
+    name: str
+    passed: bool
+    reasons: tuple[str, ...] = ()
+
+
+class LagEvent(msgspec.Struct, frozen=True, kw_only=True):
+    """The loop woke ``lag`` seconds late at ``stamp`` (runtime clock, seconds since its epoch).
+
+    ``node`` and ``callback`` name what was running then; empty when no node's
+    callback was (the loop was busy elsewhere, or the process was not scheduled).
+    """
+
+    stamp: float
+    lag: float
+    node: str = ""
+    callback: str = ""
+
+
+class Report(msgspec.Struct, frozen=True, kw_only=True):
+    """Everything ``actors doctor --report`` prints."""
+
+    graph: str
+    clock: str
+    checks: tuple[Check, ...]
+    lag_measured: bool
+    lag_events: tuple[LagEvent, ...]
+    platform: dict[str, str]
+    versions: dict[str, str]
+
+    @property
+    def failed(self) -> list[Check]:
+        """The checks that failed."""
+        return [check for check in self.checks if not check.passed]
+
+
+def diagnose(runtime: Runtime, monitor: LagMonitor | None = None) -> Report:
+    """Run every check on ``runtime``'s graph now.
+
+    The loop-lag check runs only with a ``monitor`` (the control endpoint starts
+    one on wall-clock runtimes).  Never raises for what it finds.
+    """
+    graph = runtime.graph
+    topics = [t for t in graph.topics() if t.name not in IGNORED_TOPICS]
+    nodes = graph.nodes()
+    versions = _versions()
+    checks = [
+        _one_sided(topics, publishers=True),
+        _one_sided(topics, publishers=False),
+        _per_topic(topics, "topic types", _type_mismatches),
+        _per_topic(topics, "QoS compatibility", _qos_mismatches),
+        _node_health(nodes),
+        _per_topic(topics, "dropped messages", _drops),
+    ]
+    events = tuple(monitor.events) if monitor is not None else ()
+    if monitor is not None:
+        checks.append(_lag(events))
+    missing = [f"{name} is not installed" for name in _REQUIRED if versions[name] == "not installed"]
+    checks.append(Check(name="required packages", passed=not missing, reasons=tuple(missing)))
+    return Report(
+        graph=runtime.name,
+        clock="virtual" if runtime.clock.virtual else "wall",
+        checks=tuple(checks),
+        lag_measured=monitor is not None,
+        lag_events=events,
+        platform=_platform(),
+        versions=versions,
+    )
+
+
+# --------------------------------------------------------------------------- the checks
+
+
+def _visible(endpoints: Iterable[EndpointInfo]) -> list[EndpointInfo]:
+    return [e for e in endpoints if not is_hidden(e.node)]
+
+
+def _one_sided(topics: list[TopicInfo], *, publishers: bool) -> Check:
+    """Topics with publishers but no subscriptions (or, with ``publishers=False``, the reverse)."""
+    reasons = []
+    for topic in topics:
+        pubs, subs = _visible(topic.publishers), _visible(topic.subscriptions)
+        have, lack = (pubs, subs) if publishers else (subs, pubs)
+        if have and not lack:
+            nodes = ", ".join(sorted({e.node for e in have}))
+            what = "published by {} but nobody subscribes" if publishers else "subscribed by {} but nobody publishes"
+            reasons.append(f"{topic.name} ({topic.type}) is {what.format(nodes)}")
+    name = "publishers without subscribers" if publishers else "subscriptions without publishers"
+    return Check(name=name, passed=not reasons, reasons=tuple(reasons))
+
+
+def _per_topic(topics: list[TopicInfo], name: str, find: Callable[[TopicInfo], list[str]]) -> Check:
+    reasons = [reason for topic in topics for reason in find(topic)]
+    return Check(name=name, passed=not reasons, reasons=tuple(reasons))
+
+
+def _type_mismatches(topic: TopicInfo) -> list[str]:
+    return [
+        f"{topic.name} carries {topic.type} but {e.node} uses {e.type}"
+        for e in _visible((*topic.publishers, *topic.subscriptions))
+        if e.type != topic.type
+    ]
+
+
+def _qos_mismatches(topic: TopicInfo) -> list[str]:
+    found = []
+    for pub in _visible(topic.publishers):
+        for sub in _visible(topic.subscriptions):
+            why = qos_incompatibility(pub.qos, sub.qos)
+            if why is not None:
+                found.append(f"{topic.name}: {pub.node} does not reach {sub.node}: {why}")
+    return found
+
+
+def _drops(topic: TopicInfo) -> list[str]:
+    return [
+        f"{topic.name}: {e.node} dropped {e.dropped} message(s) (queue depth {e.qos.depth})"
+        for e in _visible(topic.subscriptions)
+        if e.dropped
+    ]
+
+
+def _node_health(nodes: list[NodeInfo]) -> Check:
+    reasons = []
+    for node in nodes:
+        if node.crashes or node.state in ("crashed", "restarting"):
+            text = f"{node.name} is {node.state} after {node.crashes} crash(es) and {node.restarts} restart(s)"
+            if node.last_error:
+                text += f"; last error: {node.last_error}"
+            reasons.append(text)
+    return Check(name="node health", passed=not reasons, reasons=tuple(reasons))
+
+
+def _lag(events: tuple[LagEvent, ...]) -> Check:
+    worst: dict[tuple[str, str], list[float]] = {}
+    for event in events:
+        if event.node:
+            worst.setdefault((event.node, event.callback), []).append(event.lag)
+    reasons = tuple(
+        f"{node}: {callback} blocked the loop {len(lags)} time(s), longest {max(lags):.3f} s"
+        for (node, callback), lags in sorted(worst.items())
+    )
+    return Check(name="callbacks blocking the loop", passed=not reasons, reasons=reasons)
+
+
+def _platform() -> dict[str, str]:
+    import platform
+
+    return {
+        "system": platform.system(),
+        "platform info": platform.platform(),
+        "release": platform.release(),
+        "processor": platform.machine(),
+        "python": f"{platform.python_implementation()} {platform.python_version()}",
+    }
+
+
+def _versions() -> dict[str, str]:
+    from importlib.metadata import PackageNotFoundError, version
+
+    found = {}
+    for name in ("actors", *_REQUIRED, *_OPTIONAL):
+        try:
+            found[name] = version(name)
+        except PackageNotFoundError:
+            found[name] = "not installed"
+    return found
+
+
+# --------------------------------------------------------------------------- the loop-lag monitor
+
+
+class LagMonitor:
+    """Notices callbacks that block the loop of a wall-clock runtime.
+
+    A task sleeps ``period`` seconds over and over on the runtime clock and
+    measures how late it wakes; lateness over ``threshold`` becomes a
+    :class:`LagEvent` (the last ``keep`` are kept in ``events``).  While the loop
+    is blocked nothing on it can look, so a watchdog thread does: when the task's
+    last tick is older than ``threshold`` it reads which node's actor is running
+    what (``Actor.current``, the most recent ``busy_since`` among running actors:
+    nothing else can have started while the loop is stuck), and the event names
+    that node and callback.  The thread only reads; it stops with the task.
+    """
+
+    def __init__(
+        self, runtime: Runtime, *, threshold: float = 0.05, period: float = 0.02, keep: int = 50
+    ) -> None:
+        self.threshold = threshold
+        self.period = period
+        self.events: deque[LagEvent] = deque(maxlen=keep)
+        self._runtime = runtime
+        self._tick = 0.0
+        self._suspect: tuple[str, str] | None = None
+        self._stop = threading.Event()
+
+    async def run(self) -> None:
+        """Measure until cancelled."""
+        clock = self._runtime.clock
+        self._tick = clock.monotonic()
+        thread = threading.Thread(
+            target=self._watch, name=f"actors lag monitor ({self._runtime.name})", daemon=True
+        )
+        thread.start()
+        try:
+            while True:
+                await anyio.sleep(self.period)
+                now = clock.monotonic()
+                lag = now - self._tick - self.period
+                if lag > self.threshold:
+                    node, callback = self._suspect or ("", "")
+                    self.events.append(
+                        LagEvent(stamp=clock.now_ns() / 1e9, lag=lag, node=node, callback=callback)
+                    )
+                self._suspect = None
+                self._tick = now
+        finally:
+            self._stop.set()
+
+    def _watch(self) -> None:
+        # The loop's time() is time.monotonic() on a wall-clock loop: safe to read from here.
+        now = self._runtime.clock.monotonic
+        while not self._stop.wait(self.period):
+            if self._suspect is None and now() - self._tick > self.threshold:
+                self._suspect = self._running() or ("", "")
+
+    def _running(self) -> tuple[str, str] | None:
+        latest: tuple[float, str, Any] | None = None
+        for core in list(self._runtime.nodes.values()):
+            actor = core.actor
+            entity = actor.current
+            if entity is not None and (latest is None or actor.busy_since > latest[0]):
+                latest = (actor.busy_since, core.fqn, entity)
+        if latest is None:
+            return None
+        entity = latest[2]
+        fn = getattr(entity, "callback", None) or getattr(entity, "handler", None) or getattr(entity, "fn", None)
+        return latest[1], getattr(fn, "__qualname__", None) or type(entity).__name__

@@ -1,0 +1,201 @@
+"""Doctor's checks on crafted graphs: each one fails for its problem and passes on a clean graph."""
+
+from __future__ import annotations
+
+import time
+
+import anyio
+import pytest
+
+from actors import DurabilityPolicy, Node, QoSProfile, ReliabilityPolicy, Runtime, SupervisorPolicy
+from actors.cli._client import connect
+from actors.control import Subscribe
+from actors.doctor import Report, diagnose
+from interfaces.std_msgs.msg import Int64, String
+
+
+class Talker(Node):
+    def __init__(self, topic: str = "/chatter", qos: QoSProfile | int = 10) -> None:
+        super().__init__("talker")
+        self.pub = self.create_publisher(String, topic, qos)
+        self.create_timer(0.1, lambda: self.pub.publish(String(data="hi")))
+
+
+class Listener(Node):
+    def __init__(self, topic: str = "/chatter", qos: QoSProfile | int = 10) -> None:
+        super().__init__("listener")
+        self.create_subscription(String, topic, lambda msg: None, qos)
+
+
+def checks(report: Report) -> dict[str, tuple[str, ...] | None]:
+    """Each check's reasons, or None when it passed."""
+    return {c.name: None if c.passed else c.reasons for c in report.checks}
+
+
+@pytest.mark.virtual_time
+async def test_a_clean_graph_passes_every_check():
+    async with Runtime(name="doctor_clean", control=False) as rt:
+        rt.spawn(Talker)
+        rt.spawn(Listener)
+        await anyio.sleep(1)
+        report = diagnose(rt)
+    assert checks(report) == {
+        "publishers without subscribers": None,
+        "subscriptions without publishers": None,
+        "topic types": None,
+        "QoS compatibility": None,
+        "node health": None,
+        "dropped messages": None,
+        "required packages": None,
+    }
+    assert not report.lag_measured  # virtual time: the loop's clock stands still in a callback
+    assert report.clock == "virtual" and report.graph == "doctor_clean"
+    assert {"system", "python"} <= report.platform.keys()
+    assert {"actors", "anyio", "msgspec", "pymunk", "numpy"} <= report.versions.keys()
+
+
+@pytest.mark.virtual_time
+async def test_one_sided_topics_fail_but_rosout_parameter_events_and_the_cli_do_not_count():
+    class Lonely(Node):
+        def __init__(self) -> None:
+            super().__init__("lonely")
+            self.create_publisher(String, "/shout", 10)
+            self.create_subscription(Int64, "/ear", lambda msg: None, 10)
+            self.create_subscription(String, "/rosout_copy", lambda msg: None, 10)
+
+    async with Runtime(name="doctor_sided", control=False) as rt:
+        rt.spawn(Lonely)
+        report = checks(diagnose(rt))
+    assert report["publishers without subscribers"] == (
+        "/shout (std_msgs/msg/String) is published by /lonely but nobody subscribes",
+    )
+    assert report["subscriptions without publishers"] == (
+        "/ear (std_msgs/msg/Int64) is subscribed by /lonely but nobody publishes",
+        "/rosout_copy (std_msgs/msg/String) is subscribed by /lonely but nobody publishes",
+    )
+
+
+async def test_the_command_lines_own_subscription_is_no_subscriber(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_RUNTIME_DIR", str(tmp_path))
+    async with Runtime(name="doctor_cli") as rt:
+        rt.spawn(Talker)
+
+        def echo_and_diagnose() -> dict[str, tuple[str, ...] | None]:
+            with connect("doctor_cli") as conn:
+                conn.request(Subscribe(topic="/chatter"))
+                return checks(anyio.from_thread.run_sync(diagnose, rt))
+
+        report = await anyio.to_thread.run_sync(echo_and_diagnose)
+    assert report["publishers without subscribers"] == (
+        "/chatter (std_msgs/msg/String) is published by /talker but nobody subscribes",
+    )
+
+
+@pytest.mark.virtual_time
+@pytest.mark.parametrize(
+    ("offered", "requested", "why"),
+    [
+        (
+            QoSProfile(reliability=ReliabilityPolicy.BEST_EFFORT),
+            QoSProfile(reliability=ReliabilityPolicy.RELIABLE),
+            "publisher offers BEST_EFFORT, subscription requests RELIABLE",
+        ),
+        (
+            QoSProfile(durability=DurabilityPolicy.VOLATILE),
+            QoSProfile(durability=DurabilityPolicy.TRANSIENT_LOCAL),
+            "publisher offers VOLATILE, subscription requests TRANSIENT_LOCAL",
+        ),
+    ],
+)
+async def test_incompatible_qos_fails(offered, requested, why):
+    class Pub(Talker):
+        def __init__(self) -> None:
+            super().__init__(qos=offered)
+
+    class Sub(Listener):
+        def __init__(self) -> None:
+            super().__init__(qos=requested)
+
+    async with Runtime(name="doctor_qos", control=False) as rt:
+        rt.spawn(Pub)
+        rt.spawn(Sub)
+        report = checks(diagnose(rt))
+    assert report["QoS compatibility"] == (f"/chatter: /talker does not reach /listener: {why}",)
+
+
+@pytest.mark.virtual_time
+async def test_a_node_that_crashed_and_restarted_fails_node_health():
+    class Fragile(Node):
+        crashed = False
+
+        def __init__(self) -> None:
+            super().__init__("fragile")
+            self.create_timer(0.1, self.tick)
+
+        def tick(self) -> None:
+            if not Fragile.crashed:
+                Fragile.crashed = True
+                raise RuntimeError("boom")
+
+    async with Runtime(name="doctor_crash", control=False, supervisor=SupervisorPolicy(backoff=0)) as rt:
+        rt.spawn(Fragile)
+        await anyio.sleep(1)
+        report = checks(diagnose(rt))
+    assert report["node health"] == (
+        "/fragile is running after 1 crash(es) and 1 restart(s); last error: RuntimeError('boom')",
+    )
+
+
+@pytest.mark.virtual_time
+async def test_dropped_messages_fail():
+    class Burst(Node):
+        def __init__(self) -> None:
+            super().__init__("burst")
+            pub = self.create_publisher(String, "/burst", 10)
+            self.create_timer(0.1, lambda: [pub.publish(String(data=str(i))) for i in range(5)])
+
+    class Slow(Listener):
+        def __init__(self) -> None:
+            super().__init__(topic="/burst", qos=2)
+
+    async with Runtime(name="doctor_drops", control=False) as rt:
+        rt.spawn(Burst)
+        rt.spawn(Slow)
+        await anyio.sleep(0.15)  # one burst: five messages into a queue of two
+        report = checks(diagnose(rt))
+    assert report["dropped messages"] == ("/burst: /listener dropped 3 message(s) (queue depth 2)",)
+
+
+class Blocker(Node):
+    """A timer callback that holds the loop for 0.1 s of real time: what the lag check is for."""
+
+    def __init__(self) -> None:
+        super().__init__("blocker")
+        self.blocked = anyio.Event()
+        self.timer = self.create_timer(0.05, self.block)
+
+    def block(self) -> None:
+        self.timer.cancel()
+        end = time.perf_counter() + 0.1
+        while time.perf_counter() < end:
+            pass
+        self.blocked.set()
+
+
+async def test_a_callback_blocking_the_loop_is_named_by_node_and_callback(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_RUNTIME_DIR", str(tmp_path))
+    async with Runtime(name="doctor_lag") as rt:
+        blocker = rt.spawn(Blocker)
+        monitor = rt.control.monitor
+        with anyio.fail_after(5):
+            await blocker.blocked.wait()
+            while not any(e.node == "/blocker" for e in monitor.events):
+                await anyio.sleep(0.01)  # recorded when the monitor's sleep wakes, late
+        report = diagnose(rt, monitor)
+    assert report.lag_measured
+    reasons = checks(report)["callbacks blocking the loop"]
+    assert reasons is not None
+    (reason,) = [r for r in reasons if r.startswith("/blocker:")]
+    assert reason.startswith("/blocker: Blocker.block blocked the loop 1 time(s), longest 0.")
+    (event,) = [e for e in report.lag_events if e.node == "/blocker"]
+    assert event.callback == "Blocker.block" and event.lag >= 0.05
