@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 from collections.abc import Sequence
 
@@ -14,7 +15,7 @@ __all__ = ["main"]
 # Each group module exposes ``register(subparsers)``, which adds its parser and
 # sets ``func(args) -> int | None`` on every verb.  Imports inside the verbs stay
 # lazy so that ``actors --help`` is quick.
-GROUPS = ("interface",)
+GROUPS = ("node", "topic", "service", "param", "interface", "doctor", "graph")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -39,3 +40,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     except KeyboardInterrupt:
         return 0
+    except BrokenPipeError:
+        # stdout was closed early (`| head`): stop quietly, as a process killed by SIGPIPE
+        # would, and point stdout at /dev/null so the interpreter's final flush stays silent.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 141

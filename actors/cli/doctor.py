@@ -1,0 +1,64 @@
+"""``actors doctor [--report]``: check a running graph's health, as ``ros2 doctor`` does."""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Iterable
+from typing import Any
+
+from actors.cli._client import add_verb, connect
+
+__all__ = ["register"]
+
+
+def register(subparsers: Any) -> None:
+    """Add the ``doctor`` command."""
+    parser = add_verb(subparsers, "doctor", doctor, help="check the graph's health: topics, QoS, crashes, drops, lag")
+    parser.add_argument("--report", action="store_true", help="also print the platform, versions and graph report")
+
+
+def doctor(args: argparse.Namespace) -> None:
+    """Print ``All N checks passed`` or ``k/N checks failed`` and each failure's reasons.
+
+    Exits 0 either way: the checks ran.  Only an unreachable graph is an error.
+    """
+    from actors.control import Diagnose
+    from actors.doctor import Report
+
+    with connect(args.graph) as conn:
+        report = conn.request(Diagnose(), Report)
+        graph = conn.graph() if args.report else None
+    if graph is not None:
+        _section("PLATFORM INFORMATION", report.platform.items())
+        _section("PACKAGE VERSIONS", report.versions.items())
+        _section("GRAPH", [("name", graph.name), ("clock", graph.clock), ("nodes", str(len(graph.nodes))),
+                           ("topics", str(len(graph.topics))), ("services", str(len(graph.services)))])
+        _section("NODES", [(n.name, f"{n.state}, {n.restarts} restart(s), {n.crashes} crash(es)")
+                           for n in graph.nodes])
+        _section("TOPICS", [(t.name, f"{t.type}, {len(t.publishers)} publisher(s), "
+                                     f"{len(t.subscriptions)} subscription(s), "
+                                     f"{sum(s.dropped for s in t.subscriptions)} dropped")
+                            for t in graph.topics])
+        lag = [(f"{e.stamp:.3f}", f"{e.lag:.3f} s late, running {e.node or '?'} {e.callback}".rstrip())
+               for e in report.lag_events]
+        _section("LOOP LAG", (lag or [("events", "none")]) if report.lag_measured
+                 else [("measured", "no (virtual time)")])
+        _section("CHECKS", [(c.name, "passed" if c.passed else "FAILED") for c in report.checks])
+        print()
+    failed = report.failed
+    if not failed:
+        print(f"All {len(report.checks)} checks passed")
+        return
+    print(f"{len(failed)}/{len(report.checks)} checks failed")
+    for check in failed:
+        for reason in check.reasons:
+            print(f"  {check.name}: {reason}")
+
+
+def _section(title: str, rows: Iterable[tuple[str, str]]) -> None:
+    """A report section as ros2 doctor prints one: an indented title, then ``key : value`` lines."""
+    rows = list(rows)
+    width = max([17, *(len(key) + 1 for key, _ in rows)])
+    print(f"\n   {title}")
+    for key, value in rows:
+        print(f"{key:<{width}}: {value}")

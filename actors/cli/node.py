@@ -1,0 +1,46 @@
+"""``actors node list|info``: the nodes of a running graph, as ``ros2 node`` shows them."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from actors.cli._client import add_verb, graph_snapshot, query
+from actors.control import GetNode, NodeDetail, is_hidden
+
+__all__ = ["register"]
+
+
+def register(subparsers: Any) -> None:
+    """Add the ``node`` group and its verbs to the command line."""
+    parser = subparsers.add_parser("node", help="list nodes and show what each uses")
+    verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
+
+    listing = add_verb(verbs, "list", list_nodes, help="list the graph's nodes")
+    listing.add_argument("-a", "--all", action="store_true", help="also list hidden nodes (names starting with _)")
+
+    info = add_verb(verbs, "info", node_info, help="a node's subscribers, publishers, service servers and clients")
+    info.add_argument("node", metavar="NODE")
+
+
+def list_nodes(args: argparse.Namespace) -> None:
+    """Print every node's full name, sorted."""
+    for name in sorted(node.name for node in graph_snapshot(args).nodes):
+        if args.all or not is_hidden(name):
+            print(name)
+
+
+def node_info(args: argparse.Namespace) -> None:
+    """Print the node's name, then each section's ``name: type`` lines; ControlError if unknown."""
+    detail = query(args, GetNode(name=args.node), NodeDetail)
+    print(detail.name)
+    sections = (
+        ("Subscribers", detail.subscribers),
+        ("Publishers", detail.publishers),
+        ("Service Servers", detail.servers),
+        ("Service Clients", detail.clients),
+    )
+    for title, pairs in sections:
+        print(f"  {title}:")
+        # As ros2 prints them: an empty section is one blank line.
+        print(*(f"    {name}: {type_}" for name, type_ in pairs), sep="\n")

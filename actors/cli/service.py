@@ -1,0 +1,71 @@
+"""``actors service list|type|call``: services of a running graph, as ``ros2 service`` shows them."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from actors.cli._client import add_verb, call_service, connect, graph_snapshot
+
+__all__ = ["register"]
+
+
+def register(subparsers: Any) -> None:
+    """Add the ``service`` group and its verbs to the command line."""
+    parser = subparsers.add_parser("service", help="list services, show their types, call them")
+    verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
+
+    listing = add_verb(verbs, "list", list_services, help="list the graph's services")
+    listing.add_argument("-t", "--show-types", action="store_true", help="also show each service's type")
+
+    type_ = add_verb(verbs, "type", service_type, help="print a service's type")
+    type_.add_argument("service", metavar="NAME")
+
+    caller = add_verb(verbs, "call", call, help="call a service and print the response")
+    caller.add_argument("service", metavar="NAME")
+    caller.add_argument("type", metavar="TYPE", help="e.g. example_interfaces/srv/AddTwoInts")
+    caller.add_argument("values", metavar="VALUES", nargs="?", default="{}",
+                      help='request fields in YAML, e.g. "{a: 2, b: 3}" (default: all defaults)')
+    caller.add_argument("--timeout", type=float, default=10.0, help="seconds to wait for the response (default 10)")
+
+
+def list_services(args: argparse.Namespace) -> None:
+    """Print each service's name, with ``[type]`` under ``-t``."""
+
+    for service in graph_snapshot(args).services:
+        print(f"{service.name} [{service.type}]" if args.show_types else service.name)
+
+
+def service_type(args: argparse.Namespace) -> None:
+    """Print the service's type; ControlError for an unknown service."""
+    from actors.errors import ControlError
+    from actors.names import expand
+
+    name = expand(args.service, "/", "_", what="service name")
+    for service in graph_snapshot(args).services:
+        if service.name == name:
+            print(service.type)
+            return
+    raise ControlError(f"unknown service {name}")
+
+
+def call(args: argparse.Namespace) -> None:
+    """Print the request, then the response as rclpy's repr and as YAML, as ``ros2 service call`` does.
+
+    Raises (exit 2) for an unknown type or a bad value before connecting, and
+    for an unknown service, a failed handler or a timeout after.
+    """
+    from actors import codec
+    from actors.cli._format import ros_repr, yaml_text
+    from actors.errors import UnknownInterfaceError
+
+    srv_type = codec.get_type(args.type)
+    if not hasattr(srv_type, "Request"):
+        raise UnknownInterfaceError(f"{args.type} is a message type, not a service type")
+    request = codec.from_yaml(args.values, srv_type.Request)
+    with connect(args.graph) as conn:
+        print(f"requester: making request: {ros_repr(request)}\n", flush=True)
+        response = call_service(conn, args.service, srv_type, request, timeout=args.timeout)
+    print("response:")
+    print(ros_repr(response))
+    print(yaml_text(response))
