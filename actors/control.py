@@ -116,7 +116,7 @@ class GetGraph(Request, tag="graph"):
 
 
 class GetNode(Request, tag="node"):
-    """One node (``/ns/name``, or a plain name) and the types it uses.  Result: :class:`NodeDetail`."""
+    """One node (``/ns/name`` or plain name) and the types it uses.  Result: :class:`NodeDetail`."""
 
     name: str
 
@@ -134,7 +134,7 @@ class Publish(Request, tag="publish"):
 
 
 class Subscribe(Request, tag="subscribe"):
-    """Stream ``topic``: result ``{"type": ros_name}``, then :class:`Sample` frames until disconnect.
+    """Stream ``topic``: result ``{"type": ros_name}``, then :class:`Sample` frames until hang-up.
 
     ``content=False`` streams stamps only (what ``topic hz`` needs).  Fails for
     a topic that does not exist.
@@ -311,7 +311,7 @@ def _bind(name: str) -> tuple[socket.socket, Path]:
 
 
 class ControlServer:
-    """A running endpoint: its socket ``path`` and the loop-lag ``monitor`` (None on virtual time)."""
+    """A running endpoint: its socket ``path``, its loop-lag ``monitor`` (None on virtual time)."""
 
     def __init__(self, runtime: Runtime, path: Path) -> None:
         self.runtime = runtime
@@ -446,7 +446,9 @@ class _Session:
         msg_type = codec.get_type(request.type)
         topic = self.runtime.topics.topics.get(name)
         if topic is not None and topic.msg_type is not msg_type:
-            raise ControlError(f"topic {name} carries {type_name(topic.msg_type)}, not {request.type}")
+            raise ControlError(
+                f"topic {name} carries {type_name(topic.msg_type)}, not {request.type}"
+            )
         pub = self._publishers.get(name)
         if pub is None:
             pub = Publisher(self, name, msg_type, QoSProfile())  # type: ignore[arg-type]
@@ -463,7 +465,9 @@ class _Session:
         # Best effort and volatile match every publisher; transient local when all
         # publishers keep history, so that a latched topic's last message shows up.
         pubs = topic.publishers
-        latched = bool(pubs) and all(p.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in pubs)
+        latched = bool(pubs) and all(
+            p.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in pubs
+        )
         qos = QoSProfile(
             depth=max(1, request.depth),
             reliability=ReliabilityPolicy.BEST_EFFORT,
@@ -487,14 +491,21 @@ class _Session:
             raise ControlError(f"unknown service {name}")
         srv_type = codec.get_type(request.type)
         if srv_type is not server.srv_type:
-            raise ControlError(f"service {name} has type {type_name(server.srv_type)}, not {request.type}")
+            raise ControlError(
+                f"service {name} has type {type_name(server.srv_type)}, not {request.type}"
+            )
         client = self._clients.get(name)
         if client is None:
-            client = self._clients[name] = Client(self, name, srv_type, self.runtime.services)  # type: ignore[arg-type]
+            client = Client(self, name, srv_type, self.runtime.services)  # type: ignore[arg-type]
+            self._clients[name] = client
         try:
-            return await client.call(codec.convert(request.request, srv_type.Request), timeout=request.timeout)
+            return await client.call(
+                codec.convert(request.request, srv_type.Request), timeout=request.timeout
+            )
         except TimeoutError:
-            raise TimeoutError(f"service {name} did not answer within {request.timeout:g} s") from None
+            raise TimeoutError(
+                f"service {name} did not answer within {request.timeout:g} s"
+            ) from None
 
     def close(self) -> None:
         """Remove everything this session created from the graph."""
@@ -513,7 +524,9 @@ def _pairs(items: Iterable[tuple[str, type]]) -> tuple[tuple[str, str], ...]:
     return tuple(sorted({(name, type_name(t)) for name, t in items}))
 
 
-async def serve(runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any] = anyio.TASK_STATUS_IGNORED) -> None:
+async def serve(
+    runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any] = anyio.TASK_STATUS_IGNORED
+) -> None:
     """Serve ``runtime``'s endpoint until cancelled, then remove its socket file.
 
     Reports the :class:`ControlServer` through ``task_status`` once the socket
@@ -526,7 +539,9 @@ async def serve(runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any] = an
             raise ControlError("this platform has no Unix sockets")
         sock, path = _bind(runtime.name)
     except (ControlError, OSError) as exc:
-        runtime.logger.warning(f"no control endpoint, the command line cannot reach this graph: {exc}")
+        runtime.logger.warning(
+            f"no control endpoint, the command line cannot reach this graph: {exc}"
+        )
         task_status.started(None)
         return
     inode = os.stat(path).st_ino

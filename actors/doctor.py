@@ -103,7 +103,9 @@ def diagnose(runtime: Runtime, monitor: LagMonitor | None = None) -> Report:
     events = tuple(monitor.events) if monitor is not None else ()
     if monitor is not None:
         checks.append(_lag(events))
-    missing = [f"{name} is not installed" for name in _REQUIRED if versions[name] == "not installed"]
+    missing = [
+        f"{name} is not installed" for name in _REQUIRED if versions[name] == "not installed"
+    ]
     checks.append(Check(name="required packages", passed=not missing, reasons=tuple(missing)))
     return Report(
         graph=runtime.name,
@@ -131,7 +133,11 @@ def _one_sided(topics: list[TopicInfo], *, publishers: bool) -> Check:
         have, lack = (pubs, subs) if publishers else (subs, pubs)
         if have and not lack:
             nodes = ", ".join(sorted({e.node for e in have}))
-            what = "published by {} but nobody subscribes" if publishers else "subscribed by {} but nobody publishes"
+            what = (
+                "published by {} but nobody subscribes"
+                if publishers
+                else "subscribed by {} but nobody publishes"
+            )
             reasons.append(f"{topic.name} ({topic.type}) is {what.format(nodes)}")
     name = "publishers without subscribers" if publishers else "subscriptions without publishers"
     return Check(name=name, passed=not reasons, reasons=tuple(reasons))
@@ -172,7 +178,10 @@ def _node_health(nodes: list[NodeInfo]) -> Check:
     reasons = []
     for node in nodes:
         if node.crashes or node.state in ("crashed", "restarting"):
-            text = f"{node.name} is {node.state} after {node.crashes} crash(es) and {node.restarts} restart(s)"
+            text = (
+                f"{node.name} is {node.state} after {node.crashes} crash(es) "
+                f"and {node.restarts} restart(s)"
+            )
             if node.last_error:
                 text += f"; last error: {node.last_error}"
             reasons.append(text)
@@ -282,5 +291,9 @@ class LagMonitor:
         if latest is None:
             return None
         entity = latest[2]
-        fn = getattr(entity, "callback", None) or getattr(entity, "handler", None) or getattr(entity, "fn", None)
+        fn = (
+            getattr(entity, "callback", None)
+            or getattr(entity, "handler", None)
+            or getattr(entity, "fn", None)
+        )
         return latest[1], getattr(fn, "__qualname__", None) or type(entity).__name__

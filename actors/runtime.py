@@ -47,7 +47,11 @@ class Runtime:
     """
 
     def __init__(
-        self, *, name: str = "actors", supervisor: SupervisorPolicy | None = None, control: bool = True
+        self,
+        *,
+        name: str = "actors",
+        supervisor: SupervisorPolicy | None = None,
+        control: bool = True,
     ) -> None:
         self.name = name
         self._serve_control = control

@@ -1,4 +1,4 @@
-"""``python -m actors`` against a running ``python -m actors.run graph.toml`` (wall clock), as subprocesses.
+"""``python -m actors`` against ``python -m actors.run graph.toml`` (wall clock), as subprocesses.
 
 One graph serves the whole module; it is named uniquely (the graph name is the
 file's stem) and every command passes ``--graph``, so other graphs running on
@@ -31,7 +31,11 @@ class GraphProcess:
         self._changed = threading.Condition()
         self.proc = subprocess.Popen(
             [sys.executable, "-m", "actors.run", str(path)],
-            cwd=ROOT, env=python_env(), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+            cwd=ROOT,
+            env=python_env(),
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
         )
         threading.Thread(target=self._read, daemon=True).start()
 
@@ -46,10 +50,12 @@ class GraphProcess:
             self._changed.notify_all()
 
     def wait_for(self, text: str, *, after: int = 0, timeout: float = 10) -> str:
-        """The first line from index ``after`` on that contains ``text``; fails after ``timeout`` s."""
+        """The first line from index ``after`` on containing ``text``; fails after ``timeout`` s."""
 
         def found() -> str | None:
-            return next((line for line in self.lines[after:] if text in line or line == "<exited>"), None)
+            return next(
+                (line for line in self.lines[after:] if text in line or line == "<exited>"), None
+            )
 
         with self._changed:
             line = self._changed.wait_for(found, timeout)
@@ -77,11 +83,17 @@ def graph(tmp_path_factory: pytest.TempPathFactory) -> Iterator[GraphProcess]:
         running.stop()
 
 
-def actors(graph: GraphProcess, *args: str, timeout: float = 30) -> subprocess.CompletedProcess[str]:
+def actors(
+    graph: GraphProcess, *args: str, timeout: float = 30
+) -> subprocess.CompletedProcess[str]:
     """Run ``python -m actors ARGS --graph NAME``."""
     return subprocess.run(
         [sys.executable, "-m", "actors", *args, "--graph", graph.name],
-        cwd=ROOT, env=python_env(), capture_output=True, text=True, timeout=timeout,
+        cwd=ROOT,
+        env=python_env(),
+        capture_output=True,
+        text=True,
+        timeout=timeout,
     )
 
 
@@ -93,9 +105,16 @@ def ok(graph: GraphProcess, *args: str, timeout: float = 30) -> str:
 
 
 COURSE_NODES = {
-    "/minimal_publisher", "/minimal_subscriber", "/heartbeat", "/minimal_client_async",
-    "/minimal_service", "/num_publisher", "/num_subscriber", "/add_three_ints_server",
-    "/add_three_ints_client", "/minimal_param_node",
+    "/minimal_publisher",
+    "/minimal_subscriber",
+    "/heartbeat",
+    "/minimal_client_async",
+    "/minimal_service",
+    "/num_publisher",
+    "/num_subscriber",
+    "/add_three_ints_server",
+    "/add_three_ints_client",
+    "/minimal_param_node",
 }
 
 
@@ -107,8 +126,13 @@ def test_node_list_shows_every_node_and_no_hidden_one(graph):
 
 def test_node_info_prints_ros2s_sections(graph):
     out = ok(graph, "node", "info", "/minimal_publisher")
-    assert out.startswith("/minimal_publisher\n  Subscribers:\n\n  Publishers:\n    /topic: std_msgs/msg/String\n")
-    assert "  Service Servers:\n    /minimal_publisher/describe_parameters: rcl_interfaces/srv/DescribeParameters\n" in out
+    assert out.startswith(
+        "/minimal_publisher\n  Subscribers:\n\n  Publishers:\n    /topic: std_msgs/msg/String\n"
+    )
+    assert (
+        "  Service Servers:\n"
+        "    /minimal_publisher/describe_parameters: rcl_interfaces/srv/DescribeParameters\n" in out
+    )
     assert out.endswith("  Service Clients:\n\n")
 
 
@@ -137,20 +161,34 @@ def test_topic_hz_reports_about_two_hertz(graph):
     out = ok(graph, "topic", "hz", "/topic", "--count", "2")
     rates = [float(r) for r in re.findall(r"^average rate: (\d+\.\d{3})$", out, re.MULTILINE)]
     assert len(rates) == 2 and 1.5 <= rates[-1] <= 2.5, out
-    assert re.search(r"^\tmin: 0\.\d{3}s max: 0\.\d{3}s std dev: \d\.\d{5}s window: \d+$", out, re.MULTILINE)
+    assert re.search(
+        r"^\tmin: 0\.\d{3}s max: 0\.\d{3}s std dev: \d\.\d{5}s window: \d+$", out, re.MULTILINE
+    )
 
 
 def test_topic_pub_once_and_times(graph):
     out = ok(graph, "topic", "pub", "/kill", "std_msgs/msg/Bool", "data: true", "--once")
     assert out == "publisher: beginning loop\npublishing #1: std_msgs.msg.Bool(data=True)\n\n"
-    out = ok(graph, "topic", "pub", "/cli_test", "std_msgs/msg/Int64", "{data: 7}", "-r", "50", "-t", "3")
+    out = ok(
+        graph, "topic", "pub", "/cli_test", "std_msgs/msg/Int64", "{data: 7}", "-r", "50", "-t", "3"
+    )
     assert re.findall(r"publishing #(\d): std_msgs\.msg\.Int64\(data=7\)", out) == ["1", "2", "3"]
 
 
 def test_service_list_type_and_call(graph):
-    assert "/add_two_ints [example_interfaces/srv/AddTwoInts]" in ok(graph, "service", "list", "-t").splitlines()
+    assert (
+        "/add_two_ints [example_interfaces/srv/AddTwoInts]"
+        in ok(graph, "service", "list", "-t").splitlines()
+    )
     assert ok(graph, "service", "type", "/add_two_ints") == "example_interfaces/srv/AddTwoInts\n"
-    out = ok(graph, "service", "call", "/add_two_ints", "example_interfaces/srv/AddTwoInts", "{a: 2, b: 3}")
+    out = ok(
+        graph,
+        "service",
+        "call",
+        "/add_two_ints",
+        "example_interfaces/srv/AddTwoInts",
+        "{a: 2, b: 3}",
+    )
     assert out.splitlines() == [
         "requester: making request: example_interfaces.srv.AddTwoInts_Request(a=2, b=3)",
         "",
@@ -163,13 +201,20 @@ def test_service_list_type_and_call(graph):
 
 def test_param_set_reaches_the_node_and_get_list_dump_read_it(graph):
     mark = len(graph.lines)
-    assert ok(graph, "param", "set", "/minimal_param_node", "my_parameter", "earth") == "Set parameter successful\n"
+    assert (
+        ok(graph, "param", "set", "/minimal_param_node", "my_parameter", "earth")
+        == "Set parameter successful\n"
+    )
     graph.wait_for("[minimal_param_node]: Hello earth!", after=mark)
     assert ok(graph, "param", "get", "/minimal_param_node", "my_parameter") in (
-        "String value is: world\n", "String value is: earth\n",
+        "String value is: world\n",
+        "String value is: earth\n",
     )
     assert ok(graph, "param", "get", "minimal_client_async", "a") == "Integer value is: 41\n"
-    assert ok(graph, "param", "list", "/minimal_param_node") == "/minimal_param_node:\n  my_parameter\n"
+    assert (
+        ok(graph, "param", "list", "/minimal_param_node")
+        == "/minimal_param_node:\n  my_parameter\n"
+    )
     assert "/minimal_client_async:\n  a\n  b\n" in ok(graph, "param", "list")
     dumped = yaml.safe_load(ok(graph, "param", "dump", "/minimal_client_async"))
     assert dumped == {"/minimal_client_async": {"ros__parameters": {"a": 41, "b": 1}}}
@@ -178,14 +223,24 @@ def test_param_set_reaches_the_node_and_get_list_dump_read_it(graph):
 def test_a_refused_param_set_says_why_and_exits_1(graph):
     result = actors(graph, "param", "set", "/minimal_param_node", "my_parameter", "3")
     assert result.returncode == 1
-    assert result.stdout == "Setting parameter failed: wrong type: expected STRING, got INTEGER (3)\n"
+    assert (
+        result.stdout == "Setting parameter failed: wrong type: expected STRING, got INTEGER (3)\n"
+    )
 
 
 def test_doctor_runs_its_checks(graph):
     out = ok(graph, "doctor")
     assert re.search(r"^(All \d+ checks passed|\d+/\d+ checks failed)$", out, re.MULTILINE), out
     report = ok(graph, "doctor", "--report")
-    for section in ("PLATFORM INFORMATION", "PACKAGE VERSIONS", "GRAPH", "NODES", "TOPICS", "LOOP LAG", "CHECKS"):
+    for section in (
+        "PLATFORM INFORMATION",
+        "PACKAGE VERSIONS",
+        "GRAPH",
+        "NODES",
+        "TOPICS",
+        "LOOP LAG",
+        "CHECKS",
+    ):
         assert f"\n   {section}\n" in report
 
 
@@ -194,7 +249,10 @@ def test_graph_writes_a_dot_file(graph, tmp_path):
     assert ok(graph, "graph", "--output", str(target)) == f"wrote {target}\n"
     dot = target.read_text()
     assert dot.startswith(f'digraph "{graph.name}" {{\n')
-    assert '"n:/minimal_publisher" -> "t:/topic";' in dot and '"t:/topic" -> "n:/minimal_subscriber";' in dot
+    assert (
+        '"n:/minimal_publisher" -> "t:/topic";' in dot
+        and '"t:/topic" -> "n:/minimal_subscriber";' in dot
+    )
     assert "/rosout" not in dot
 
 
@@ -206,33 +264,64 @@ def test_graph_writes_a_dot_file(graph, tmp_path):
         (("topic", "hz", "/nowhere"), "unknown topic /nowhere"),
         (("node", "info", "/nobody"), "unknown node /nobody"),
         (("param", "get", "/nobody", "x"), "unknown node /nobody"),
-        (("param", "get", "/minimal_param_node", "nothing"), "parameter 'nothing' is not set on /minimal_param_node"),
+        (
+            ("param", "get", "/minimal_param_node", "nothing"),
+            "parameter 'nothing' is not set on /minimal_param_node",
+        ),
         (("service", "type", "/nothing"), "unknown service /nothing"),
         (("service", "call", "/nothing", "std_srvs/srv/Trigger"), "unknown service /nothing"),
-        (("service", "call", "/add_two_ints", "std_srvs/srv/Trigger"),
-         "service /add_two_ints has type example_interfaces/srv/AddTwoInts, not std_srvs/srv/Trigger"),
-        (("topic", "pub", "/x", "nope_msgs/msg/Nope"), "unknown interface type 'nope_msgs/msg/Nope'"),
-        (("topic", "pub", "/topic", "std_msgs/msg/Bool", "--once"),
-         "topic /topic carries std_msgs/msg/String, not std_msgs/msg/Bool"),
-        (("topic", "pub", "/kill", "std_msgs/msg/Bool", "data: [unclosed"), "std_msgs/msg/Bool: invalid YAML"),
-        (("topic", "pub", "/kill", "std_msgs/msg/Bool", "data: 3"), "std_msgs/msg/Bool: Expected `bool`"),
-        (("service", "call", "/add_two_ints", "example_interfaces/srv/AddTwoInts", "{a: [1"),
-         "example_interfaces/srv/AddTwoInts_Request: invalid YAML"),
-        (("param", "set", "/minimal_param_node", "my_parameter", "[1, "), "parameter value '[1, ' is not valid YAML"),
-        (("topic", "echo", "/topic", "--once", "--field", "nope"), "std_msgs/msg/String has no field 'nope'"),
+        (
+            ("service", "call", "/add_two_ints", "std_srvs/srv/Trigger"),
+            "service /add_two_ints has type example_interfaces/srv/AddTwoInts, "
+            "not std_srvs/srv/Trigger",
+        ),
+        (
+            ("topic", "pub", "/x", "nope_msgs/msg/Nope"),
+            "unknown interface type 'nope_msgs/msg/Nope'",
+        ),
+        (
+            ("topic", "pub", "/topic", "std_msgs/msg/Bool", "--once"),
+            "topic /topic carries std_msgs/msg/String, not std_msgs/msg/Bool",
+        ),
+        (
+            ("topic", "pub", "/kill", "std_msgs/msg/Bool", "data: [unclosed"),
+            "std_msgs/msg/Bool: invalid YAML",
+        ),
+        (
+            ("topic", "pub", "/kill", "std_msgs/msg/Bool", "data: 3"),
+            "std_msgs/msg/Bool: Expected `bool`",
+        ),
+        (
+            ("service", "call", "/add_two_ints", "example_interfaces/srv/AddTwoInts", "{a: [1"),
+            "example_interfaces/srv/AddTwoInts_Request: invalid YAML",
+        ),
+        (
+            ("param", "set", "/minimal_param_node", "my_parameter", "[1, "),
+            "parameter value '[1, ' is not valid YAML",
+        ),
+        (
+            ("topic", "echo", "/topic", "--once", "--field", "nope"),
+            "std_msgs/msg/String has no field 'nope'",
+        ),
     ],
 )
 def test_user_errors_exit_2_with_one_line(graph, args, error):
     result = actors(graph, *args)
     assert result.returncode == 2, result
-    assert len(result.stderr.splitlines()) == 1 and result.stderr.startswith(f"actors: {error}"), result.stderr
+    assert len(result.stderr.splitlines()) == 1 and result.stderr.startswith(f"actors: {error}"), (
+        result.stderr
+    )
     assert "Traceback" not in result.stdout + result.stderr
 
 
 def test_a_closed_stdout_pipe_ends_echo_quietly(graph):
     proc = subprocess.Popen(
         [sys.executable, "-m", "actors", "topic", "echo", "/topic", "--graph", graph.name],
-        cwd=ROOT, env=python_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        cwd=ROOT,
+        env=python_env(),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
     )
     try:
         assert proc.stdout is not None and proc.stdout.readline().startswith("data:")
@@ -246,11 +335,18 @@ def test_a_closed_stdout_pipe_ends_echo_quietly(graph):
 def test_with_no_running_graph_every_verb_says_so_in_one_line(tmp_path):
     env = {**python_env(), "XDG_RUNTIME_DIR": str(tmp_path)}
     for args in (("node", "list"), ("topic", "echo", "/topic"), ("doctor",), ("graph",)):
-        result = subprocess.run([sys.executable, "-m", "actors", *args], cwd=ROOT, env=env,
-                                capture_output=True, text=True, timeout=30)
+        result = subprocess.run(
+            [sys.executable, "-m", "actors", *args],
+            cwd=ROOT,
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=30,
+        )
         assert result.returncode == 2
         assert result.stderr == (
-            "actors: no running actors graph found (start one with: python -m actors.run graph.toml)\n"
+            "actors: no running actors graph found "
+            "(start one with: python -m actors.run graph.toml)\n"
         )
 
 
@@ -258,8 +354,10 @@ def test_with_no_running_graph_every_verb_says_so_in_one_line(tmp_path):
 def turtlebot(tmp_path_factory: pytest.TempPathFactory) -> Iterator[GraphProcess]:
     path = tmp_path_factory.mktemp("turtlebot") / f"cli_turtlebot_{os.getpid()}.toml"
     # The robot graph prints nothing while it drives; a talker tells when it runs.
-    path.write_text((ROOT / "graphs" / "turtlebot.toml").read_text()
-                    + '\n[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n')
+    path.write_text(
+        (ROOT / "graphs" / "turtlebot.toml").read_text()
+        + '\n[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n'
+    )
     running = GraphProcess(path)
     try:
         running.wait_for("Publishing")

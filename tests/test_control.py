@@ -1,4 +1,4 @@
-"""The control endpoint in-process: where its socket lives, who may open it, bad frames, sessions."""
+"""The control endpoint in-process: where its socket lives, who may open it, bad frames."""
 
 from __future__ import annotations
 
@@ -180,7 +180,9 @@ async def test_the_client_finds_the_graph_and_sessions_clean_up_after_themselves
                 assert sample is not None and sample.msg["data"].startswith("hello ")
                 graph = conn.graph()
             topics = {t.name: t for t in graph.topics}
-            return [p.node for p in topics["/kill"].publishers], [s.node for s in topics["/chatter"].subscriptions]
+            return [p.node for p in topics["/kill"].publishers], [
+                s.node for s in topics["/chatter"].subscriptions
+            ]
 
         publishers, subscribers = await anyio.to_thread.run_sync(publish_and_look)
         assert publishers == ["/_actors_cli_1"] and subscribers == ["/_actors_cli_1"]

@@ -49,11 +49,14 @@ NO_GRAPH = "no running actors graph found (start one with: python -m actors.run 
 _sample_decoder = msgspec.msgpack.Decoder(Sample)
 
 
-def add_verb(verbs: Any, name: str, func: Callable[[argparse.Namespace], int | None], help: str) -> Any:
+def add_verb(
+    verbs: Any, name: str, func: Callable[[argparse.Namespace], int | None], help: str
+) -> Any:
     """Add a verb that runs ``func(args)`` and takes ``--graph NAME``; return its parser."""
     parser = verbs.add_parser(name, help=help)
     parser.add_argument(
-        "--graph", metavar="NAME",
+        "--graph",
+        metavar="NAME",
         help="the graph to talk to when several run (its file's stem, e.g. graph)",
     )
     parser.set_defaults(func=func)
@@ -82,7 +85,9 @@ class Connection:
         """Close the connection."""
         self._sock.close()
 
-    def request(self, request: Request, result_type: type[T] | Any = Any, *, timeout: float = 10.0) -> T:
+    def request(
+        self, request: Request, result_type: type[T] | Any = Any, *, timeout: float = 10.0
+    ) -> T:
         """Send ``request``; return its result as ``result_type``.
 
         Raises ControlError with the graph's reason when the request failed,
@@ -91,7 +96,9 @@ class Connection:
         try:
             self._sock.sendall(frame(request))
         except OSError as exc:  # not BrokenPipeError: that means our stdout was closed
-            raise ControlError(f"lost the connection to graph {self.name}: {exc.strerror or exc}") from None
+            raise ControlError(
+                f"lost the connection to graph {self.name}: {exc.strerror or exc}"
+            ) from None
         body = self._read(timeout)
         if body is None:
             raise ControlError(f"graph {self.name} did not answer within {timeout:g} s")
@@ -107,7 +114,7 @@ class Connection:
         return self.request(GetGraph(), GraphSnapshot)
 
     def sample(self, timeout: float | None = None) -> Sample | None:
-        """The next streamed sample, or None if ``timeout`` seconds pass first (None: wait forever)."""
+        """The next streamed sample; None if ``timeout`` seconds pass first (None: no limit)."""
         body = self._read(timeout)
         return None if body is None else _sample_decoder.decode(body)
 
@@ -168,7 +175,9 @@ def connect(graph: str | None) -> Connection:
         sock.close()
     if not live:
         raise ControlError(NO_GRAPH)
-    raise ControlError(f"several actors graphs are running ({', '.join(live)}): choose one with --graph NAME")
+    raise ControlError(
+        f"several actors graphs are running ({', '.join(live)}): choose one with --graph NAME"
+    )
 
 
 def query(args: argparse.Namespace, request: Request, result_type: type[T] | Any = Any) -> T:
@@ -183,7 +192,9 @@ def graph_snapshot(args: argparse.Namespace) -> GraphSnapshot:
         return conn.graph()
 
 
-def call_service(conn: Connection, service: str, srv_type: type, request: Any, *, timeout: float = 10.0) -> Any:
+def call_service(
+    conn: Connection, service: str, srv_type: type, request: Any, *, timeout: float = 10.0
+) -> Any:
     """Call ``service`` of ``srv_type`` with the ``request`` message; return the response message.
 
     Raises ControlError for an unknown service, another type, a handler that
@@ -192,6 +203,9 @@ def call_service(conn: Connection, service: str, srv_type: type, request: Any, *
     from actors import codec
 
     call = Call(
-        service=service, type=codec.ros_name(srv_type), request=codec.to_builtins(request), timeout=timeout
+        service=service,
+        type=codec.ros_name(srv_type),
+        request=codec.to_builtins(request),
+        timeout=timeout,
     )
     return codec.convert(conn.request(call, timeout=timeout + 5.0), srv_type.Response)

@@ -28,7 +28,9 @@ def yaml_text(value: Any) -> str:
         return codec.to_yaml(value)
     import yaml
 
-    text = yaml.safe_dump(_plain(value), sort_keys=False, default_flow_style=False, allow_unicode=True)
+    text = yaml.safe_dump(
+        _plain(value), sort_keys=False, default_flow_style=False, allow_unicode=True
+    )
     return text.removesuffix("...\n")  # the end-of-document mark PyYAML adds after a bare scalar
 
 

@@ -13,8 +13,15 @@ __all__ = ["register"]
 
 def register(subparsers: Any) -> None:
     """Add the ``doctor`` command."""
-    parser = add_verb(subparsers, "doctor", doctor, help="check the graph's health: topics, QoS, crashes, drops, lag")
-    parser.add_argument("--report", action="store_true", help="also print the platform, versions and graph report")
+    parser = add_verb(
+        subparsers,
+        "doctor",
+        doctor,
+        help="check the graph's health: topics, QoS, crashes, drops, lag",
+    )
+    parser.add_argument(
+        "--report", action="store_true", help="also print the platform, versions and graph report"
+    )
 
 
 def doctor(args: argparse.Namespace) -> None:
@@ -31,18 +38,45 @@ def doctor(args: argparse.Namespace) -> None:
     if graph is not None:
         _section("PLATFORM INFORMATION", report.platform.items())
         _section("PACKAGE VERSIONS", report.versions.items())
-        _section("GRAPH", [("name", graph.name), ("clock", graph.clock), ("nodes", str(len(graph.nodes))),
-                           ("topics", str(len(graph.topics))), ("services", str(len(graph.services)))])
-        _section("NODES", [(n.name, f"{n.state}, {n.restarts} restart(s), {n.crashes} crash(es)")
-                           for n in graph.nodes])
-        _section("TOPICS", [(t.name, f"{t.type}, {len(t.publishers)} publisher(s), "
-                                     f"{len(t.subscriptions)} subscription(s), "
-                                     f"{sum(s.dropped for s in t.subscriptions)} dropped")
-                            for t in graph.topics])
-        lag = [(f"{e.stamp:.3f}", f"{e.lag:.3f} s late, running {e.node or '?'} {e.callback}".rstrip())
-               for e in report.lag_events]
-        _section("LOOP LAG", (lag or [("events", "none")]) if report.lag_measured
-                 else [("measured", "no (virtual time)")])
+        _section(
+            "GRAPH",
+            [
+                ("name", graph.name),
+                ("clock", graph.clock),
+                ("nodes", str(len(graph.nodes))),
+                ("topics", str(len(graph.topics))),
+                ("services", str(len(graph.services))),
+            ],
+        )
+        _section(
+            "NODES",
+            [
+                (n.name, f"{n.state}, {n.restarts} restart(s), {n.crashes} crash(es)")
+                for n in graph.nodes
+            ],
+        )
+        _section(
+            "TOPICS",
+            [
+                (
+                    t.name,
+                    f"{t.type}, {len(t.publishers)} publisher(s), "
+                    f"{len(t.subscriptions)} subscription(s), "
+                    f"{sum(s.dropped for s in t.subscriptions)} dropped",
+                )
+                for t in graph.topics
+            ],
+        )
+        lag = [
+            (f"{e.stamp:.3f}", f"{e.lag:.3f} s late, running {e.node or '?'} {e.callback}".rstrip())
+            for e in report.lag_events
+        ]
+        _section(
+            "LOOP LAG",
+            (lag or [("events", "none")])
+            if report.lag_measured
+            else [("measured", "no (virtual time)")],
+        )
         _section("CHECKS", [(c.name, "passed" if c.passed else "FAILED") for c in report.checks])
         print()
     failed = report.failed

@@ -27,12 +27,23 @@ _IMAGES = (".png", ".svg")
 
 def register(subparsers: Any) -> None:
     """Add the ``graph`` command."""
-    parser = add_verb(subparsers, "graph", write_graph, help="write the node/topic graph as Graphviz DOT (and an image)")
-    parser.add_argument("-o", "--output", metavar="FILE", type=Path,
-                        help="a .dot file, or a .png/.svg image with its .dot beside it "
-                             "(default: <graph name>.dot)")
-    parser.add_argument("--all", action="store_true",
-                        help="include /rosout, /parameter_events and hidden endpoints")
+    parser = add_verb(
+        subparsers,
+        "graph",
+        write_graph,
+        help="write the node/topic graph as Graphviz DOT (and an image)",
+    )
+    parser.add_argument(
+        "-o",
+        "--output",
+        metavar="FILE",
+        type=Path,
+        help="a .dot file, or a .png/.svg image with its .dot beside it "
+        "(default: <graph name>.dot)",
+    )
+    parser.add_argument(
+        "--all", action="store_true", help="include /rosout, /parameter_events and hidden endpoints"
+    )
 
 
 def write_graph(args: argparse.Namespace) -> int:
@@ -60,15 +71,21 @@ def _draw(graph: GraphSnapshot, everything: bool, dot_path: Path, image: Path) -
 
     kind = image.suffix[1:].lower()
     if shutil.which("dot"):
-        done = subprocess.run(["dot", f"-T{kind}", str(dot_path), "-o", str(image)],
-                              capture_output=True, text=True, timeout=60)
+        done = subprocess.run(
+            ["dot", f"-T{kind}", str(dot_path), "-o", str(image)],
+            capture_output=True,
+            text=True,
+            timeout=60,
+        )
         return f"dot failed: {done.stderr.strip()}" if done.returncode else None
     if kind == "png" and _draw_png(graph, everything, image):
         return None
     return "install Graphviz (the dot program)" + (" or Pillow" if kind == "png" else "")
 
 
-def _edges(graph: GraphSnapshot, everything: bool) -> tuple[list[str], list[str], list[tuple[str, str, bool]]]:
+def _edges(
+    graph: GraphSnapshot, everything: bool
+) -> tuple[list[str], list[str], list[tuple[str, str, bool]]]:
     """Node names, topic names and edges ``(node, topic, node_publishes)`` to draw."""
     from actors.control import is_hidden
     from actors.doctor import IGNORED_TOPICS
@@ -78,7 +95,8 @@ def _edges(graph: GraphSnapshot, everything: bool) -> tuple[list[str], list[str]
     for topic in graph.topics:
         if not everything and topic.name in IGNORED_TOPICS:
             continue
-        ends = [(e.node, True) for e in topic.publishers] + [(e.node, False) for e in topic.subscriptions]
+        ends = [(e.node, True) for e in topic.publishers]
+        ends += [(e.node, False) for e in topic.subscriptions]
         ends = [(node, pub) for node, pub in ends if everything or not is_hidden(node)]
         if ends:
             topics.append(topic.name)
@@ -93,7 +111,8 @@ def to_dot(graph: GraphSnapshot, *, everything: bool = False) -> str:
     lines = [f'digraph "{graph.name}" {{', "  rankdir=LR;"]
     lines += [f'  "n:{name}" [label="{name}", shape=ellipse];' for name in nodes]
     lines += [f'  "t:{name}" [label="{name}", shape=box];' for name in topics]
-    for node, topic, publishes in sorted(set(edges)):
+    # By topic: the edges into it, then those out of it.
+    for node, topic, publishes in sorted(set(edges), key=lambda e: (e[1], not e[2], e[0])):
         a, b = (f"n:{node}", f"t:{topic}") if publishes else (f"t:{topic}", f"n:{node}")
         lines.append(f'  "{a}" -> "{b}";')
     lines.append("}")
@@ -101,14 +120,18 @@ def to_dot(graph: GraphSnapshot, *, everything: bool = False) -> str:
 
 
 def _draw_png(graph: GraphSnapshot, everything: bool, path: Path) -> bool:
-    """Draw three columns (publishing nodes, topics, other nodes) with Pillow; False without Pillow."""
+    """Draw columns (publishing nodes, topics, other nodes) with Pillow; False without it."""
     try:
         from PIL import Image, ImageDraw
     except ImportError:
         return False
     nodes, topics, edges = _edges(graph, everything)
     publishers = {node for node, _, publishes in edges if publishes}
-    columns = [[n for n in nodes if n in publishers], topics, [n for n in nodes if n not in publishers]]
+    columns = [
+        [n for n in nodes if n in publishers],
+        topics,
+        [n for n in nodes if n not in publishers],
+    ]
     column_width, row_height, margin = 300, 60, 30
     height = margin * 2 + row_height * max(1, *(len(c) for c in columns))
     image = Image.new("RGB", (margin * 2 + column_width * 3, height), "white")
@@ -124,9 +147,21 @@ def _draw_png(graph: GraphSnapshot, everything: bool, path: Path) -> bool:
             (draw.rectangle if kind == "t" else draw.ellipse)(box, outline="black", width=2)
             draw.text((x + 12, y + 9), name, fill="black")
     for node, topic, publishes in edges:
-        start, end = (boxes["n", node], boxes["t", topic]) if publishes else (boxes["t", topic], boxes["n", node])
-        a = (start[2], (start[1] + start[3]) / 2) if start[0] < end[0] else (start[0], (start[1] + start[3]) / 2)
-        b = (end[0], (end[1] + end[3]) / 2) if start[0] < end[0] else (end[2], (end[1] + end[3]) / 2)
+        start, end = (
+            (boxes["n", node], boxes["t", topic])
+            if publishes
+            else (boxes["t", topic], boxes["n", node])
+        )
+        a = (
+            (start[2], (start[1] + start[3]) / 2)
+            if start[0] < end[0]
+            else (start[0], (start[1] + start[3]) / 2)
+        )
+        b = (
+            (end[0], (end[1] + end[3]) / 2)
+            if start[0] < end[0]
+            else (end[2], (end[1] + end[3]) / 2)
+        )
         draw.line([a, b], fill="gray", width=2)
         draw.ellipse((b[0] - 4, b[1] - 4, b[0] + 4, b[1] + 4), fill="black")  # the arrow's head
     image.save(path)

@@ -17,9 +17,16 @@ def register(subparsers: Any) -> None:
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
 
     listing = add_verb(verbs, "list", list_nodes, help="list the graph's nodes")
-    listing.add_argument("-a", "--all", action="store_true", help="also list hidden nodes (names starting with _)")
+    listing.add_argument(
+        "-a", "--all", action="store_true", help="also list hidden nodes (names starting with _)"
+    )
 
-    info = add_verb(verbs, "info", node_info, help="a node's subscribers, publishers, service servers and clients")
+    info = add_verb(
+        verbs,
+        "info",
+        node_info,
+        help="a node's subscribers, publishers, service servers and clients",
+    )
     info.add_argument("node", metavar="NODE")
 
 

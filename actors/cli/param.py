@@ -37,19 +37,28 @@ def register(subparsers: Any) -> None:
     parser = subparsers.add_parser("param", help="list, get, set and dump node parameters")
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
 
-    listing = add_verb(verbs, "list", list_parameters, help="list the parameters of one node, or of every node")
+    listing = add_verb(
+        verbs, "list", list_parameters, help="list the parameters of one node, or of every node"
+    )
     listing.add_argument("node", metavar="NODE", nargs="?")
 
     get = add_verb(verbs, "get", get_parameter, help="print a parameter's type and value")
     get.add_argument("node", metavar="NODE")
     get.add_argument("name", metavar="NAME")
 
-    set_ = add_verb(verbs, "set", set_parameter, help="set a parameter (VALUE is YAML: earth, 41, 0.2, true, [1, 2])")
+    set_ = add_verb(
+        verbs,
+        "set",
+        set_parameter,
+        help="set a parameter (VALUE is YAML: earth, 41, 0.2, true, [1, 2])",
+    )
     set_.add_argument("node", metavar="NODE")
     set_.add_argument("name", metavar="NAME")
     set_.add_argument("value", metavar="VALUE")
 
-    dump = add_verb(verbs, "dump", dump_parameters, help="print a node's parameters as a parameters YAML file")
+    dump = add_verb(
+        verbs, "dump", dump_parameters, help="print a node's parameters as a parameters YAML file"
+    )
     dump.add_argument("node", metavar="NODE")
 
 
@@ -75,7 +84,7 @@ def get_parameter(args: argparse.Namespace) -> None:
 
 
 def set_parameter(args: argparse.Namespace) -> int:
-    """Set the parameter; print ``Set parameter successful`` (exit 0) or the reason it failed (exit 1).
+    """Set it; print ``Set parameter successful`` (exit 0) or why it failed (exit 1).
 
     VALUE is read as YAML, as ``ros2 param set`` does.  A value that is not
     YAML or that no parameter can hold is a ControlError (exit 2).
@@ -100,7 +109,7 @@ def set_parameter(args: argparse.Namespace) -> int:
 
 
 def dump_parameters(args: argparse.Namespace) -> None:
-    """Print ``/node:`` / ``ros__parameters:`` / ``name: value``, a file ``--params-file`` could load."""
+    """Print ``/node:`` / ``ros__parameters:`` / ``name: value``: a parameters file."""
     from actors.cli._format import yaml_text
     from actors.params import value_from_msg
 
@@ -113,7 +122,7 @@ def dump_parameters(args: argparse.Namespace) -> None:
 
 
 def _nodes(conn: Connection, name: str | None) -> list[str]:
-    """``[name]`` as a full node name if the graph has it (else ControlError), or every node when None."""
+    """``[name]`` in full if the graph has it (else ControlError); every node when None."""
     from actors.names import expand
 
     nodes = sorted(node.name for node in conn.graph().nodes)
@@ -130,7 +139,7 @@ def _names(conn: Connection, node: str) -> list[str]:
 
 
 def _call(conn: Connection, node: str, service: str, **fields: Any) -> Any:
-    """Call ``<node>/<service>`` (``get_parameters``...), of type ``rcl_interfaces/srv/GetParameters``..."""
+    """Call ``<node>/<service>`` (``get_parameters``: ``rcl_interfaces/srv/GetParameters``...)."""
     from interfaces.rcl_interfaces import srv
 
     srv_type = getattr(srv, service.title().replace("_", ""))

@@ -1,4 +1,4 @@
-"""``actors service list|type|call``: services of a running graph, as ``ros2 service`` shows them."""
+"""``actors service list|type|call``: a running graph's services, as ``ros2 service`` shows them."""
 
 from __future__ import annotations
 
@@ -16,7 +16,9 @@ def register(subparsers: Any) -> None:
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
 
     listing = add_verb(verbs, "list", list_services, help="list the graph's services")
-    listing.add_argument("-t", "--show-types", action="store_true", help="also show each service's type")
+    listing.add_argument(
+        "-t", "--show-types", action="store_true", help="also show each service's type"
+    )
 
     type_ = add_verb(verbs, "type", service_type, help="print a service's type")
     type_.add_argument("service", metavar="NAME")
@@ -24,9 +26,16 @@ def register(subparsers: Any) -> None:
     caller = add_verb(verbs, "call", call, help="call a service and print the response")
     caller.add_argument("service", metavar="NAME")
     caller.add_argument("type", metavar="TYPE", help="e.g. example_interfaces/srv/AddTwoInts")
-    caller.add_argument("values", metavar="VALUES", nargs="?", default="{}",
-                      help='request fields in YAML, e.g. "{a: 2, b: 3}" (default: all defaults)')
-    caller.add_argument("--timeout", type=float, default=10.0, help="seconds to wait for the response (default 10)")
+    caller.add_argument(
+        "values",
+        metavar="VALUES",
+        nargs="?",
+        default="{}",
+        help='request fields in YAML, e.g. "{a: 2, b: 3}" (default: all defaults)',
+    )
+    caller.add_argument(
+        "--timeout", type=float, default=10.0, help="seconds to wait for the response (default 10)"
+    )
 
 
 def list_services(args: argparse.Namespace) -> None:
@@ -50,7 +59,7 @@ def service_type(args: argparse.Namespace) -> None:
 
 
 def call(args: argparse.Namespace) -> None:
-    """Print the request, then the response as rclpy's repr and as YAML, as ``ros2 service call`` does.
+    """Print the request, then the response as rclpy's repr and as YAML, as ``ros2 service call``.
 
     Raises (exit 2) for an unknown type or a bad value before connecting, and
     for an unknown service, a failed handler or a timeout after.

@@ -1,4 +1,4 @@
-"""``actors topic list|info|echo|pub|hz``: topics of a running graph, as ``ros2 topic`` shows them."""
+"""``actors topic list|info|echo|pub|hz``: a running graph's topics, shown as ``ros2 topic``."""
 
 from __future__ import annotations
 
@@ -16,11 +16,17 @@ def register(subparsers: Any) -> None:
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
 
     listing = add_verb(verbs, "list", list_topics, help="list the graph's topics")
-    listing.add_argument("-t", "--show-types", action="store_true", help="also show each topic's type")
+    listing.add_argument(
+        "-t", "--show-types", action="store_true", help="also show each topic's type"
+    )
 
-    info = add_verb(verbs, "info", topic_info, help="a topic's type and its publishers and subscriptions")
+    info = add_verb(
+        verbs, "info", topic_info, help="a topic's type and its publishers and subscriptions"
+    )
     info.add_argument("topic", metavar="TOPIC")
-    info.add_argument("-v", "--verbose", action="store_true", help="each endpoint: node, QoS, queue, drops")
+    info.add_argument(
+        "-v", "--verbose", action="store_true", help="each endpoint: node, QoS, queue, drops"
+    )
 
     echo = add_verb(verbs, "echo", echo_topic, help="print a topic's messages as YAML documents")
     echo.add_argument("topic", metavar="TOPIC")
@@ -29,18 +35,36 @@ def register(subparsers: Any) -> None:
 
     pub = add_verb(verbs, "pub", publish, help="publish a message, once or at a rate")
     pub.add_argument("topic", metavar="TOPIC")
-    pub.add_argument("type", metavar="TYPE", help="e.g. std_msgs/msg/Bool (must match an existing topic)")
-    pub.add_argument("values", metavar="VALUES", nargs="?", default="{}",
-                     help='field values in YAML, e.g. "data: true" (default: all defaults)')
-    pub.add_argument("-r", "--rate", type=_positive, default=1.0, help="publishing rate in Hz (default 1)")
+    pub.add_argument(
+        "type", metavar="TYPE", help="e.g. std_msgs/msg/Bool (must match an existing topic)"
+    )
+    pub.add_argument(
+        "values",
+        metavar="VALUES",
+        nargs="?",
+        default="{}",
+        help='field values in YAML, e.g. "data: true" (default: all defaults)',
+    )
+    pub.add_argument(
+        "-r", "--rate", type=_positive, default=1.0, help="publishing rate in Hz (default 1)"
+    )
     pub.add_argument("-1", "--once", action="store_true", help="publish one message, then exit")
-    pub.add_argument("-t", "--times", type=int, default=0, help="publish this many messages, then exit")
+    pub.add_argument(
+        "-t", "--times", type=int, default=0, help="publish this many messages, then exit"
+    )
 
     hz = add_verb(verbs, "hz", topic_hz, help="print a topic's average rate every second")
     hz.add_argument("topic", metavar="TOPIC")
-    hz.add_argument("-w", "--window", type=int, default=10000, help="intervals averaged (default 10000)")
-    hz.add_argument("--count", type=int, default=0, metavar="N",
-                    help="exit after N reports (default: run until interrupted)")
+    hz.add_argument(
+        "-w", "--window", type=int, default=10000, help="intervals averaged (default 10000)"
+    )
+    hz.add_argument(
+        "--count",
+        type=int,
+        default=0,
+        metavar="N",
+        help="exit after N reports (default: run until interrupted)",
+    )
 
 
 def _positive(text: str) -> float:
@@ -61,7 +85,7 @@ def list_topics(args: argparse.Namespace) -> None:
 
 
 def topic_info(args: argparse.Namespace) -> None:
-    """Print the type and endpoint counts (and, with ``-v``, each endpoint); ControlError if unknown."""
+    """Print the type and endpoint counts (with ``-v``, each endpoint); ControlError if unknown."""
     from actors.errors import ControlError
     from actors.names import expand
 
@@ -69,7 +93,10 @@ def topic_info(args: argparse.Namespace) -> None:
     topic = next((t for t in graph_snapshot(args).topics if t.name == name), None)
     if topic is None:
         raise ControlError(f"unknown topic {name}")
-    sections = (("Publisher", "PUBLISHER", topic.publishers), ("Subscription", "SUBSCRIPTION", topic.subscriptions))
+    sections = (
+        ("Publisher", "PUBLISHER", topic.publishers),
+        ("Subscription", "SUBSCRIPTION", topic.subscriptions),
+    )
     print(f"Type: {topic.type}")
     for title, kind, endpoints in sections:
         if args.verbose:
@@ -178,8 +205,11 @@ def topic_hz(args: argparse.Namespace) -> None:
             mean = sum(intervals) / n
             std = math.sqrt(sum((x - mean) ** 2 for x in intervals) / n)
             print(f"average rate: {1.0 / mean if mean > 0 else 0.0:.3f}")
-            print(f"\tmin: {min(intervals):.3f}s max: {max(intervals):.3f}s std dev: {std:.5f}s window: {n + 1}",
-                  flush=True)
+            print(
+                f"\tmin: {min(intervals):.3f}s max: {max(intervals):.3f}s "
+                f"std dev: {std:.5f}s window: {n + 1}",
+                flush=True,
+            )
             reports += 1
             if reports == args.count:
                 return

@@ -1,0 +1,75 @@
+"""How the command line prints: rclpy's repr, YAML documents, and the DOT graph."""
+
+from __future__ import annotations
+
+import pytest
+
+from actors.cli._format import field, ros_repr, yaml_text
+from actors.cli.graph import to_dot
+from actors.control import GraphSnapshot
+from actors.errors import ControlError
+from actors.introspection import EndpointInfo, TopicInfo
+from actors.topics import QoSProfile
+from interfaces.geometry_msgs.msg import Twist
+from interfaces.std_msgs.msg import String
+
+
+def test_ros_repr_is_rclpys_nested_repr():
+    msg = Twist()
+    msg.linear.x = 0.2
+    assert ros_repr(msg) == (
+        "geometry_msgs.msg.Twist(linear=geometry_msgs.msg.Vector3(x=0.2, y=0.0, z=0.0), "
+        "angular=geometry_msgs.msg.Vector3(x=0.0, y=0.0, z=0.0))"
+    )
+    assert ros_repr(String(data="it's")) == 'std_msgs.msg.String(data="it\'s")'
+
+
+def test_yaml_text_of_a_message_a_field_and_a_scalar():
+    msg = Twist()
+    msg.angular.z = 0.5
+    assert yaml_text(msg).startswith("linear:\n  x: 0.0\n")
+    assert yaml_text(field(msg, "angular")) == "x: 0.0\ny: 0.0\nz: 0.5\n"
+    assert yaml_text(field(msg, "angular.z")) == "0.5\n"  # no end-of-document mark
+    with pytest.raises(ControlError, match="geometry_msgs/msg/Twist has no field 'angular.w'"):
+        field(msg, "angular.w")
+
+
+def test_the_dot_graph_leaves_out_rosout_and_hidden_endpoints_unless_asked():
+    def end(node: str) -> EndpointInfo:
+        return EndpointInfo(node=node, type="std_msgs/msg/String", qos=QoSProfile())
+
+    graph = GraphSnapshot(
+        name="demo",
+        clock="wall",
+        nodes=(),
+        services=(),
+        topics=(
+            TopicInfo(
+                name="/chatter",
+                type="std_msgs/msg/String",
+                publishers=(end("/talker"),),
+                subscriptions=(end("/listener"), end("/_actors_cli_1")),
+            ),
+            TopicInfo(
+                name="/rosout",
+                type="rcl_interfaces/msg/Log",
+                publishers=(end("/_demo"),),
+                subscriptions=(),
+            ),
+        ),
+    )
+    assert to_dot(graph) == (
+        'digraph "demo" {\n'
+        "  rankdir=LR;\n"
+        '  "n:/listener" [label="/listener", shape=ellipse];\n'
+        '  "n:/talker" [label="/talker", shape=ellipse];\n'
+        '  "t:/chatter" [label="/chatter", shape=box];\n'
+        '  "n:/talker" -> "t:/chatter";\n'
+        '  "t:/chatter" -> "n:/listener";\n'
+        "}\n"
+    )
+    everything = to_dot(graph, everything=True)
+    assert (
+        '"t:/chatter" -> "n:/_actors_cli_1";' in everything
+        and '"n:/_demo" -> "t:/rosout";' in everything
+    )
