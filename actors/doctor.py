@@ -20,6 +20,7 @@ own, the runtime's) are left out of the topic checks.
 
 from __future__ import annotations
 
+import functools
 import threading
 from collections import deque
 from collections.abc import Callable, Iterable
@@ -200,6 +201,7 @@ def _lag(events: tuple[LagEvent, ...]) -> Check:
     return Check(name="callbacks blocking the loop", passed=not reasons, reasons=reasons)
 
 
+@functools.cache  # fixed for the process; importlib.metadata scans the path
 def _platform() -> dict[str, str]:
     import platform
 
@@ -212,6 +214,7 @@ def _platform() -> dict[str, str]:
     }
 
 
+@functools.cache
 def _versions() -> dict[str, str]:
     from importlib.metadata import PackageNotFoundError, version
 
