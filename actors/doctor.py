@@ -98,7 +98,7 @@ def diagnose(runtime: Runtime, monitor: LagMonitor | None = None) -> Report:
         _one_sided(topics, publishers=False),
         _per_topic(topics, "topic types", _type_mismatches),
         _per_topic(topics, "QoS compatibility", _qos_mismatches),
-        _node_health(nodes),
+        _node_health(nodes + graph.ended()),
         _per_topic(topics, "dropped messages", _drops),
     ]
     events = tuple(monitor.events) if monitor is not None else ()

@@ -14,6 +14,7 @@ from actors.topics import QoSProfile, type_name
 
 if TYPE_CHECKING:
     from actors.runtime import Runtime
+    from actors.supervisor import Child
     from actors.topics import Topic
 
 __all__ = ["EndpointInfo", "TopicInfo", "ServiceInfo", "NodeInfo", "GraphView"]
@@ -75,28 +76,11 @@ class GraphView:
 
     def nodes(self) -> list[NodeInfo]:
         """Every node of the graph, in start order, including those being restarted."""
-        infos = []
-        for child in self._rt.supervisor.children:
-            core = child.core
-            if core is None:
-                continue
-            infos.append(
-                NodeInfo(
-                    name=core.fqn,
-                    cls=f"{child.cls.__module__}:{child.cls.__qualname__}",
-                    state=child.state,
-                    restart=child.restart.value,
-                    restarts=child.restarts,
-                    crashes=child.crashes,
-                    last_error=child.last_error,
-                    publishes=tuple(sorted({p.topic_name for p in core.publishers})),
-                    subscribes=tuple(sorted({s.topic_name for s in core.subscriptions})),
-                    serves=tuple(sorted(s.service_name for s in core.services)),
-                    calls=tuple(sorted({c.service_name for c in core.clients})),
-                    timers=sum(not t.is_canceled() for t in core.timers),
-                )
-            )
-        return infos
+        return [_node_info(c) for c in self._rt.supervisor.children if c.core is not None]
+
+    def ended(self) -> list[NodeInfo]:
+        """The latest nodes that ended for good (exited, or crashed and not restarted)."""
+        return [_node_info(c) for c in self._rt.supervisor.ended if c.core is not None]
 
     def topics(self) -> list[TopicInfo]:
         """Every topic with its endpoints, sorted by name."""
@@ -140,3 +124,22 @@ class GraphView:
                 for s in topic.subscriptions
             ),
         )
+
+
+def _node_info(child: Child) -> NodeInfo:
+    core = child.core
+    assert core is not None
+    return NodeInfo(
+        name=core.fqn,
+        cls=f"{child.cls.__module__}:{child.cls.__qualname__}",
+        state=child.state,
+        restart=child.restart.value,
+        restarts=child.restarts,
+        crashes=child.crashes,
+        last_error=child.last_error,
+        publishes=tuple(sorted({p.topic_name for p in core.publishers})),
+        subscribes=tuple(sorted({s.topic_name for s in core.subscriptions})),
+        serves=tuple(sorted(s.service_name for s in core.services)),
+        calls=tuple(sorted({c.service_name for c in core.clients})),
+        timers=sum(not t.is_canceled() for t in core.timers),
+    )

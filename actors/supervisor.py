@@ -120,6 +120,8 @@ class Supervisor:
         self.runtime = runtime
         self.policy = policy
         self.children: list[Child] = []
+        # Children that ended for good and why (bounded): doctor reports crashes among them.
+        self.ended: deque[Child] = deque(maxlen=100)
         self._restart_times: deque[float] = deque()
         self._send, self._receive = anyio.create_memory_object_stream[_Exit](float("inf"))
 
@@ -212,15 +214,13 @@ class Supervisor:
             if child.restart is RestartType.PERMANENT:
                 await self._restart([child], crashed=None)
             else:
-                self.children.remove(child)
-                child.state = "exited"
+                self._retire(child, "exited")
             return
         child.crashes += 1
         self._report(core, error)
         if child.restart is RestartType.TEMPORARY:
             core.destroy()
-            self.children.remove(child)
-            child.state = "crashed"
+            self._retire(child, "crashed")
             return
         index = self.children.index(child)
         strategy = self.policy.strategy
@@ -232,6 +232,11 @@ class Supervisor:
             else self.children[index:]
         )
         await self._restart(group, crashed=child)
+
+    def _retire(self, child: Child, state: str) -> None:
+        self.children.remove(child)
+        child.state = state
+        self.ended.append(child)
 
     def _report(self, core: NodeCore, error: BaseException) -> None:
         child = core.child

@@ -149,6 +149,26 @@ async def test_a_node_that_crashed_and_restarted_fails_node_health():
 
 
 @pytest.mark.virtual_time
+async def test_a_temporary_node_that_crashed_for_good_fails_node_health():
+    class Doomed(Node):
+        def __init__(self) -> None:
+            super().__init__("doomed")
+            self.create_timer(0.1, self.tick)
+
+        def tick(self) -> None:
+            raise RuntimeError("gone")
+
+    async with Runtime(name="doctor_temporary", control=False) as rt:
+        rt.spawn(Doomed, restart="temporary")
+        await anyio.sleep(1)
+        assert rt.graph.nodes() == []
+        report = checks(diagnose(rt))
+    assert report["node health"] == (
+        "/doomed is crashed after 1 crash(es) and 0 restart(s); last error: RuntimeError('gone')",
+    )
+
+
+@pytest.mark.virtual_time
 async def test_dropped_messages_fail():
     class Burst(Node):
         def __init__(self) -> None:
