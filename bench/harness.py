@@ -1,17 +1,33 @@
-"""What every benchmark shares: repetitions, medians with min–max, ratios, one printed table."""
+"""What every benchmark shares: repetitions, medians with min–max, ratios, child processes, one table."""
 
 from __future__ import annotations
 
+import json
+import os
 import statistics
-from collections.abc import Callable, Sequence
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, TypeVar
 
-__all__ = ["Result", "repeat", "table"]
+__all__ = ["ROOT", "Result", "repeat", "fmt", "table", "child_env", "run_child", "time_to_line"]
+
+ROOT = Path(__file__).resolve().parent.parent
+T = TypeVar("T")
 
 
 @dataclass
 class Result:
-    """One measured case: its samples in ``unit`` (higher is better when ``higher_better``)."""
+    """One measured case: its samples in ``unit`` (higher is better when ``higher_better``).
+
+    A case that could not be measured (a baseline not installed) has no samples
+    and says why in ``note``.
+    """
 
     scenario: str
     case: str
@@ -25,14 +41,24 @@ class Result:
     def median(self) -> float:
         return statistics.median(self.samples)
 
+    def ratio(self, base: Result) -> float:
+        """How many times better than ``base`` (>1 is better, whichever way the unit goes)."""
+        return self.median / base.median if self.higher_better else base.median / self.median
 
-def repeat(fn: Callable[[], float], times: int) -> list[float]:
-    """Call ``fn`` ``times`` times (after one warm-up call) and return its results."""
-    fn()
+
+def repeat(fn: Callable[[], T], times: int, *, warmup: bool = True) -> list[T]:
+    """Call ``fn`` ``times`` times (after one warm-up call unless ``warmup`` is off) and return its results.
+
+    Turn the warm-up off for measurements that start a fresh process each time:
+    there is nothing in-process to warm.
+    """
+    if warmup:
+        fn()
     return [fn() for _ in range(times)]
 
 
-def _fmt(value: float) -> str:
+def fmt(value: float) -> str:
+    """A number as the table shows it: thousands separators when large, 3 significant digits when small."""
     if value >= 100_000:
         return f"{value:,.0f}"
     if value >= 100:
@@ -51,12 +77,77 @@ def table(results: Sequence[Result]) -> str:
         ratios = []
         for label, case in r.baselines.items():
             base = by_case.get((r.scenario, case))
-            if base is None:
+            if base is None or not base.samples or not r.samples:
                 ratios.append(f"{label}: n/a")
-                continue
-            ratio = r.median / base.median if r.higher_better else base.median / r.median
-            ratios.append(f"{ratio:.2f}× {label}")
-        span = f"{_fmt(min(r.samples))}–{_fmt(max(r.samples))}"
+            else:
+                ratios.append(f"{r.ratio(base):.2f}× {label}")
+        if r.samples:
+            median, span = fmt(r.median), f"{fmt(min(r.samples))}–{fmt(max(r.samples))}"
+        else:
+            median = span = "—"
         extra = "; ".join(ratios + ([r.note] if r.note else []))
-        lines.append(f"| {r.scenario} | {r.case} | {_fmt(r.median)} | {span} | {r.unit} | {extra} |")
+        lines.append(f"| {r.scenario} | {r.case} | {median} | {span} | {r.unit} | {extra} |")
     return "\n".join(lines)
+
+
+def child_env(extra: Mapping[str, str] | None = None) -> dict[str, str]:
+    """The environment for a child Python: the repository importable, output unbuffered.
+
+    ``_ROS_WHEELS_BOOTSTRAP_COMPLETE`` stops the ROS wheels' start-up hook from
+    re-executing every Python of the venv (it sets LD_LIBRARY_PATH for rclpy):
+    actors needs none of it, so its start-up is measured as a user without the
+    ``bench-ros`` extra sees it.  ``bench.ros`` leaves the hook on for rclpy.
+    """
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(p for p in (str(ROOT), env.get("PYTHONPATH", "")) if p)
+    env["PYTHONUNBUFFERED"] = "1"
+    env["_ROS_WHEELS_BOOTSTRAP_COMPLETE"] = "1"
+    env.update(extra or {})
+    return env
+
+
+def run_child(args: Sequence[str], env: Mapping[str, str] | None = None, timeout: float = 600) -> Any:
+    """Run ``python ARGS`` from the repository root and decode the JSON of its last output line.
+
+    Raises RuntimeError with the child's last error line when it fails.
+    """
+    proc = subprocess.run(
+        [sys.executable, *args], cwd=ROOT, env=env or child_env(), capture_output=True, text=True, timeout=timeout
+    )
+    lines = proc.stdout.strip().splitlines()
+    if proc.returncode != 0 or not lines:
+        errors = proc.stderr.strip().splitlines() or [f"exit code {proc.returncode}"]
+        raise RuntimeError(errors[-1])
+    return json.loads(lines[-1])
+
+
+def time_to_line(args: Sequence[str], marker: str, env: Mapping[str, str] | None = None, timeout: float = 60) -> float:
+    """Seconds from starting ``python ARGS`` until it prints a line containing ``marker``.
+
+    The child is then stopped with SIGTERM (killed if it lingers, or once
+    ``timeout`` seconds have passed).  Raises RuntimeError, with the child's last
+    error line, if it ends before printing the marker.
+    """
+    with tempfile.TemporaryFile("w+") as errors:
+        start = time.perf_counter()
+        proc = subprocess.Popen(
+            [sys.executable, *args], cwd=ROOT, env=env or child_env(), stdout=subprocess.PIPE, stderr=errors, text=True
+        )
+        watchdog = threading.Timer(timeout, proc.kill)
+        watchdog.start()
+        try:
+            assert proc.stdout is not None
+            for line in proc.stdout:
+                if marker in line:
+                    return time.perf_counter() - start
+            errors.seek(0)
+            last = (errors.read().strip().splitlines() or [f"exit code {proc.wait()}"])[-1]
+            raise RuntimeError(f"{' '.join(args)} never printed {marker!r}: {last}")
+        finally:
+            watchdog.cancel()
+            proc.terminate()
+            try:
+                proc.communicate(timeout=10)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+                proc.communicate()

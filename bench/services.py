@@ -1,7 +1,8 @@
 """Service round trip (std_srvs/SetBool), sequential and with 100 concurrent callers.
 
 Beside the same request/response through a bare future and an asyncio.Queue
-(what a hand-written actor does), and the floor (calling the handler directly).
+(what a hand-written actor does), the floor (calling the handler directly) and
+rclpy when it is installed (see ``bench.ros``).
 Run: ``python -m bench.services [--quick]``.  Ratios are "× faster than the
 baseline" (higher is better; 0.5× means twice the baseline's time).
 """
@@ -13,6 +14,7 @@ import asyncio
 import time
 
 from actors import Node, Runtime
+from bench import ros
 from bench.harness import Result, repeat, table
 from interfaces.std_srvs.srv import SetBool
 
@@ -20,6 +22,7 @@ CONCURRENT = 100
 
 
 def handle(request: SetBool.Request, response: SetBool.Response) -> SetBool.Response:
+    """The server's handler, the same for every case (and for rclpy's messages)."""
     response.success = request.data
     return response
 
@@ -38,7 +41,7 @@ def actors_call_time(n: int, callers: int) -> float:
             self.cli = self.create_client(SetBool, "set_bool")
 
     async def main() -> float:
-        async with Runtime() as rt:
+        async with Runtime(control=False) as rt:
             rt.spawn(Server)
             cli = rt.spawn(Caller).cli
             request = SetBool.Request(data=True)
@@ -95,18 +98,20 @@ def floor_call_time(n: int, callers: int) -> float:
 
 def run(quick: bool = False) -> list[Result]:
     """Measure sequential and concurrent round trips with their baselines, in one run."""
-    n = 10_000 if quick else 100_000
+    n = 2_000 if quick else 20_000
+    reps = 5
     results = []
     for scenario, callers in (("c. service sequential", 1), (f"c. service {CONCURRENT} callers", CONCURRENT)):
-        bases = {"future": "future+Queue", "floor": "direct call (floor)"}
+        bases = {"future": "future+Queue", "floor": "direct call (floor)", **ros.baselines()}
         cases = (
             ("actors", actors_call_time, bases),
             ("future+Queue", future_call_time, {}),
             ("direct call (floor)", floor_call_time, {}),
         )
         for case, fn, baselines in cases:
-            samples = repeat(lambda: fn(n, callers), 5)
+            samples = repeat(lambda: fn(n, callers), reps)
             results.append(Result(scenario, case, "µs/call", samples, higher_better=False, baselines=baselines))
+        results += ros.measured(scenario, "service", "µs/call", reps, higher_better=False, n=n, callers=callers)
     return results
 
 

@@ -1,8 +1,9 @@
-"""Topic throughput: talker→listener one-way and 1→10 fan-out, beside a bare asyncio.Queue.
+"""Topic throughput: talker→listener one-way and 1→10 fan-out, beside a bare asyncio.Queue and rclpy.
 
 Run: ``python -m bench.throughput [--quick]``.  Ratios are "× faster than the
 baseline" (higher is better).  The floor is calling the callback directly, no
-delivery at all.
+delivery at all.  ``actors_rate`` and ``queue_rate`` also spread the messages
+over several topics, for ``bench.topics_scale``.
 """
 
 from __future__ import annotations
@@ -12,6 +13,7 @@ import asyncio
 import time
 
 from actors import Node, QoSProfile, Runtime
+from bench import ros
 from bench.harness import Result, repeat, table
 from interfaces.std_msgs.msg import String
 
@@ -19,33 +21,48 @@ BATCH = 100  # messages published between yields to the loop
 DEPTH = 1000  # mailbox depth: larger than a batch, so nothing is dropped
 
 
-def actors_rate(n: int, subscribers: int) -> float:
-    """Deliveries per second from one publisher to ``subscribers`` subscriptions."""
+class Listener(Node):
+    """Counts what its subscriptions deliver."""
 
-    class Listener(Node):
-        def __init__(self) -> None:
-            super().__init__("listener")
-            self.count = 0
-            self.create_subscription(String, "topic", self.on_msg, QoSProfile(depth=DEPTH))
+    def __init__(self) -> None:
+        super().__init__("listener")
+        self.count = 0
 
-        def on_msg(self, msg: String) -> None:
-            self.count += 1
+    def on_msg(self, msg: String) -> None:
+        self.count += 1
 
-    class Talker(Node):
-        def __init__(self) -> None:
-            super().__init__("talker")
-            self.pub = self.create_publisher(String, "topic", QoSProfile(depth=DEPTH))
+
+class Talker(Node):
+    """Owns the publishers."""
+
+    def __init__(self) -> None:
+        super().__init__("talker")
+
+
+def actors_rate(n: int, subscribers: int, topics: int = 1) -> float:
+    """Deliveries per second: ``n`` messages published round-robin over ``topics`` topics,
+    each topic with one publisher and ``subscribers`` subscriptions (each in its own node).
+
+    ``n`` is rounded down to whole batches; ``topics`` must divide the batch size.
+    """
+    n = n // BATCH * BATCH
 
     async def main() -> float:
-        async with Runtime() as rt:
-            listeners = [rt.spawn(Listener, name=f"listener{i}") for i in range(subscribers)]
-            pub = rt.spawn(Talker).pub
+        async with Runtime(control=False) as rt:
+            listeners = []
+            for t in range(topics):
+                for i in range(subscribers):
+                    node = rt.spawn(Listener, name=f"listener{t}_{i}")
+                    node.create_subscription(String, f"topic{t}", node.on_msg, QoSProfile(depth=DEPTH))
+                    listeners.append(node)
+            talker = rt.spawn(Talker)
+            pubs = [talker.create_publisher(String, f"topic{t}", QoSProfile(depth=DEPTH)) for t in range(topics)]
+            batch = [pubs[i % topics].publish for i in range(BATCH)]
             msg = String(data="Hello World")
-            publish = pub.publish
             await asyncio.sleep(0)
             start = time.perf_counter()
             for _ in range(n // BATCH):
-                for _ in range(BATCH):
+                for publish in batch:
                     publish(msg)
                 await asyncio.sleep(0)
             while sum(node.count for node in listeners) < n * subscribers:
@@ -55,25 +72,31 @@ def actors_rate(n: int, subscribers: int) -> float:
     return asyncio.run(main())
 
 
-def queue_rate(n: int, subscribers: int) -> float:
+def queue_rate(n: int, subscribers: int, topics: int = 1) -> float:
     """The same with bare asyncio.Queues: one producer ``await put`` per message per consumer."""
+    n = n // BATCH * BATCH
 
     async def main() -> float:
-        queues = [asyncio.Queue(maxsize=DEPTH) for _ in range(subscribers)]
-        counts = [0] * subscribers
+        queues = [[asyncio.Queue(maxsize=DEPTH) for _ in range(subscribers)] for _ in range(topics)]
+        per_topic = n // topics
+        count = 0
 
-        async def consume(i: int) -> None:
-            get = queues[i].get
-            for _ in range(n):
+        async def consume(queue: asyncio.Queue) -> None:
+            nonlocal count
+            get = queue.get
+            for _ in range(per_topic):
                 await get()
-                counts[i] += 1
+                count += 1
 
         msg = String(data="Hello World")
-        consumers = [asyncio.ensure_future(consume(i)) for i in range(subscribers)]
+        consumers = [asyncio.ensure_future(consume(q)) for group in queues for q in group]
+        batch = [queues[i % topics] for i in range(BATCH)]
         start = time.perf_counter()
-        for _ in range(n):
-            for q in queues:
-                await q.put(msg)
+        for _ in range(n // BATCH):
+            for group in batch:
+                for q in group:
+                    await q.put(msg)
+            await asyncio.sleep(0)  # yield between batches, as the actors publisher does
         await asyncio.gather(*consumers)
         return n * subscribers / (time.perf_counter() - start)
 
@@ -96,14 +119,15 @@ def floor_rate(n: int, subscribers: int) -> float:
     return n * subscribers / (time.perf_counter() - start)
 
 
-def run(quick: bool = False) -> list[Result]:
-    """Measure one-way and fan-out throughput with the baselines, in one run."""
-    n = 20_000 if quick else 200_000
+def run(quick: bool = False, *, fan_out: tuple[int, ...] = (1, 10)) -> list[Result]:
+    """Measure one-way (fan-out 1) and 1→N fan-out throughput with every baseline, in one run."""
+    n = 10_000 if quick else 100_000
     reps = 5
     results = []
-    for scenario, subs in (("a. one-way", 1), ("b. fan-out 1→10", 10)):
+    for subs in fan_out:
+        scenario = "a. one-way" if subs == 1 else f"b. fan-out 1→{subs}"
         count = n // subs
-        bases = {"queue": "asyncio.Queue", "floor": "direct call (floor)"}
+        bases = {"queue": "asyncio.Queue", "floor": "direct call (floor)", **ros.baselines()}
         results.append(
             Result(scenario, "actors", "deliveries/s", repeat(lambda: actors_rate(count, subs), reps), baselines=bases)
         )
@@ -111,6 +135,7 @@ def run(quick: bool = False) -> list[Result]:
         results.append(
             Result(scenario, "direct call (floor)", "deliveries/s", repeat(lambda: floor_rate(count, subs), reps))
         )
+        results += ros.measured(scenario, "one_way", "deliveries/s", reps, n=count, subscribers=subs)
     return results
 
 

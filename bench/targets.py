@@ -1,0 +1,101 @@
+"""The performance targets of issue 7, checked against the results of one run."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+from bench.harness import Result, fmt
+
+__all__ = ["Target", "TARGETS", "check"]
+
+KB = 1000 / 1024  # the target's KB (1,000 bytes) in the table's KiB
+
+Lookup = Callable[[str, str], Result | None]
+
+
+@dataclass(frozen=True)
+class Target:
+    """One target: what it asks, and how to read it off the results (None: not measured)."""
+
+    name: str
+    goal: str
+    measure: Callable[[Lookup], tuple[bool, str] | None]
+
+
+def _ratio(scenario: str, case: str, base_scenario: str, base_case: str, at_least: float) -> Callable[[Lookup], tuple[bool, str] | None]:
+    def measure(get: Lookup) -> tuple[bool, str] | None:
+        result, base = get(scenario, case), get(base_scenario, base_case)
+        if result is None or base is None or not result.samples or not base.samples:
+            return None
+        ratio = result.ratio(base)
+        return ratio >= at_least, f"{ratio:.2f}×"
+
+    return measure
+
+
+def _all(*measures: Callable[[Lookup], tuple[bool, str] | None]) -> Callable[[Lookup], tuple[bool, str] | None]:
+    def measure(get: Lookup) -> tuple[bool, str] | None:
+        found = [m(get) for m in measures]
+        if any(f is None for f in found):
+            return None
+        return all(ok for ok, _ in found), ", ".join(text for _, text in found)  # type: ignore[misc]
+
+    return measure
+
+
+def _at_most(scenario: str, case: str, limit: float, unit: str) -> Callable[[Lookup], tuple[bool, str] | None]:
+    def measure(get: Lookup) -> tuple[bool, str] | None:
+        result = get(scenario, case)
+        if result is None or not result.samples:
+            return None
+        return result.median <= limit, f"{fmt(result.median)} {unit}"
+
+    return measure
+
+
+def _memory(get: Lookup) -> tuple[bool, str] | None:
+    """At most 20 KB per idle node at every count, and linear: each count within 25% of the largest."""
+    per_node = {}
+    for count in (100, 1_000, 10_000):
+        result = get(f"f. memory, {count:,} nodes", "actors")
+        if result is None or not result.samples:
+            return None
+        per_node[count] = result.median
+    largest = per_node[10_000]
+    linear = all(abs(v - largest) <= 0.25 * largest for v in per_node.values())
+    small = all(v <= 20 * KB for v in per_node.values())
+    figures = " / ".join(f"{v:.1f}" for v in per_node.values())
+    return small and linear, f"{figures} KiB/node at 100 / 1,000 / 10,000{'' if linear else ', not linear'}"
+
+
+SEQ, CONC = "c. service sequential", "c. service 100 callers"
+TARGETS = (
+    Target("a", "one-way ≥ 1.5× the bare queue", _ratio("a. one-way", "actors", "a. one-way", "asyncio.Queue", 1.5)),
+    Target("a", "one-way ≥ 20× rclpy EventsExecutor",
+           _ratio("a. one-way", "actors", "a. one-way", "rclpy EventsExecutor", 20)),
+    Target("b", "fan-out 1→10 ≥ 2× the bare queue's one-way rate",
+           _ratio("b. fan-out 1→10", "actors", "a. one-way", "asyncio.Queue", 2)),
+    Target("c", "round trip ≤ 2× the bare future's (sequential, 100 callers)",
+           _all(_ratio(SEQ, "actors", SEQ, "future+Queue", 0.5), _ratio(CONC, "actors", CONC, "future+Queue", 0.5))),
+    Target("c", "round trip ≤ 1/5 of rclpy EventsExecutor's (sequential, 100 callers)",
+           _all(_ratio(SEQ, "actors", SEQ, "rclpy EventsExecutor", 5),
+                _ratio(CONC, "actors", CONC, "rclpy EventsExecutor", 5))),
+    Target("d", "1 kHz timer p99 lateness ≤ 1 ms (idle machine)",
+           _at_most("d. timer 1 kHz p99", "actors", 1000, "µs")),
+    Target("e", "graph.toml to first message ≤ 0.5 s (less the talker's 0.5 s first period)",
+           _at_most("e. first message, graph.toml", "actors, less the first period", 0.5, "s")),
+    Target("e", "1,000 nodes spawned ≤ 1 s", _at_most("e. spawn 1,000 nodes", "actors", 1.0, "s")),
+    Target("f", "≤ 20 KB per idle node, linear", _memory),
+)
+
+
+def check(results: Sequence[Result], scenarios: str = "abcdefgh") -> str:
+    """A Markdown table of the targets of ``scenarios`` (letters): what was measured, whether it is met."""
+    by_case = {(r.scenario, r.case): r for r in results}
+    lines = ["| scenario | target | measured | met |", "|---|---|---|---|"]
+    for target in (t for t in TARGETS if t.name in scenarios):
+        found = target.measure(lambda scenario, case: by_case.get((scenario, case)))
+        measured, verdict = ("not measured", "—") if found is None else (found[1], "met" if found[0] else "**not met**")
+        lines.append(f"| {target.name} | {target.goal} | {measured} | {verdict} |")
+    return "\n".join(lines)

@@ -1,0 +1,43 @@
+"""Throughput with 1, 10 and 100 topics active at once, one publisher and one subscriber each.
+
+Run: ``python -m bench.topics_scale [--quick]``.  Messages go round-robin over
+the topics, 100 between yields to the loop as in ``bench.throughput``, so with
+100 topics each mailbox wakes for a single message: this measures how much of
+the batching survives when traffic is spread thin.  Beside bare asyncio.Queues
+fed the same way.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from bench.harness import Result, repeat, table
+from bench.throughput import actors_rate, queue_rate
+
+__all__ = ["run"]
+
+TOPICS = (1, 10, 100)
+
+
+def run(quick: bool = False) -> list[Result]:
+    """Total deliveries/s at each topic count, actors beside the queues, 5 runs each."""
+    n = 20_000 if quick else 200_000
+    results = []
+    for topics in TOPICS:
+        scenario = f"h. {topics} topic{'s' if topics > 1 else ''} at once"
+        results.append(
+            Result(scenario, "actors", "deliveries/s", repeat(lambda: actors_rate(n, 1, topics), 5),
+                   baselines={"queue": "asyncio.Queue"})
+        )
+        results.append(Result(scenario, "asyncio.Queue", "deliveries/s", repeat(lambda: queue_rate(n, 1, topics), 5)))
+    return results
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="fewer messages")
+    print(table(run(parser.parse_args().quick)))
+
+
+if __name__ == "__main__":
+    main()
