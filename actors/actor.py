@@ -2,9 +2,14 @@
 
 Subscriptions, timers and services are *entities*.  An entity with work to do
 is appended to its node's ready queue (:meth:`Actor.schedule`), which wakes the
-node's task if it sleeps; the task then runs each ready entity's ``_run()``
-coroutine in turn.  Because one task runs them all, a node's callbacks never
-overlap and node code needs no locks.
+node's task if it sleeps; the task then calls each ready entity's ``_run()`` in
+turn.  Because one task runs them all, a node's callbacks never overlap and
+node code needs no locks.
+
+``_run()`` returns None when it has finished, or an awaitable that the task
+awaits to finish the work: an entity whose callbacks are plain functions runs
+them without a coroutine of its own (a measurable share of each wake-up), and
+hands over to a coroutine only when a callback turns out to be ``async``.
 
 The wake-up is a bare asyncio future, set at most once per batch: this is the
 hottest path in the runtime and anyio's primitives (or a memory object stream)
@@ -17,6 +22,7 @@ from __future__ import annotations
 
 import asyncio
 from collections import deque
+from collections.abc import Awaitable
 from typing import Any, Protocol
 
 __all__ = ["Actor", "Entity", "CallbackFailed", "OneShot"]
@@ -25,7 +31,7 @@ __all__ = ["Actor", "Entity", "CallbackFailed", "OneShot"]
 class Entity(Protocol):
     """Something a node runs: a subscription, a timer, a service."""
 
-    async def _run(self) -> None: ...
+    def _run(self) -> Awaitable[None] | None: ...
 
 
 class CallbackFailed(Exception):
@@ -82,7 +88,9 @@ class Actor:
                     entity = ready.popleft()
                     self.current = entity
                     self.busy_since = loop.time()
-                    await entity._run()
+                    pending = entity._run()
+                    if pending is not None:
+                        await pending
                     if not self._running:
                         return
                 self.current = None

@@ -9,7 +9,7 @@ first multiple of the period after the callback returns.
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Callable
+from collections.abc import Awaitable, Callable
 from inspect import isawaitable
 from typing import TYPE_CHECKING, Any
 
@@ -50,23 +50,36 @@ class Timer:
         self._handle = None
         self.node.actor.schedule(self)
 
-    async def _run(self) -> None:
+    def _run(self) -> Awaitable[None] | None:
         if self._canceled:
-            return
+            return None
         self.ticks += 1
         try:
             result = self.callback()
             if result is not None and isawaitable(result):
-                await result
+                return self._run_async(result)
+        except Exception as exc:
+            self._rearm()
+            raise CallbackFailed(self, None, exc) from exc
+        self._rearm()
+        return None
+
+    async def _run_async(self, pending: Awaitable[Any]) -> None:
+        # An async callback: the next deadline is counted from when it returns.
+        try:
+            await pending
         except Exception as exc:
             raise CallbackFailed(self, None, exc) from exc
         finally:
-            if not self._canceled and self._handle is None:
-                # Next deadline: the first multiple of the period after now.  The
-                # max() guards float rounding when now sits exactly on a deadline.
-                elapsed = self._loop.time() - self._start
-                self._k = max(self._k + 1, int(elapsed / self.period) + 1)
-                self._arm()
+            self._rearm()
+
+    def _rearm(self) -> None:
+        if not self._canceled and self._handle is None:
+            # Next deadline: the first multiple of the period after now.  The
+            # max() guards float rounding when now sits exactly on a deadline.
+            elapsed = self._loop.time() - self._start
+            self._k = max(self._k + 1, int(elapsed / self.period) + 1)
+            self._arm()
 
     @property
     def timer_period_ns(self) -> int:

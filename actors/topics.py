@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import sys
 from collections import deque
-from collections.abc import Callable
+from collections.abc import Awaitable, Callable
 from enum import IntEnum
 from inspect import isawaitable
 from typing import TYPE_CHECKING, Any
@@ -146,7 +146,15 @@ class Publisher:
         if self._history is not None:
             self._history.append(msg)
         for sub in self._subs:
-            sub._push(msg)
+            # Subscription._push, inlined: this loop is the hottest path of the runtime.
+            queue = sub._queue
+            if len(queue) >= sub._limit:
+                queue.popleft()
+                sub.dropped += 1
+            queue.append(msg)
+            if not sub._scheduled:
+                sub._scheduled = True
+                sub._actor.schedule(sub)
 
     def get_subscription_count(self) -> int:
         """How many subscriptions this publisher feeds."""
@@ -216,13 +224,28 @@ class Subscription:
             self._scheduled = True
             self._actor.schedule(self)
 
-    async def _run(self) -> None:
+    def _run(self) -> Awaitable[None] | None:
         queue = self._queue
         callback = self.callback
-        msg = None
+        # Only what is queued now: messages published meanwhile wait for the next round.
+        for left in range(len(queue) - 1, -1, -1):
+            msg = queue.popleft()
+            try:
+                result = callback(msg)
+            except Exception as exc:
+                self._reschedule()
+                raise CallbackFailed(self, msg, exc) from exc
+            if result is not None and isawaitable(result):
+                return self._run_async(result, msg, left)
+        self._reschedule()
+        return None
+
+    async def _run_async(self, pending: Awaitable[Any], msg: Any, left: int) -> None:
+        # An async callback: await it, then the ``left`` messages still due this round.
         try:
-            # Only what is queued now: messages published meanwhile wait for the next round.
-            for _ in range(len(queue)):
+            await pending
+            queue, callback = self._queue, self.callback
+            for _ in range(left):
                 msg = queue.popleft()
                 result = callback(msg)
                 if result is not None and isawaitable(result):
