@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import asyncio
 from collections import deque
-from collections.abc import Callable
+from collections.abc import Awaitable, Callable
 from inspect import isawaitable
 from typing import TYPE_CHECKING, Any
 
@@ -62,16 +62,20 @@ class Service:
         self.srv_type = srv_type
         self.handler = handler
         self.handled = 0
-        self._queue: deque[_Call] = deque()
+        # Made on the first call: most services (every node's parameter services) are never
+        # called, and an empty deque costs 760 bytes.
+        self._queue: deque[_Call] | None = None
         self._scheduled = False
         self._actor = node.actor
 
     @property
     def queued(self) -> int:
         """Requests waiting to be handled."""
-        return len(self._queue)
+        return len(self._queue) if self._queue is not None else 0
 
     def _push(self, call: _Call) -> None:
+        if self._queue is None:
+            self._queue = deque()
         self._queue.append(call)
         if not self._scheduled:
             self._scheduled = True
@@ -85,35 +89,61 @@ class Service:
             self._scheduled = True
             self._actor.schedule(self)
 
-    async def _run(self) -> None:
+    def _run(self) -> Awaitable[None] | None:
         queue = self._queue
+        assert queue is not None  # scheduled only by _push or _adopt, with calls queued
         response_type = self.srv_type.Response
-        for _ in range(len(queue)):
+        for left in range(len(queue) - 1, -1, -1):
             call = queue.popleft()
             if call.future.done():
                 continue  # the caller gave up
             try:
                 response = self.handler(call.request, response_type())
                 if type(response) is not response_type and isawaitable(response):
-                    response = await response
-                if type(response) is not response_type:
-                    raise TypeError(
-                        f"handler returned {type_name(type(response))}, "
-                        f"expected {type_name(response_type)}"
-                    )
+                    return self._run_async(response, call, left)
+                self._answer(call, response)
             except Exception as exc:
-                self.node.logger.error(
-                    f"service handler of {self.service_name} raised {exc!r}", exc_info=exc
-                )
-                if not call.future.done():
-                    call.future.set_exception(
-                        ServiceError(f"service {self.service_name} on {self.node.fqn} raised {exc!r}")
-                    )
+                self._fail(call, exc)
+        self._round_done()
+        return None
+
+    async def _run_async(self, pending: Awaitable[Any], call: _Call, left: int) -> None:
+        # An async handler: await its response, then serve the ``left`` calls still due this round.
+        try:
+            self._answer(call, await pending)
+        except Exception as exc:
+            self._fail(call, exc)
+        response_type = self.srv_type.Response
+        queue = self._queue
+        assert queue is not None
+        for _ in range(left):
+            call = queue.popleft()
+            if call.future.done():
                 continue
-            self.handled += 1
-            if not call.future.done():
-                call.future.set_result(response)
-        if queue:
+            try:
+                response = self.handler(call.request, response_type())
+                if type(response) is not response_type and isawaitable(response):
+                    response = await response
+                self._answer(call, response)
+            except Exception as exc:
+                self._fail(call, exc)
+        self._round_done()
+
+    def _answer(self, call: _Call, response: Any) -> None:
+        response_type = self.srv_type.Response
+        if type(response) is not response_type:
+            raise TypeError(f"handler returned {type_name(type(response))}, expected {type_name(response_type)}")
+        self.handled += 1
+        if not call.future.done():
+            call.future.set_result(response)
+
+    def _fail(self, call: _Call, exc: Exception) -> None:
+        self.node.logger.error(f"service handler of {self.service_name} raised {exc!r}", exc_info=exc)
+        if not call.future.done():
+            call.future.set_exception(ServiceError(f"service {self.service_name} on {self.node.fqn} raised {exc!r}"))
+
+    def _round_done(self) -> None:
+        if self._queue:
             self._actor.schedule(self)
         else:
             self._scheduled = False
