@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import statistics
@@ -15,7 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, TypeVar
 
-__all__ = ["ROOT", "Result", "repeat", "fmt", "table", "child_env", "run_child", "time_to_line"]
+__all__ = ["ROOT", "Result", "repeat", "fmt", "table", "standalone", "child_env", "run_child", "time_to_line"]
 
 ROOT = Path(__file__).resolve().parent.parent
 T = TypeVar("T")
@@ -88,6 +89,16 @@ def table(results: Sequence[Result]) -> str:
         extra = "; ".join(ratios + ([r.note] if r.note else []))
         lines.append(f"| {r.scenario} | {r.case} | {median} | {span} | {r.unit} | {extra} |")
     return "\n".join(lines)
+
+
+def standalone(run: Callable[[bool], list[Result]], doc: str, quick_help: str) -> None:
+    """``python -m bench.<scenario> [--quick]``: run one scenario module and print its table.
+
+    ``doc`` is the module's docstring: its first line describes the command.
+    """
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help=quick_help)
+    print(table(run(parser.parse_args().quick)))
 
 
 def child_env(extra: Mapping[str, str] | None = None) -> dict[str, str]:

@@ -29,7 +29,7 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from bench.harness import Result, repeat, run_child, time_to_line
+from bench.harness import Result, child_env, repeat, run_child, time_to_line
 
 __all__ = ["EXECUTORS", "INSTALL_HINT", "baselines", "unavailable", "measured", "first_message", "nodes"]
 
@@ -49,8 +49,6 @@ def baselines(executors: Sequence[str] = tuple(EXECUTORS)) -> dict[str, str]:
 @functools.cache
 def ros_env() -> dict[str, str]:
     """The environment an rclpy child needs (see the module docstring)."""
-    from bench.harness import child_env
-
     env = child_env(
         {
             "ROS_LOG_DIR": tempfile.mkdtemp(prefix="bench-ros-log-"),
@@ -148,8 +146,14 @@ def _executor(kind: str) -> Any:
     return SingleThreadedExecutor() if kind == "single" else EventsExecutor()
 
 
-def _spin_until(executor: Any, done: Callable[[], bool]) -> None:
+def _spin_until(
+    executor: Any, done: Callable[[], bool], what: str | Callable[[], str] = "", timeout: float = 60
+) -> None:
+    """Spin until ``done()``; RuntimeError naming ``what`` after ``timeout`` seconds, not a hang."""
+    deadline = time.monotonic() + timeout
     while not done():
+        if time.monotonic() > deadline:
+            raise RuntimeError(f"no progress for {timeout:.0f} s: {what() if callable(what) else what}")
         executor.spin_once(timeout_sec=0.1)
 
 
@@ -180,9 +184,9 @@ def _one_way_rate(kind: str, n: int, subscribers: int) -> float:
     for sent in range(BATCH, n + 1, BATCH):
         for _ in range(BATCH):
             pub.publish(msg)
-        # Keep at most half a queue in flight: a reliable KEEP_LAST reader would drop beyond it.
-        _spin_until(executor, lambda: (sent * subscribers - received) <= DEPTH // 2 * subscribers)
-    _spin_until(executor, lambda: received >= total)
+        # Each batch delivered before the next: with 500 messages in flight the
+        # EventsExecutor lost a batch (10 subscribers) and the run never ended.
+        _spin_until(executor, lambda: received >= sent * subscribers, lambda: f"{received} of {total} delivered")
     elapsed = time.perf_counter() - start
     executor.shutdown()
     for node in [talker, *listeners]:
@@ -245,7 +249,7 @@ def _first_message(kind: str) -> None:
     executor.add_node(talker)
     executor.add_node(listener)
     # spin_once in a loop: EventsExecutor.spin() fires no timers in the Kilted wheels (9.1.2).
-    _spin_until(executor, lambda: False)
+    _spin_until(executor, lambda: False, timeout=float("inf"))
 
 
 def _rss() -> int:

@@ -9,13 +9,12 @@ baseline" (higher is better; 0.5× means twice the baseline's time).
 
 from __future__ import annotations
 
-import argparse
 import asyncio
 import time
 
 from actors import Node, Runtime
 from bench import ros
-from bench.harness import Result, repeat, table
+from bench.harness import Result, repeat, standalone
 from interfaces.std_srvs.srv import SetBool
 
 CONCURRENT = 100
@@ -115,11 +114,5 @@ def run(quick: bool = False) -> list[Result]:
     return results
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="fewer calls")
-    print(table(run(parser.parse_args().quick)))
-
-
 if __name__ == "__main__":
-    main()
+    standalone(run, __doc__, "fewer calls")

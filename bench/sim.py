@@ -10,14 +10,13 @@ Targets for the nodes: >= 200x with 1 robot, >= 10x with 20.
 
 from __future__ import annotations
 
-import argparse
 import math
 import time
 
 import anyio
 
 from actors import Runtime, VirtualTimeLoop
-from bench.harness import Result, repeat, table
+from bench.harness import Result, repeat, standalone
 from nodes.constant_control import ConstantControl
 from world.robot import TurtleBot
 from world.sim import World
@@ -87,11 +86,5 @@ def run(quick: bool = False) -> list[Result]:
     return results
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(prog="python -m bench.sim", description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="10 simulated seconds per run instead of 30")
-    print(table(run(parser.parse_args().quick)))
-
-
 if __name__ == "__main__":
-    main()
+    standalone(run, __doc__, "10 simulated seconds per run instead of 30")

@@ -13,13 +13,12 @@ node's task has started.
 
 from __future__ import annotations
 
-import argparse
 import asyncio
 import time
 
 from actors import Runtime
 from bench import ros
-from bench.harness import Result, repeat, table, time_to_line
+from bench.harness import Result, repeat, standalone, time_to_line
 from bench.memory import IdleNode, rclpy_nodes, ros_executors, ros_note
 
 __all__ = ["run", "first_message", "spawn_time"]
@@ -74,11 +73,5 @@ def run(quick: bool = False) -> list[Result]:
     return results
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="rclpy at 100 nodes only")
-    print(table(run(parser.parse_args().quick)))
-
-
 if __name__ == "__main__":
-    main()
+    standalone(run, __doc__, "rclpy at 100 nodes only")

@@ -8,13 +8,12 @@ over several topics, for ``bench.topics_scale``.
 
 from __future__ import annotations
 
-import argparse
 import asyncio
 import time
 
 from actors import Node, QoSProfile, Runtime
 from bench import ros
-from bench.harness import Result, repeat, table
+from bench.harness import Result, repeat, standalone
 from interfaces.std_msgs.msg import String
 
 BATCH = 100  # messages published between yields to the loop
@@ -139,11 +138,5 @@ def run(quick: bool = False, *, fan_out: tuple[int, ...] = (1, 10)) -> list[Resu
     return results
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="fewer messages")
-    print(table(run(parser.parse_args().quick)))
-
-
 if __name__ == "__main__":
-    main()
+    standalone(run, __doc__, "fewer messages")

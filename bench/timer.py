@@ -17,7 +17,6 @@ p99 with its min–max.
 
 from __future__ import annotations
 
-import argparse
 import asyncio
 import selectors
 import statistics
@@ -26,7 +25,7 @@ from collections.abc import Callable, Coroutine
 from typing import Any
 
 from actors import Node, Runtime
-from bench.harness import Result, repeat, table
+from bench.harness import Result, repeat, standalone
 
 __all__ = ["run", "actors_ticks", "loop_ticks", "LOOPS"]
 
@@ -112,11 +111,5 @@ def run(quick: bool = False) -> list[Result]:
     return results
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="0.5 s per run instead of 5 s")
-    print(table(run(parser.parse_args().quick)))
-
-
 if __name__ == "__main__":
-    main()
+    standalone(run, __doc__, "0.5 s per run instead of 5 s")

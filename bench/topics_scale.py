@@ -9,9 +9,8 @@ fed the same way.
 
 from __future__ import annotations
 
-import argparse
 
-from bench.harness import Result, repeat, table
+from bench.harness import Result, repeat, standalone
 from bench.throughput import actors_rate, queue_rate
 
 __all__ = ["run"]
@@ -33,11 +32,5 @@ def run(quick: bool = False) -> list[Result]:
     return results
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="fewer messages")
-    print(table(run(parser.parse_args().quick)))
-
-
 if __name__ == "__main__":
-    main()
+    standalone(run, __doc__, "fewer messages")
