@@ -25,10 +25,12 @@ PACKAGES = ("actors", "anyio", "msgspec", "pymunk", "numpy", "ros-rclpy", "ros-r
 
 
 def _proc_field(path: str, key: str) -> str:
+    """The value of the first ``key: value`` line of a /proc file, or "unknown"."""
     try:
         for line in Path(path).read_text().splitlines():
-            if line.startswith(key):
-                return line.split(":", 1)[1].strip()
+            name, _, value = line.partition(":")
+            if name.strip() == key:
+                return value.strip()
     except OSError:
         pass
     return "unknown"
@@ -39,14 +41,13 @@ def machine() -> str:
     memory = _proc_field("/proc/meminfo", "MemTotal")
     if memory.endswith(" kB"):
         memory = f"{int(memory.split()[0]) / 1024**2:.1f} GiB"
-    os_name = _proc_field("/etc/os-release", "PRETTY_NAME").replace("PRETTY_NAME=", "")
     try:
-        os_name = platform.freedesktop_os_release()["PRETTY_NAME"]
+        os_name = platform.freedesktop_os_release().get("PRETTY_NAME", platform.system())
     except OSError:
-        pass
+        os_name = platform.system()
     return (
         f"{_proc_field('/proc/cpuinfo', 'model name')}, {os.cpu_count()} cores, {memory} RAM; "
-        f"{os_name}, Linux {platform.release()}"
+        f"{os_name}, kernel {platform.release()}"
     )
 
 
