@@ -23,7 +23,7 @@ from typing import Any
 
 from actors.errors import VirtualTimeDeadlock
 
-__all__ = ["Time", "Duration", "Clock", "Rate", "VirtualTimeLoop", "is_virtual"]
+__all__ = ["Time", "Duration", "Clock", "Rate", "VirtualTimeLoop", "is_virtual", "precise_loop"]
 
 _NS = 1_000_000_000
 
@@ -154,6 +154,19 @@ class Rate:
         now = self._loop.time()
         self._k = max(self._k + 1, int((now - self._start) / self._period) + 1)
         await asyncio.sleep(self._start + self._k * self._period - now)
+
+
+def precise_loop() -> asyncio.AbstractEventLoop:
+    """A wall-clock asyncio loop whose waits have microsecond precision.
+
+    asyncio's default loop on Linux waits in ``epoll_wait``, which takes whole
+    milliseconds and rounds every wait up, so a 1 kHz timer lands up to 1 ms
+    late (p99 1.16 ms in BENCHMARKS.md).  ``select()`` takes microseconds (p99
+    0.31 ms).  Its limits (file descriptors below 1024, a scan per wait) do not
+    matter for a graph, which watches a handful: the control socket and its
+    clients.  ``python -m actors.run`` uses this loop on the wall clock.
+    """
+    return asyncio.SelectorEventLoop(selectors.SelectSelector())
 
 
 class _JumpingSelector(selectors.DefaultSelector):

@@ -16,7 +16,7 @@ from typing import Any
 
 import anyio
 
-from actors.clock import VirtualTimeLoop
+from actors.clock import VirtualTimeLoop, precise_loop
 from actors.errors import ActorsError, Escalation, GraphFileError
 from actors.graph import GraphFile, NodeEntry, load_graph
 from actors.log import LEVELS, configure_console
@@ -116,7 +116,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     clock = args.clock or settings.clock
     duration = settings.duration if args.duration is None else args.duration
     configure_console(LEVELS[args.log_level or settings.log_level])
-    options: dict[str, Any] = {"loop_factory": VirtualTimeLoop} if clock == "virtual" else {}
+    options: dict[str, Any] = {"loop_factory": VirtualTimeLoop if clock == "virtual" else precise_loop}
     try:
         anyio.run(
             lambda: run_graph(graph, classes, name=Path(args.graph).stem, duration=duration),

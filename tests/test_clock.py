@@ -89,3 +89,28 @@ def test_time_and_duration_arithmetic():
     assert t - Time(seconds=1) == Duration(nanoseconds=500_000_000)
     msg = t.to_msg()
     assert (msg.sec, msg.nanosec) == (1, 500_000_000)
+
+
+def test_precise_loop_waits_in_select():
+    import selectors
+
+    from actors.clock import precise_loop
+
+    loop = precise_loop()
+    try:
+        assert isinstance(loop._selector, selectors.SelectSelector)  # microsecond waits, not epoll's ms
+    finally:
+        loop.close()
+
+
+def test_actors_run_uses_the_precise_loop_on_the_wall_clock(monkeypatch):
+    import actors.run
+    from actors.clock import precise_loop
+
+    seen = {}
+    monkeypatch.setattr(actors.run.anyio, "run", lambda fn, backend_options: seen.update(backend_options))
+    monkeypatch.setattr(actors.run, "configure_console", lambda level: None)
+    assert actors.run.main(["graph.toml", "--clock", "wall"]) == 0
+    assert seen["loop_factory"] is precise_loop
+    assert actors.run.main(["graph.toml", "--clock", "virtual"]) == 0
+    assert seen["loop_factory"] is VirtualTimeLoop
