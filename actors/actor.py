@@ -25,7 +25,7 @@ from collections import deque
 from collections.abc import Awaitable
 from typing import Any, Protocol
 
-__all__ = ["Actor", "Entity", "CallbackFailed", "OneShot"]
+__all__ = ["Actor", "Entity", "CallbackFailed", "Mailbox", "OneShot"]
 
 
 class Entity(Protocol):
@@ -102,6 +102,43 @@ class Actor:
         finally:
             self._waiter = None
             self.current = None
+
+
+class Mailbox:
+    """An entity with a queue (a subscription, a service): on its actor's ready queue at most once.
+
+    Subclasses fill ``_queue`` and call :meth:`_wake`; their ``_run`` drains
+    what was queued when the round began and ends with :meth:`_round_done`.
+    """
+
+    __slots__ = ("_queue", "_scheduled", "_actor")
+
+    def __init__(self, actor: Actor) -> None:
+        self._queue: Any = None
+        self._scheduled = False
+        self._actor = actor
+
+    @property
+    def queued(self) -> int:
+        """Items waiting in the queue."""
+        return len(self._queue) if self._queue is not None else 0
+
+    def _wake(self) -> None:
+        if not self._scheduled:
+            self._scheduled = True
+            self._actor.schedule(self)
+
+    def _adopt(self, old: Mailbox) -> None:
+        # A restarted node takes over its predecessor's queue: nothing queued is lost.
+        self._queue = old._queue
+        if self._queue:
+            self._wake()
+
+    def _round_done(self) -> None:
+        if self._queue:
+            self._actor.schedule(self)  # still scheduled: more arrived during the round
+        else:
+            self._scheduled = False
 
 
 class OneShot:

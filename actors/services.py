@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING, Any
 
 import anyio
 
+from actors.actor import Mailbox
 from actors.errors import ServiceError
 from actors.topics import type_name
 
@@ -48,10 +49,10 @@ def _check_srv_type(srv_type: Any, where: str) -> None:
         raise TypeError(f"{where} needs a service type (with .Request and .Response), got {srv_type!r}")
 
 
-class Service:
+class Service(Mailbox):
     """A service server.  Create with ``Node.create_service``."""
 
-    __slots__ = ("node", "service_name", "srv_type", "handler", "handled", "_queue", "_scheduled", "_actor")
+    __slots__ = ("node", "service_name", "srv_type", "handler", "handled")
 
     def __init__(self, node: NodeCore, service_name: str, srv_type: type, handler: Callable[..., Any]) -> None:
         _check_srv_type(srv_type, "create_service")
@@ -62,32 +63,21 @@ class Service:
         self.srv_type = srv_type
         self.handler = handler
         self.handled = 0
-        # Made on the first call: most services (every node's parameter services) are never
-        # called, and an empty deque costs 760 bytes.
-        self._queue: deque[_Call] | None = None
-        self._scheduled = False
-        self._actor = node.actor
-
-    @property
-    def queued(self) -> int:
-        """Requests waiting to be handled."""
-        return len(self._queue) if self._queue is not None else 0
+        # The queue is made on the first call: most services (every node's parameter
+        # services) are never called, and an empty deque costs 760 bytes.
+        super().__init__(node.actor)
 
     def _push(self, call: _Call) -> None:
         if self._queue is None:
             self._queue = deque()
         self._queue.append(call)
-        if not self._scheduled:
-            self._scheduled = True
-            self._actor.schedule(self)
+        self._wake()
 
-    def _adopt(self, old: Service) -> None:
+    def _adopt(self, old: Mailbox) -> None:
         # A restarted server answers what was queued for its predecessor.
-        self._queue = old._queue
+        assert isinstance(old, Service)
         self.handled = old.handled
-        if self._queue:
-            self._scheduled = True
-            self._actor.schedule(self)
+        super()._adopt(old)
 
     def _run(self) -> Awaitable[None] | None:
         queue = self._queue
@@ -141,12 +131,6 @@ class Service:
         self.node.logger.error(f"service handler of {self.service_name} raised {exc!r}", exc_info=exc)
         if not call.future.done():
             call.future.set_exception(ServiceError(f"service {self.service_name} on {self.node.fqn} raised {exc!r}"))
-
-    def _round_done(self) -> None:
-        if self._queue:
-            self._actor.schedule(self)
-        else:
-            self._scheduled = False
 
     def destroy(self) -> None:
         """Stop serving; queued calls fail with ServiceError."""

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Any
 
 import msgspec
 
-from actors.actor import CallbackFailed
+from actors.actor import CallbackFailed, Mailbox
 from actors.errors import TopicTypeError
 
 if TYPE_CHECKING:
@@ -165,7 +165,7 @@ class Publisher:
         self.node.destroy_publisher(self)
 
 
-class Subscription:
+class Subscription(Mailbox):
     """A subscription and its mailbox.  Create with ``Node.create_subscription``."""
 
     __slots__ = (
@@ -175,10 +175,7 @@ class Subscription:
         "qos",
         "node",
         "dropped",
-        "_queue",
         "_limit",
-        "_scheduled",
-        "_actor",
         "__weakref__",
     )
 
@@ -196,15 +193,9 @@ class Subscription:
         self.callback = callback
         self.qos = qos
         self.dropped = 0
+        super().__init__(node.actor)
         self._queue: deque[Any] = deque()
         self._limit = qos.depth if qos.history == HistoryPolicy.KEEP_LAST else sys.maxsize
-        self._scheduled = False
-        self._actor = node.actor
-
-    @property
-    def queued(self) -> int:
-        """Messages waiting in the mailbox."""
-        return len(self._queue)
 
     def _push(self, msg: Any) -> None:
         queue = self._queue
@@ -212,17 +203,12 @@ class Subscription:
             queue.popleft()
             self.dropped += 1
         queue.append(msg)
-        if not self._scheduled:
-            self._scheduled = True
-            self._actor.schedule(self)
+        self._wake()
 
-    def _adopt(self, old: Subscription) -> None:
-        # A restarted node takes over its predecessor's mailbox: nothing queued is lost.
-        self._queue = old._queue
+    def _adopt(self, old: Mailbox) -> None:
+        assert isinstance(old, Subscription)
         self.dropped = old.dropped
-        if self._queue:
-            self._scheduled = True
-            self._actor.schedule(self)
+        super()._adopt(old)
 
     def _run(self) -> Awaitable[None] | None:
         queue = self._queue
@@ -233,11 +219,11 @@ class Subscription:
             try:
                 result = callback(msg)
             except Exception as exc:
-                self._reschedule()
+                self._round_done()
                 raise CallbackFailed(self, msg, exc) from exc
             if result is not None and isawaitable(result):
                 return self._run_async(result, msg, left)
-        self._reschedule()
+        self._round_done()
         return None
 
     async def _run_async(self, pending: Awaitable[Any], msg: Any, left: int) -> None:
@@ -251,15 +237,9 @@ class Subscription:
                 if result is not None and isawaitable(result):
                     await result
         except Exception as exc:
-            self._reschedule()
+            self._round_done()
             raise CallbackFailed(self, msg, exc) from exc
-        self._reschedule()
-
-    def _reschedule(self) -> None:
-        if self._queue:
-            self._actor.schedule(self)
-        else:
-            self._scheduled = False
+        self._round_done()
 
     def destroy(self) -> None:
         """Stop receiving; the topic forgets this subscription."""
