@@ -211,6 +211,14 @@ class NodeCore:
         self.runtime._unregister_node(self)
         return kept
 
+    def abandon(self) -> dict[tuple[str, str], list[Any]]:
+        """Give up a half-built instance: its mailboxes and what it did not adopt, for the next try."""
+        kept = self.orphan()
+        for key, olds in self._inherited.items():
+            kept.setdefault(key, []).extend(olds)
+        self._inherited = {}
+        return kept
+
     def destroy(self) -> None:
         """Stop this instance and remove every entity it has.  Idempotent."""
         if self.destroyed:

@@ -164,7 +164,13 @@ class Runtime:
         child = Child(
             cls, name=name, namespace=namespace, params=params, remap=remap, restart=RestartType(restart)
         )
-        core = self.supervisor.start(child)
+        try:
+            core = self.supervisor.start(child)
+        except BaseException:
+            for olds in child.take_inheritance().values():  # no retry: nothing will adopt them
+                for entity in olds:
+                    entity.destroy()
+            raise
         self.supervisor.children.append(child)
         return core.node  # type: ignore[return-value]
 
@@ -190,6 +196,12 @@ class Runtime:
         token = _spawning.set(SpawnRequest(self, child))
         try:
             node = child.cls()
+        except BaseException:
+            # A constructor that raised half-way: unregister what it built, and keep its
+            # mailboxes (and those it inherited) for the next attempt.
+            for core in [c for c in self.nodes.values() if c.child is child]:
+                child.give_back(core.abandon())
+            raise
         finally:
             _spawning.reset(token)
         core = getattr(node, "_core", None)

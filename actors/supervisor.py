@@ -101,6 +101,11 @@ class Child:
         self._scope: anyio.CancelScope | None = None
         self._done: anyio.Event | None = None
 
+    def give_back(self, entities: dict[tuple[str, str], list[Any]]) -> None:
+        """Keep ``entities`` (a failed instance's) for the next instance to adopt."""
+        for key, olds in entities.items():
+            self._inheritance.setdefault(key, []).extend(olds)
+
     def take_inheritance(self) -> dict[tuple[str, str], list[Any]]:
         """The previous instance's entities, handed once to the new instance."""
         inherited, self._inheritance = self._inheritance, {}
@@ -267,7 +272,7 @@ class Supervisor:
                 await self._halt(child)
                 await self._shutdown_hooks(child.core, destroy=False)
             if child.core is not None and not child.core.destroyed:
-                child._inheritance = child.core.orphan()
+                child.give_back(child.core.orphan())
             child.state = "restarting"
         delay = min(self.policy.backoff * 2 ** (len(times) - 1), self.policy.max_backoff)
         if delay > 0:

@@ -170,3 +170,46 @@ async def test_shutdown_stops_nodes_in_reverse_order():
         for name in ("first", "second", "third"):
             rt.spawn(Named, name=name)
     assert order == ["third", "second", "first"]
+
+
+async def test_a_constructor_that_raises_half_way_leaves_nothing_behind():
+    class HalfBuilt(Node):
+        def __init__(self) -> None:
+            super().__init__("half_built")
+            self.create_subscription(Int64, "numbers", print, 10)
+            raise ValueError("not today")
+
+    async with Runtime() as rt:
+        with pytest.raises(ValueError, match="not today"):
+            rt.spawn(HalfBuilt)
+        assert rt.nodes == {}
+        assert not any(name.startswith("/half_built/") for name in rt.services.servers)
+        assert rt.graph.topic("/numbers") is None
+        rt.spawn(Member, name="half_built")  # the name is free again
+
+
+async def test_messages_survive_a_restart_whose_first_constructor_attempt_fails():
+    class Flaky(Node):
+        attempts = 0
+        heard: list[int] = []
+
+        def __init__(self) -> None:
+            super().__init__("flaky")
+            self.create_subscription(Int64, "numbers", self.on_number, 100)
+            Flaky.attempts += 1
+            if Flaky.attempts == 2:
+                raise RuntimeError("first restart fails")
+
+        def on_number(self, msg: Int64) -> None:
+            if msg.data == 3:
+                raise ValueError("poison")
+            Flaky.heard.append(msg.data)
+
+    async with Runtime(supervisor=SupervisorPolicy(intensity=5, backoff=0.5)) as rt:
+        rt.spawn(Flaky)
+        counter = rt.spawn(Counter)
+        await anyio.sleep(3.05)
+        counter.timer.cancel()
+        await anyio.sleep(3)
+    assert Flaky.attempts == 3
+    assert Flaky.heard == [n for n in range(30) if n != 3]
