@@ -23,7 +23,7 @@ from typing import Any
 
 from actors.errors import VirtualTimeDeadlock
 
-__all__ = ["Time", "Duration", "Clock", "Rate", "VirtualTimeLoop", "is_virtual", "precise_loop"]
+__all__ = ["Time", "Duration", "Clock", "Rate", "VirtualTimeLoop", "precise_loop"]
 
 _NS = 1_000_000_000
 
@@ -88,11 +88,6 @@ class Time(_Nanoseconds):
 
         sec, nanosec = self.seconds_nanoseconds()
         return TimeMsg(sec=sec, nanosec=nanosec)
-
-
-def is_virtual(loop: asyncio.AbstractEventLoop) -> bool:
-    """Whether ``loop`` runs on virtual time."""
-    return isinstance(loop, VirtualTimeLoop)
 
 
 class Clock:

@@ -114,3 +114,15 @@ def test_actors_run_uses_the_precise_loop_on_the_wall_clock(monkeypatch):
     assert seen["loop_factory"] is precise_loop
     assert actors.run.main(["graph.toml", "--clock", "virtual"]) == 0
     assert seen["loop_factory"] is VirtualTimeLoop
+
+
+@pytest.mark.virtual_time
+async def test_advance_moves_virtual_time_at_once():
+    loop = asyncio.get_running_loop()
+    due = loop.create_future()
+    loop.call_at(5.0, due.set_result, None)
+    loop.advance(10.0)
+    await due
+    assert loop.time() == 10.0  # without the advance, the loop would have jumped to 5.0
+    with pytest.raises(ValueError, match="backwards"):
+        loop.advance(-1)

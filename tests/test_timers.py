@@ -54,8 +54,9 @@ async def test_cancel_reset_and_is_canceled():
         node = rt.spawn(Ticker)
         await anyio.sleep(0.35)
         assert len(node.stamps) == 3
+        assert node.timer.time_until_next_call() == pytest.approx(0.05)
         node.timer.cancel()
-        assert node.timer.is_canceled()
+        assert node.timer.is_canceled() and node.timer.time_until_next_call() is None
         await anyio.sleep(1)
         assert len(node.stamps) == 3
         node.timer.reset()
