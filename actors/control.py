@@ -429,10 +429,10 @@ class _Session:
     # -- the operations ---------------------------------------------------------
 
     def _node(self, name: str) -> NodeDetail:
-        full = name if name.startswith("/") else "/" + name
-        core = self.runtime.nodes.get(full)
-        if core is None:
-            raise ControlError(f"unknown node {full}")
+        try:
+            core = self.runtime._find(name)
+        except LookupError:
+            raise ControlError(f"unknown node {name}") from None
         return NodeDetail(
             name=core.fqn,
             subscribers=_pairs((s.topic_name, s.msg_type) for s in core.subscriptions),
@@ -465,7 +465,8 @@ class _Session:
         # Best effort and volatile match every publisher; transient local when all
         # publishers keep history, so that a latched topic's last message shows up.
         pubs = topic.publishers
-        latched = bool(pubs) and all(
+        # (Not for `hz`, content=False: a replayed history would look like a burst.)
+        latched = request.content and bool(pubs) and all(
             p.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in pubs
         )
         qos = QoSProfile(
@@ -544,9 +545,10 @@ async def serve(
         )
         task_status.started(None)
         return
-    inode = os.stat(path).st_ino
-    server = ControlServer(runtime, path)
+    inode = -1  # the socket file is ours only once we know its inode
     try:
+        inode = os.stat(path).st_ino
+        server = ControlServer(runtime, path)
         listener = await anyio.abc.SocketListener.from_socket(sock)
         async with listener, anyio.create_task_group() as tg:
             if not runtime.clock.virtual:

@@ -272,8 +272,9 @@ class LagMonitor:
                     self.events.append(
                         LagEvent(stamp=clock.now_ns() / 1e9, lag=lag, node=node, callback=callback)
                     )
-                self._suspect = None
+                # Tick first: the watchdog must not pin the next stall on this one's suspect.
                 self._tick = now
+                self._suspect = None
         finally:
             self._stop.set()
 

@@ -12,13 +12,14 @@ import msgspec
 import pytest
 from anyio.streams.buffered import BufferedByteReceiveStream
 
-from actors import Node, Runtime
+from actors import DurabilityPolicy, Node, QoSProfile, Runtime
 from actors.cli._client import connect
 from actors.control import (
     MAX_FRAME,
     GetGraph,
     GetNode,
     GraphSnapshot,
+    NodeDetail,
     Publish,
     Reply,
     Subscribe,
@@ -195,6 +196,7 @@ async def test_the_client_finds_the_graph_and_sessions_clean_up_after_themselves
 async def test_errors_name_what_is_unknown(name):
     async with Runtime(name=name) as rt:
         rt.spawn(Talker)
+        rt.spawn(Talker, name="far", namespace="/robot1")
 
         def ask_all() -> list[str]:
             errors = []
@@ -205,6 +207,8 @@ async def test_errors_name_what_is_unknown(name):
                 Publish(topic="/x", type="nope_msgs/msg/Nope"),
             ]
             with connect(name) as conn:
+                # A unique plain name finds a namespaced node, as Runtime.node() does.
+                assert conn.request(GetNode(name="far"), NodeDetail).name == "/robot1/far"
                 for request in requests:
                     with pytest.raises(ControlError) as caught:
                         conn.request(request)
@@ -213,7 +217,7 @@ async def test_errors_name_what_is_unknown(name):
 
         errors = await anyio.to_thread.run_sync(ask_all)
     assert errors == [
-        "unknown node /ghost",
+        "unknown node ghost",
         "unknown topic /nowhere",
         "topic /chatter carries std_msgs/msg/String, not std_msgs/msg/Bool",
         "unknown interface type 'nope_msgs/msg/Nope'",
@@ -226,3 +230,24 @@ async def test_no_graph_and_an_unknown_graph_name_are_control_errors(tmp_path, m
         connect(None)
     with pytest.raises(ControlError, match="no running actors graph named 'ghost'"):
         connect("ghost")
+
+
+async def test_hz_does_not_replay_a_latched_topics_history(name):
+    latched = QoSProfile(depth=5, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+
+    class Latched(Node):
+        def __init__(self) -> None:
+            super().__init__("latched")
+            self.pub = self.create_publisher(String, "/latched", latched)
+
+    async with Runtime(name=name) as rt:
+        rt.spawn(Latched)
+
+        def subscribe(content: bool) -> DurabilityPolicy:
+            with connect(name) as conn:
+                conn.request(Subscribe(topic="/latched", content=content))
+                return rt.topics.topics["/latched"].subscriptions[-1].qos.durability
+
+        # echo shows a latched topic's last message; hz must not count that replay as a burst
+        assert await anyio.to_thread.run_sync(subscribe, True) is DurabilityPolicy.TRANSIENT_LOCAL
+        assert await anyio.to_thread.run_sync(subscribe, False) is DurabilityPolicy.VOLATILE

@@ -12,9 +12,10 @@ waits, so it needs no event loop.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import socket
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -102,12 +103,13 @@ class Connection:
         body = self._read(timeout)
         if body is None:
             raise ControlError(f"graph {self.name} did not answer within {timeout:g} s")
-        reply = decode_reply(body)
-        if not reply.ok:
-            raise ControlError(reply.error)
-        if result_type is Any:
-            return reply.result  # type: ignore[no-any-return]
-        return msgspec.convert(reply.result, result_type)
+        with self._readable():
+            reply = decode_reply(body)
+            if not reply.ok:
+                raise ControlError(reply.error)
+            if result_type is Any:
+                return reply.result  # type: ignore[no-any-return]
+            return msgspec.convert(reply.result, result_type)
 
     def graph(self) -> GraphSnapshot:
         """The graph as it is now."""
@@ -116,7 +118,21 @@ class Connection:
     def sample(self, timeout: float | None = None) -> Sample | None:
         """The next streamed sample; None if ``timeout`` seconds pass first (None: no limit)."""
         body = self._read(timeout)
-        return None if body is None else _sample_decoder.decode(body)
+        if body is None:
+            return None
+        with self._readable():
+            return _sample_decoder.decode(body)
+
+    @contextlib.contextmanager
+    def _readable(self) -> Iterator[None]:
+        """Turn a reply this command line cannot decode into one clear ControlError."""
+        try:
+            yield
+        except msgspec.MsgspecError as exc:
+            raise ControlError(
+                f"graph {self.name} sent a reply this command line cannot read ({exc}): "
+                f"do both run the same version of actors?"
+            ) from None
 
     def _read(self, timeout: float | None) -> bytes | None:
         """One frame body, or None on timeout; a partial frame stays buffered for the next call."""
@@ -137,6 +153,8 @@ class Connection:
                 chunk = self._sock.recv(1 << 16)
             except TimeoutError:
                 return None
+            except OSError as exc:
+                raise ControlError(f"lost the connection to graph {self.name}: {exc.strerror or exc}") from None
             if not chunk:
                 raise ControlError(f"graph {self.name} closed the connection (did it stop?)")
             buffer += chunk

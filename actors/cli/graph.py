@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from actors.cli._client import add_verb, graph_snapshot
+from actors.errors import ControlError
 
 if TYPE_CHECKING:
     from actors.control import GraphSnapshot
@@ -52,11 +53,14 @@ def write_graph(args: argparse.Namespace) -> int:
     output: Path = args.output or Path(f"{graph.name}.dot")
     image = output if output.suffix.lower() in _IMAGES else None
     dot_path = output.with_suffix(".dot") if image else output
-    dot_path.write_text(to_dot(graph, everything=args.all))
-    print(f"wrote {dot_path}")
-    if image is None:
-        return 0
-    problem = _draw(graph, args.all, dot_path, image)
+    try:
+        dot_path.write_text(to_dot(graph, everything=args.all))
+        print(f"wrote {dot_path}")
+        if image is None:
+            return 0
+        problem = _draw(graph, args.all, dot_path, image)
+    except OSError as exc:
+        raise ControlError(f"cannot write {exc.filename or output}: {exc.strerror or exc}") from None
     if problem is not None:
         print(f"actors: no image written: {problem}", file=sys.stderr)
         return 1
@@ -71,12 +75,15 @@ def _draw(graph: GraphSnapshot, everything: bool, dot_path: Path, image: Path) -
 
     kind = image.suffix[1:].lower()
     if shutil.which("dot"):
-        done = subprocess.run(
-            ["dot", f"-T{kind}", str(dot_path), "-o", str(image)],
-            capture_output=True,
-            text=True,
-            timeout=60,
-        )
+        try:
+            done = subprocess.run(
+                ["dot", f"-T{kind}", str(dot_path), "-o", str(image)],
+                capture_output=True,
+                text=True,
+                timeout=60,
+            )
+        except subprocess.TimeoutExpired:
+            return "dot did not finish within 60 s"
         return f"dot failed: {done.stderr.strip()}" if done.returncode else None
     if kind == "png" and _draw_png(graph, everything, image):
         return None
