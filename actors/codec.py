@@ -44,6 +44,8 @@ __all__ = [
     "ros_name",
     "to_builtins",
     "to_yaml",
+    "load_yaml",
+    "dump_yaml",
 ]
 
 T = TypeVar("T")
@@ -249,13 +251,10 @@ def from_yaml(text: str, type_: type[T] | str) -> T:
     not a YAML mapping, or as :func:`convert` does.
     """
     cls = _resolve(type_)
-    import yaml
-
     try:
-        obj = yaml.safe_load(text)
-    except yaml.YAMLError as exc:
-        problem = " ".join(str(getattr(exc, "problem", None) or exc).split())
-        raise _invalid(cls, f"invalid YAML: {problem}") from None
+        obj = load_yaml(text)
+    except ValueError as exc:
+        raise _invalid(cls, f"invalid YAML: {exc}") from None
     if obj is None:
         obj = {}
     if not isinstance(obj, dict):
@@ -270,11 +269,24 @@ def to_builtins(msg: Any) -> dict[str, Any]:
 
 def to_yaml(msg: Any) -> str:
     """``msg`` as block-style YAML, the shape ``ros2 topic echo`` prints (without its ``---``)."""
+    return dump_yaml(to_builtins(msg))
+
+
+def load_yaml(text: str) -> Any:
+    """The value of YAML (or JSON) ``text``; ValueError naming the problem in one line."""
     import yaml
 
-    return yaml.safe_dump(
-        to_builtins(msg), sort_keys=False, default_flow_style=False, allow_unicode=True
-    )
+    try:
+        return yaml.safe_load(text)
+    except yaml.YAMLError as exc:
+        raise ValueError(" ".join(str(getattr(exc, "problem", None) or exc).split())) from None
+
+
+def dump_yaml(data: Any) -> str:
+    """Plain data as block-style YAML, keys in their order, as ROS tools print it."""
+    import yaml
+
+    return yaml.safe_dump(data, sort_keys=False, default_flow_style=False, allow_unicode=True)
 
 
 @functools.cache

@@ -15,7 +15,7 @@ import argparse
 import contextlib
 import socket
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -38,6 +38,7 @@ __all__ = [
     "NO_GRAPH",
     "Connection",
     "add_verb",
+    "print_names",
     "connect",
     "query",
     "graph_snapshot",
@@ -227,3 +228,9 @@ def call_service(
         timeout=timeout,
     )
     return codec.convert(conn.request(call, timeout=timeout + 5.0), srv_type.Response)
+
+
+def print_names(entries: Iterable[Any], show_types: bool) -> None:
+    """Each entry's ``name``, with `` [type]`` under ``-t``: how ros2's list verbs print."""
+    for entry in entries:
+        print(f"{entry.name} [{entry.type}]" if show_types else entry.name)

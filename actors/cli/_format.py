@@ -26,11 +26,7 @@ def yaml_text(value: Any) -> str:
 
     if hasattr(type(value), "__ros_type__"):
         return codec.to_yaml(value)
-    import yaml
-
-    text = yaml.safe_dump(
-        _plain(value), sort_keys=False, default_flow_style=False, allow_unicode=True
-    )
+    text = codec.dump_yaml(_plain(value))
     return text.removesuffix("...\n")  # the end-of-document mark PyYAML adds after a bare scalar
 
 
@@ -50,13 +46,12 @@ def _plain(value: Any) -> Any:
 
 def parse_yaml(text: str, what: str) -> Any:
     """The value of a YAML ``text``; ControlError naming ``what`` when it is not YAML."""
-    import yaml
+    from actors import codec
 
     try:
-        return yaml.safe_load(text)
-    except yaml.YAMLError as exc:
-        problem = " ".join(str(getattr(exc, "problem", None) or exc).split())
-        raise ControlError(f"{what} {text!r} is not valid YAML: {problem}") from None
+        return codec.load_yaml(text)
+    except ValueError as exc:
+        raise ControlError(f"{what} {text!r} is not valid YAML: {exc}") from None
 
 
 def field(msg: Any, path: str) -> Any:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from actors.cli._client import add_verb, call_service, connect, graph_snapshot
+from actors.cli._client import add_verb, call_service, connect, graph_snapshot, print_names
 
 __all__ = ["register"]
 
@@ -40,9 +40,7 @@ def register(subparsers: Any) -> None:
 
 def list_services(args: argparse.Namespace) -> None:
     """Print each service's name, with ``[type]`` under ``-t``."""
-
-    for service in graph_snapshot(args).services:
-        print(f"{service.name} [{service.type}]" if args.show_types else service.name)
+    print_names(graph_snapshot(args).services, args.show_types)
 
 
 def service_type(args: argparse.Namespace) -> None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from actors.cli._client import add_verb, connect, graph_snapshot
+from actors.cli._client import add_verb, connect, graph_snapshot, print_names
 
 __all__ = ["register"]
 
@@ -79,9 +79,7 @@ def _positive(text: str) -> float:
 
 def list_topics(args: argparse.Namespace) -> None:
     """Print each topic's name, with ``[type]`` under ``-t``."""
-
-    for topic in graph_snapshot(args).topics:
-        print(f"{topic.name} [{topic.type}]" if args.show_types else topic.name)
+    print_names(graph_snapshot(args).topics, args.show_types)
 
 
 def topic_info(args: argparse.Namespace) -> None:
