@@ -52,14 +52,15 @@ def run(quick: bool = False) -> list[Result]:
     reps = 5
     demo = "e. first message, graph.toml"
     pubsub = "e. first message, talker→listener"
-    demo_samples = repeat(lambda: first_message("graph.toml"), reps)
+    # Each sample starts a fresh process: nothing in-process to warm up.
+    demo_samples = repeat(lambda: first_message("graph.toml"), reps, warmup=False)
     results = [
         Result(demo, "actors", "s", demo_samples, False, note="includes the talker's first 0.5 s period"),
         Result(demo, "actors, less the first period", "s", [s - TALKER_PERIOD for s in demo_samples], False),
-        Result(pubsub, "actors", "s", repeat(lambda: first_message("graphs/pubsub.toml"), reps), False,
+        Result(pubsub, "actors", "s", repeat(lambda: first_message("graphs/pubsub.toml"), reps, warmup=False), False,
                baselines={"python": "python -c (floor)", **ros.baselines()}),
         Result(pubsub, "python -c (floor)", "s",
-               repeat(lambda: time_to_line(["-c", f"print('{MARKER}')"], MARKER), reps), False),
+               repeat(lambda: time_to_line(["-c", f"print('{MARKER}')"], MARKER), reps, warmup=False), False),
     ]
     results += ros.first_message(pubsub, reps)
     for count in (100, 1_000):
