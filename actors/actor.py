@@ -25,13 +25,38 @@ from collections import deque
 from collections.abc import Awaitable
 from typing import Any, Protocol
 
-__all__ = ["Actor", "Entity", "CallbackFailed", "Mailbox", "OneShot"]
+__all__ = ["Actor", "Entity", "Owner", "CallbackFailed", "Mailbox", "OneShot"]
 
 
 class Entity(Protocol):
     """Something a node runs: a subscription, a timer, a service."""
 
     def _run(self) -> Awaitable[None] | None: ...
+
+
+class Owner(Protocol):
+    """What an entity needs from whoever owns it: a node's core, or a command-line session.
+
+    Entities are created by their owner and call back into it only to be
+    destroyed; they never import the node layer above them.
+    """
+
+    fqn: str
+    actor: Actor
+    loop: asyncio.AbstractEventLoop
+
+    @property
+    def logger(self) -> Any: ...
+
+    def destroy_publisher(self, publisher: Any) -> None: ...
+
+    def destroy_subscription(self, subscription: Any) -> None: ...
+
+    def destroy_timer(self, timer: Any) -> None: ...
+
+    def destroy_service(self, service: Any) -> None: ...
+
+    def destroy_client(self, client: Any) -> None: ...
 
 
 class CallbackFailed(Exception):

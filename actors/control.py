@@ -1,7 +1,7 @@
 """The control endpoint: the Unix socket through which the command line reads and drives a graph.
 
-Every :class:`~actors.runtime.Runtime` (unless built with ``control=False``)
-serves one endpoint while it runs.
+A :class:`~actors.runtime.Runtime` serves one while it runs when it is given
+the :class:`ControlEndpoint` attachment (``python -m actors.run`` gives one).
 
 Where.  ``<dir>/<graph name>.sock``.  ``<dir>`` is ``$XDG_RUNTIME_DIR/actors``
 when that variable names a directory owned by this user, else
@@ -83,11 +83,10 @@ __all__ = [
     "GraphSnapshot",
     "NodeDetail",
     "ControlServer",
-    "serve",
+    "ControlEndpoint",
     "endpoint_dir",
     "endpoint_paths",
     "is_alive",
-    "is_hidden",
     "frame",
     "decode_reply",
 ]
@@ -97,11 +96,6 @@ MAX_FRAME = 1 << 20
 
 _HEADER = struct.Struct(">I")
 _SUFFIX = ".sock"
-
-
-def is_hidden(name: str) -> bool:
-    """Whether a node name is hidden, as in ROS: its last part starts with ``_``."""
-    return name.rsplit("/", 1)[-1].startswith("_")
 
 
 # --------------------------------------------------------------------------- requests and replies
@@ -525,42 +519,47 @@ def _pairs(items: Iterable[tuple[str, type]]) -> tuple[tuple[str, str], ...]:
     return tuple(sorted({(name, type_name(t)) for name, t in items}))
 
 
-async def serve(
-    runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any] = anyio.TASK_STATUS_IGNORED
-) -> None:
-    """Serve ``runtime``'s endpoint until cancelled, then remove its socket file.
+class ControlEndpoint:
+    """The attachment that serves a runtime's control endpoint: ``Runtime(attach=[ControlEndpoint()])``.
 
-    Reports the :class:`ControlServer` through ``task_status`` once the socket
-    listens, or None (with a warning in the log) when no endpoint can be made:
-    no Unix sockets on this platform, or an unsafe or unusable directory.  The
-    graph runs either way.
+    ``server`` is the running :class:`ControlServer` once the runtime has
+    started, or None when no endpoint could be made: no Unix sockets on this
+    platform, or an unsafe or unusable directory (a warning is logged; the
+    graph runs either way).  When the runtime stops, the socket file is removed.
     """
-    try:
-        if not hasattr(socket, "AF_UNIX"):
-            raise ControlError("this platform has no Unix sockets")
-        sock, path = _bind(runtime.name)
-    except (ControlError, OSError) as exc:
-        runtime.logger.warning(
-            f"no control endpoint, the command line cannot reach this graph: {exc}"
-        )
-        task_status.started(None)
-        return
-    inode = -1  # the socket file is ours only once we know its inode
-    try:
-        inode = os.stat(path).st_ino
-        server = ControlServer(runtime, path)
-        listener = await anyio.abc.SocketListener.from_socket(sock)
-        async with listener, anyio.create_task_group() as tg:
-            if not runtime.clock.virtual:
-                from actors.doctor import LagMonitor
 
-                server.monitor = LagMonitor(runtime)
-                tg.start_soon(server.monitor.run)
-            task_status.started(server)
-            await listener.serve(server.handle, tg)
-    finally:
-        sock.close()
-        _unlink_if_same(path, inode)
+    def __init__(self) -> None:
+        self.server: ControlServer | None = None
+
+    async def __call__(
+        self, runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any] = anyio.TASK_STATUS_IGNORED
+    ) -> None:
+        try:
+            if not hasattr(socket, "AF_UNIX"):
+                raise ControlError("this platform has no Unix sockets")
+            sock, path = _bind(runtime.name)
+        except (ControlError, OSError) as exc:
+            runtime.logger.warning(
+                f"no control endpoint, the command line cannot reach this graph: {exc}"
+            )
+            task_status.started()
+            return
+        inode = -1  # the socket file is ours only once we know its inode
+        try:
+            inode = os.stat(path).st_ino
+            self.server = server = ControlServer(runtime, path)
+            listener = await anyio.abc.SocketListener.from_socket(sock)
+            async with listener, anyio.create_task_group() as tg:
+                if not runtime.clock.virtual:
+                    from actors.doctor import LagMonitor
+
+                    server.monitor = LagMonitor(runtime)
+                    tg.start_soon(server.monitor.run)
+                task_status.started()
+                await listener.serve(server.handle, tg)
+        finally:
+            sock.close()
+            _unlink_if_same(path, inode)
 
 
 def _unlink_if_same(path: Path, inode: int) -> None:

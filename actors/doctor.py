@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, Any
 import anyio
 import msgspec
 
-from actors.control import is_hidden
+from actors.names import is_hidden
 from actors.introspection import EndpointInfo, NodeInfo, TopicInfo
 from actors.topics import qos_incompatibility
 

@@ -13,24 +13,13 @@ in ``.srv`` files too), optionally an array: ``T[]``, ``T[N]`` or ``T[<=N]``.
 A ``.srv`` file is a request and a response separated by a ``---`` line.
 
 Every problem raises :class:`actors.errors.IdlError` naming ``path:line``.
-
-:func:`generate` turns a *root* (a folder of packages ``<root>/<pkg>/msg/*.msg``,
-``<root>/<pkg>/srv/*.srv``) into one module per package and kind, written
-beside the sources: ``<root>/<pkg>/msg/__init__.py`` holds every message of
-``pkg``, ``<root>/<pkg>/srv/__init__.py`` every service (the text of a module
-comes from :mod:`actors.idl_gen`).  The root folder's name is the top-level
-Python package: the shipped root is ``interfaces``, so its types import as
-``interfaces.std_msgs.msg``; a user's root ``/some/dir/my_root`` imports as
-``my_root.my_pkg.msg`` once ``/some/dir`` is on ``sys.path``.  ``__init__.py``
-files missing in the root and its packages are written too.  A package
-referenced but not found in the given roots comes from the shipped root.
+Generating modules from parsed files is :mod:`actors.idl_gen`'s job.
 """
 
 from __future__ import annotations
 
 import keyword
 import re
-from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -48,10 +37,10 @@ __all__ = [
     "OCTETS",
     "PRIMITIVES",
     "STRINGS",
-    "generate",
+    "PACKAGE_NAME",
+    "TYPE_NAME",
     "parse_message",
     "parse_service",
-    "render",
     "shipped_root",
     "strip_comment",
 ]
@@ -81,8 +70,9 @@ _TYPE = re.compile(
     r"(?:<=(?P<string_bound>\d+))?"
     r"(?:\[(?P<upper><=)?(?P<size>\d*)\])?"
 )
-_PACKAGE = re.compile(r"[a-z][a-z0-9_]*")
-_TYPE_NAME = re.compile(r"[A-Z][A-Za-z0-9]*")
+#: What a package name and a type name may be.
+PACKAGE_NAME = re.compile(r"[a-z][a-z0-9_]*")
+TYPE_NAME = re.compile(r"[A-Z][A-Za-z0-9]*")
 _FIELD_NAME = re.compile(r"(?!.*__)(?!.*_$)[a-z][a-z0-9_]*")
 _CONSTANT_NAME = re.compile(r"[A-Z][A-Z0-9_]*")
 _CONSTANT = re.compile(r"(?P<name>[A-Za-z_][A-Za-z0-9_]*)\s*=\s*(?P<value>.*)")
@@ -278,7 +268,7 @@ def _parse_type(text: str, pkg: str, where: tuple[str, int]) -> FieldType:
         parts = [parts[0], parts[2]]
     if len(parts) == 1:
         parts = [pkg, parts[0]]
-    if len(parts) != 2 or not _PACKAGE.fullmatch(parts[0]) or not _TYPE_NAME.fullmatch(parts[1]):
+    if len(parts) != 2 or not PACKAGE_NAME.fullmatch(parts[0]) or not TYPE_NAME.fullmatch(parts[1]):
         raise IdlError(*where, f"unknown type {text!r}")
     return FieldType(parts[1], pkg=parts[0], **bounds)
 
@@ -371,93 +361,3 @@ def shipped_root() -> Path:
     import interfaces
 
     return Path(interfaces.__file__).resolve().parent
-
-
-def generate(roots: Sequence[str | Path] = ()) -> list[Path]:
-    """Generate the modules of every package under ``roots`` (default: the shipped root).
-
-    Writes only files whose text changed and returns their paths.  Raises
-    IdlError for a malformed source or an unknown referenced type, and
-    InterfaceError for a root or package that cannot be a Python package.
-    """
-    written = []
-    for path, text in render(roots).items():
-        if not path.exists() or path.read_text(encoding="utf-8") != text:
-            path.write_text(text, encoding="utf-8")
-            written.append(path)
-    return written
-
-
-def render(roots: Sequence[str | Path] = ()) -> dict[Path, str]:
-    """What :func:`generate` would write, path to text; reads sources and writes nothing.
-
-    Raises as :func:`generate` does.
-    """
-    from actors.idl_gen import render_module
-
-    given = [Path(root).resolve() for root in roots] or [shipped_root()]
-    packages = _find_packages([*given, shipped_root()])
-    modules = {
-        f"{pkg}/msg/{source.stem}": f"{root.name}.{pkg}.msg"
-        for pkg, (root, kinds) in packages.items()
-        for source in kinds.get("msg", ())
-    }
-    out: dict[Path, str] = {}
-    for pkg, (root, kinds) in packages.items():
-        if root not in given:
-            continue
-        for kind, sources in kinds.items():
-            specs = [_parse_file(source, pkg, kind) for source in sources]
-            _check_references(specs, modules)
-            text = render_module(specs, modules=modules, sources=f"{pkg}/{kind}/*.{kind}")
-            out[root / pkg / kind / "__init__.py"] = text
-        doc = f"The {pkg} interface package: ``{root.name}.{pkg}.msg`` and ``.srv``."
-        _where_missing(out, root / pkg / "__init__.py", doc)
-    for root in given:
-        _where_missing(out, root / "__init__.py", "Interface packages made by ``actors interface generate``.")
-    return out
-
-
-def _find_packages(roots: Iterable[Path]) -> dict[str, tuple[Path, dict[str, list[Path]]]]:
-    """Package name to its root and sources by kind; the first root holding a package wins."""
-    packages: dict[str, tuple[Path, dict[str, list[Path]]]] = {}
-    tops: dict[str, Path] = {}
-    for root in roots:
-        if not root.is_dir():
-            raise InterfaceError(f"{root}: no such interface root folder")
-        if not root.name.isidentifier() or keyword.iskeyword(root.name):
-            raise InterfaceError(f"{root}: a root's name must be a Python identifier")
-        if tops.setdefault(root.name, root) != root:
-            raise InterfaceError(f"{root}: another root is already named {root.name!r}")
-        found: dict[str, dict[str, list[Path]]] = {}
-        for kind in ("msg", "srv"):
-            for source in sorted(root.glob(f"*/{kind}/*.{kind}")):
-                found.setdefault(source.parent.parent.name, {}).setdefault(kind, []).append(source)
-        for pkg, kinds in found.items():
-            if not _PACKAGE.fullmatch(pkg) or keyword.iskeyword(pkg):
-                raise InterfaceError(f"{root / pkg}: invalid package name {pkg!r}")
-            packages.setdefault(pkg, (root, kinds))
-    return packages
-
-
-def _parse_file(path: Path, pkg: str, kind: str) -> MessageSpec | ServiceSpec:
-    if not _TYPE_NAME.fullmatch(path.stem):
-        raise InterfaceError(f"{path}: a type name must be CamelCase letters and digits")
-    if path.stem in ("Annotated", "ClassVar"):  # generated modules import these from typing
-        raise InterfaceError(f"{path}: the type name {path.stem!r} is reserved")
-    parse = parse_message if kind == "msg" else parse_service
-    return parse(path.read_text(encoding="utf-8"), path=path, pkg=pkg, name=path.stem)
-
-
-def _check_references(specs: Iterable[MessageSpec | ServiceSpec], modules: dict[str, str]) -> None:
-    for spec in specs:
-        parts = (spec.request, spec.response) if isinstance(spec, ServiceSpec) else (spec,)
-        for part in parts:
-            for field in part.fields:
-                if field.type.is_nested and field.type.ros_type not in modules:
-                    raise IdlError(part.path, field.line, f"unknown type {field.type.ros_type!r}")
-
-
-def _where_missing(out: dict[Path, str], path: Path, doc: str) -> None:
-    if not path.exists():
-        out[path] = f'"""{doc}"""\n'

@@ -6,18 +6,15 @@ snapshots, which encode to msgpack as they are.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 import msgspec
 
-from actors.topics import QoSProfile, type_name
+from actors.services import ServiceTable
+from actors.supervisor import Child, Supervisor
+from actors.topics import QoSProfile, Topic, TopicTable, type_name
 
-if TYPE_CHECKING:
-    from actors.runtime import Runtime
-    from actors.supervisor import Child
-    from actors.topics import Topic
-
-__all__ = ["EndpointInfo", "TopicInfo", "ServiceInfo", "NodeInfo", "GraphView"]
+__all__ = ["EndpointInfo", "TopicInfo", "ServiceInfo", "NodeInfo", "GraphView", "Viewed"]
 
 
 class EndpointInfo(msgspec.Struct, frozen=True, kw_only=True):
@@ -66,12 +63,20 @@ class NodeInfo(msgspec.Struct, frozen=True, kw_only=True):
     timers: int
 
 
+class Viewed(Protocol):
+    """The tables a graph view reads (a runtime's)."""
+
+    supervisor: Supervisor
+    topics: TopicTable
+    services: ServiceTable
+
+
 class GraphView:
     """Snapshots of a runtime's graph, made on request."""
 
     __slots__ = ("_rt",)
 
-    def __init__(self, runtime: Runtime) -> None:
+    def __init__(self, runtime: Viewed) -> None:
         self._rt = runtime
 
     def nodes(self) -> list[NodeInfo]:

@@ -12,6 +12,7 @@ __all__ = [
     "normalize_namespace",
     "fully_qualified",
     "expand",
+    "is_hidden",
     "Resolver",
 ]
 
@@ -27,6 +28,11 @@ def validate_node_name(name: str) -> str:
             f"not starting with a digit"
         )
     return name
+
+
+def is_hidden(name: str) -> bool:
+    """Whether a node name is hidden, as in ROS: its last part starts with ``_``."""
+    return name.rsplit("/", 1)[-1].startswith("_")
 
 
 def _check_absolute(name: str, what: str) -> str:

@@ -16,7 +16,7 @@ from __future__ import annotations
 import asyncio
 from collections.abc import Callable, Mapping, Sequence
 from contextvars import ContextVar
-from typing import TYPE_CHECKING, Any, TypeVar
+from typing import Any, Protocol, TypeVar
 
 from actors.actor import Actor
 from actors.clock import Clock, Rate
@@ -25,16 +25,41 @@ from actors.names import Resolver, fully_qualified, normalize_namespace, validat
 from actors.params import OnSet, Parameter, ParameterStore
 from actors.services import Client, Service
 from actors.timers import Timer
-from actors.topics import Publisher, QoSProfile, Subscription, as_qos
+from actors.services import ServiceTable
+from actors.topics import Publisher, QoSProfile, Subscription, TopicTable, as_qos
 from interfaces.rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 
-if TYPE_CHECKING:
-    from actors.runtime import Runtime
-    from actors.supervisor import Child
-
-__all__ = ["Node", "NodeCore"]
+__all__ = ["Node", "NodeCore", "Host", "ChildSpec", "SpawnRequest"]
 
 T = TypeVar("T")
+
+
+class Host(Protocol):
+    """What a node needs from the runtime that spawns it (the runtime layer sits above this one)."""
+
+    loop: asyncio.AbstractEventLoop
+    clock: Clock
+    topics: TopicTable
+    services: ServiceTable
+    parameter_events: Publisher
+    graph: Any
+
+    def make_logger(self, name: str) -> NodeLogger: ...
+
+    def _register_node(self, core: NodeCore) -> None: ...
+
+    def _unregister_node(self, core: NodeCore) -> None: ...
+
+
+class ChildSpec(Protocol):
+    """How the supervisor asks for a node: overrides, and the entities a restart hands over."""
+
+    name: str | None
+    namespace: str | None
+    params: dict[str, Any]
+    remap: dict[str, str]
+
+    def take_inheritance(self) -> dict[tuple[str, str], list[Any]]: ...
 
 
 class SpawnRequest:
@@ -42,7 +67,7 @@ class SpawnRequest:
 
     __slots__ = ("runtime", "child")
 
-    def __init__(self, runtime: Runtime, child: Child) -> None:
+    def __init__(self, runtime: Host, child: ChildSpec) -> None:
         self.runtime = runtime
         self.child = child
 
@@ -71,6 +96,7 @@ class NodeCore:
         self.resolver = Resolver(self.namespace, self.name, child.remap)
         self.loop: asyncio.AbstractEventLoop = self.runtime.loop
         self.clock: Clock = self.runtime.clock
+        self.parameter_events = self.runtime.parameter_events
         self.actor = Actor(self.loop)
         self._logger: NodeLogger | None = None
         self.publishers: list[Publisher] = []

@@ -18,8 +18,9 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 from enum import IntEnum
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
+from actors.clock import Clock
 from actors.errors import ParameterError
 from interfaces.rcl_interfaces.msg import (
     ListParametersResult,
@@ -30,10 +31,14 @@ from interfaces.rcl_interfaces.msg import (
 )
 from interfaces.rcl_interfaces.msg import Parameter as ParameterMsg
 
-if TYPE_CHECKING:
-    from actors.node import NodeCore
-
-__all__ = ["Parameter", "ParameterType", "ParameterStore", "value_to_msg", "value_from_msg"]
+__all__ = [
+    "Parameter",
+    "ParameterType",
+    "ParameterHost",
+    "ParameterStore",
+    "value_to_msg",
+    "value_from_msg",
+]
 
 
 class ParameterType(IntEnum):
@@ -157,12 +162,24 @@ class Parameter:
 OnSet = Callable[[list[Parameter]], SetParametersResult]
 
 
+class ParameterHost(Protocol):
+    """What a parameter store needs from its node: a name, a clock, services, the events topic."""
+
+    fqn: str
+    clock: Clock
+
+    @property
+    def parameter_events(self) -> Any: ...
+
+    def create_service(self, srv_type: type, name: str, handler: Callable[[Any, Any], Any]) -> Any: ...
+
+
 class ParameterStore:
     """One node's parameters, descriptors and on-set callbacks."""
 
     __slots__ = ("_core", "_values", "_descriptors", "_callbacks", "_overrides")
 
-    def __init__(self, core: NodeCore, overrides: Mapping[str, Any]) -> None:
+    def __init__(self, core: ParameterHost, overrides: Mapping[str, Any]) -> None:
         self._core = core
         self._values: dict[str, Parameter] = {}
         self._descriptors: dict[str, ParameterDescriptor] = {}
@@ -316,7 +333,7 @@ class ParameterStore:
 
     def _publish_event(self, new: Sequence[Parameter] = (), changed: Sequence[Parameter] = (),
                        deleted: Sequence[Parameter] = ()) -> None:
-        publisher = self._core.runtime.parameter_events
+        publisher = self._core.parameter_events
         if not publisher._subs:
             return
         event = ParameterEvent(

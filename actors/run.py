@@ -17,6 +17,7 @@ from typing import Any
 import anyio
 
 from actors.clock import VirtualTimeLoop, precise_loop
+from actors.control import ControlEndpoint
 from actors.errors import ActorsError, Escalation, GraphFileError
 from actors.graph import GraphFile, NodeEntry, load_graph
 from actors.log import LEVELS, configure_console
@@ -60,7 +61,8 @@ async def run_graph(
     Raises Escalation if the supervisor gives up, and what a node's constructor
     raises (wrapped in GraphFileError naming the node's entry).
     """
-    async with Runtime(name=name, supervisor=graph.supervisor.policy()) as rt:
+    policy = graph.supervisor.policy()
+    async with Runtime(name=name, supervisor=policy, attach=[ControlEndpoint()]) as rt:
         entries = list(enumerate(zip(graph.nodes, classes)))
         for i, (entry, cls) in entries:
             if not entry.delay:

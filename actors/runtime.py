@@ -13,11 +13,12 @@ scoped context variable, so several runtimes can live in one process.
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from types import TracebackType
-from typing import TYPE_CHECKING, Any, TypeVar
+from typing import Any, Protocol, TypeVar
 
 import anyio
+import anyio.abc
 
 from actors.clock import Clock
 from actors.errors import InvalidNameError
@@ -28,22 +29,34 @@ from actors.services import ServiceTable
 from actors.supervisor import Child, RestartType, Supervisor, SupervisorPolicy
 from actors.topics import Publisher, QoSProfile, Subscription, TopicTable, type_name
 
-if TYPE_CHECKING:
-    from actors.control import ControlServer
-
-__all__ = ["Runtime"]
+__all__ = ["Runtime", "Attachment"]
 
 N = TypeVar("N", bound=Node)
+
+
+class Attachment(Protocol):
+    """Something that runs beside a graph for as long as its runtime runs.
+
+    The control endpoint (:class:`actors.control.ControlEndpoint`) is one; so
+    are a transport to other processes and a recorder.  The runtime starts each
+    with ``await task_group.start(attachment, runtime)`` once its supervisor
+    runs, in the order given, and cancels them after every node has stopped.
+    An attachment lives in a layer above the runtime: it is handed in, never
+    imported here.
+    """
+
+    async def __call__(
+        self, runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any]
+    ) -> None: ...
 
 
 class Runtime:
     """A graph of nodes in one process, on the running event loop.
 
     ``name`` names the graph (the command line finds it by this name);
-    ``supervisor`` sets restart strategy, intensity and backoff.  With
-    ``control`` (the default) the runtime serves a control endpoint for the
-    command line while it runs (see :mod:`actors.control`; ``self.control`` is
-    the server, None when off); embedding code may turn it off.
+    ``supervisor`` sets restart strategy, intensity and backoff; ``attach``
+    lists what runs beside the graph, e.g. ``[ControlEndpoint()]`` to let the
+    command line reach it (``python -m actors.run`` attaches one).
     """
 
     def __init__(
@@ -51,11 +64,10 @@ class Runtime:
         *,
         name: str = "actors",
         supervisor: SupervisorPolicy | None = None,
-        control: bool = True,
+        attach: Sequence[Attachment] = (),
     ) -> None:
         self.name = name
-        self._serve_control = control
-        self.control: ControlServer | None = None
+        self._attachments = tuple(attach)
         self.policy = supervisor or SupervisorPolicy()
         self.topics = TopicTable(self._incompatible_qos)
         self.services = ServiceTable()
@@ -82,11 +94,9 @@ class Runtime:
         self._task_group = anyio.create_task_group()
         await self._task_group.__aenter__()
         self._task_group.start_soon(self.supervisor.run, name="supervisor")
-        if self._serve_control:
-            from actors.control import serve
-
-            # Cancelled with the task group on exit; it removes its socket file then.
-            self.control = await self._task_group.start(serve, self, name="control")
+        for attachment in self._attachments:
+            # Cancelled with the task group on exit, after every node has stopped.
+            await self._task_group.start(attachment, self, name=type(attachment).__name__)
         self._state = "running"
         return self
 
@@ -113,6 +123,11 @@ class Runtime:
         if self._failure is not None:
             raise self._failure
         return suppressed
+
+    @property
+    def attachments(self) -> tuple[Attachment, ...]:
+        """What runs beside the graph, as given to the constructor."""
+        return self._attachments
 
     def _fail(self, reason: BaseException) -> None:
         """Record why the runtime gives up and cancel everything in it."""

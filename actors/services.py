@@ -22,16 +22,13 @@ import asyncio
 from collections import deque
 from collections.abc import Awaitable, Callable
 from inspect import isawaitable
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import anyio
 
-from actors.actor import Mailbox
+from actors.actor import Mailbox, Owner
 from actors.errors import ServiceError
 from actors.topics import type_name
-
-if TYPE_CHECKING:
-    from actors.node import NodeCore
 
 __all__ = ["Service", "Client", "ServiceTable"]
 
@@ -54,7 +51,7 @@ class Service(Mailbox):
 
     __slots__ = ("node", "service_name", "srv_type", "handler", "handled")
 
-    def __init__(self, node: NodeCore, service_name: str, srv_type: type, handler: Callable[..., Any]) -> None:
+    def __init__(self, node: Owner, service_name: str, srv_type: type, handler: Callable[..., Any]) -> None:
         _check_srv_type(srv_type, "create_service")
         if not callable(handler):
             raise TypeError(f"service handler must be callable, got {handler!r}")
@@ -142,7 +139,7 @@ class Client:
 
     __slots__ = ("node", "service_name", "srv_type", "_table", "_loop")
 
-    def __init__(self, node: NodeCore, service_name: str, srv_type: type, table: ServiceTable) -> None:
+    def __init__(self, node: Owner, service_name: str, srv_type: type, table: ServiceTable) -> None:
         _check_srv_type(srv_type, "create_client")
         self.node = node
         self.service_name = service_name

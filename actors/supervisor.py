@@ -24,19 +24,19 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Mapping
 from enum import StrEnum
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
 import anyio
+import anyio.abc
 import msgspec
 
 from actors.actor import CallbackFailed, OneShot
+from actors.clock import Clock
 from actors.errors import Escalation
+from actors.log import NodeLogger
+from actors.node import NodeCore
 
-if TYPE_CHECKING:
-    from actors.node import NodeCore
-    from actors.runtime import Runtime
-
-__all__ = ["Strategy", "RestartType", "SupervisorPolicy", "Child", "Supervisor"]
+__all__ = ["Strategy", "RestartType", "SupervisorPolicy", "Child", "Supervisor", "Supervised"]
 
 
 class Strategy(StrEnum):
@@ -118,10 +118,22 @@ class _Exit(msgspec.Struct):
     error: BaseException | None
 
 
+class Supervised(Protocol):
+    """What the supervisor needs from the runtime it serves."""
+
+    clock: Clock
+    logger: NodeLogger
+    _task_group: anyio.abc.TaskGroup
+
+    def _instantiate(self, child: Child) -> NodeCore: ...
+
+    def _fail(self, reason: BaseException) -> None: ...
+
+
 class Supervisor:
     """Starts, watches and restarts the runtime's nodes."""
 
-    def __init__(self, runtime: Runtime, policy: SupervisorPolicy) -> None:
+    def __init__(self, runtime: Supervised, policy: SupervisorPolicy) -> None:
         self.runtime = runtime
         self.policy = policy
         self.children: list[Child] = []

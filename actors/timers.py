@@ -11,12 +11,9 @@ from __future__ import annotations
 import asyncio
 from collections.abc import Awaitable, Callable
 from inspect import isawaitable
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from actors.actor import CallbackFailed
-
-if TYPE_CHECKING:
-    from actors.node import NodeCore
+from actors.actor import CallbackFailed, Owner
 
 __all__ = ["Timer"]
 
@@ -26,7 +23,7 @@ class Timer:
 
     __slots__ = ("node", "callback", "period", "_loop", "_start", "_k", "_handle", "_canceled", "ticks")
 
-    def __init__(self, node: NodeCore, period: float, callback: Callable[[], Any]) -> None:
+    def __init__(self, node: Owner, period: float, callback: Callable[[], Any]) -> None:
         if not period > 0:
             raise ValueError(f"timer period must be > 0 seconds, got {period}")
         self.node = node

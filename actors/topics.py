@@ -19,15 +19,12 @@ from collections import deque
 from collections.abc import Awaitable, Callable
 from enum import IntEnum
 from inspect import isawaitable
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import msgspec
 
-from actors.actor import CallbackFailed, Mailbox
+from actors.actor import CallbackFailed, Mailbox, Owner
 from actors.errors import TopicTypeError
-
-if TYPE_CHECKING:
-    from actors.node import NodeCore
 
 __all__ = [
     "HistoryPolicy",
@@ -122,7 +119,7 @@ class Publisher:
 
     __slots__ = ("topic_name", "msg_type", "qos", "node", "_subs", "_history", "__weakref__")
 
-    def __init__(self, node: NodeCore, topic_name: str, msg_type: type, qos: QoSProfile) -> None:
+    def __init__(self, node: Owner, topic_name: str, msg_type: type, qos: QoSProfile) -> None:
         self.node = node
         self.topic_name = topic_name
         self.msg_type = msg_type
@@ -181,7 +178,7 @@ class Subscription(Mailbox):
 
     def __init__(
         self,
-        node: NodeCore,
+        node: Owner,
         topic_name: str,
         msg_type: type,
         callback: Callable[[Any], Any],

@@ -57,7 +57,7 @@ def _child(count: int) -> None:
     """
 
     async def main() -> None:
-        async with Runtime(control=False) as rt:
+        async with Runtime() as rt:
             rt.spawn(IdleNode, name="warm")  # first-use costs (imports, caches) are not per node
             await asyncio.sleep(0.01)
             gc.collect()

@@ -40,7 +40,7 @@ def actors_call_time(n: int, callers: int) -> float:
             self.cli = self.create_client(SetBool, "set_bool")
 
     async def main() -> float:
-        async with Runtime(control=False) as rt:
+        async with Runtime() as rt:
             rt.spawn(Server)
             cli = rt.spawn(Caller).cli
             request = SetBool.Request(data=True)

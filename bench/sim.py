@@ -42,7 +42,7 @@ def nodes_factor(robots: int, seconds: float) -> float:
     """Simulated seconds per wall second for the World, TurtleBot and ConstantControl nodes."""
 
     async def main() -> float:
-        async with Runtime(name="bench_sim", control=False) as rt:
+        async with Runtime(name="bench_sim") as rt:
             rt.spawn(World, params={"world": "empty", "dt": 1.0 / PHYSICS_HZ})
             for i, (x, y, theta, omega) in enumerate(_grid(robots)):
                 ns = f"tb{i}"

@@ -36,7 +36,7 @@ def spawn_time(count: int) -> float:
     """Seconds to spawn ``count`` idle nodes until each node's task has started."""
 
     async def main() -> float:
-        async with Runtime(control=False) as rt:
+        async with Runtime() as rt:
             start = time.perf_counter()
             for i in range(count):
                 rt.spawn(IdleNode, name=f"idle{i}")

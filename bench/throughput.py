@@ -47,7 +47,7 @@ def actors_rate(n: int, subscribers: int, topics: int = 1) -> float:
     n = n // BATCH * BATCH
 
     async def main() -> float:
-        async with Runtime(control=False) as rt:
+        async with Runtime() as rt:
             listeners = []
             for t in range(topics):
                 for i in range(subscribers):

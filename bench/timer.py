@@ -63,7 +63,7 @@ def actors_ticks(seconds: float, selector: type[selectors.BaseSelector] = select
             lateness.append(self.get_clock().monotonic() - self.timer.next_deadline)
 
     async def main() -> Sample:
-        async with Runtime(control=False) as rt:
+        async with Runtime() as rt:
             cpu, wall = time.process_time(), time.perf_counter()
             rt.spawn(Ticker)
             await asyncio.sleep(seconds)

@@ -16,6 +16,8 @@ from actors import DurabilityPolicy, Node, QoSProfile, Runtime
 from actors.cli._client import connect
 from actors.control import (
     MAX_FRAME,
+    ControlEndpoint,
+    ControlServer,
     GetGraph,
     GetNode,
     GraphSnapshot,
@@ -54,6 +56,13 @@ class Listener(Node):
         self.create_subscription(String, "/chatter", lambda msg: self.heard.append(msg.data), 10)
 
 
+def server(rt: Runtime) -> ControlServer:
+    """The control server of a runtime that was given a ControlEndpoint."""
+    (endpoint,) = rt.attachments
+    assert isinstance(endpoint, ControlEndpoint) and endpoint.server is not None
+    return endpoint.server
+
+
 @pytest.fixture
 def name(request: pytest.FixtureRequest) -> str:
     """A graph name no other test or running graph uses."""
@@ -83,9 +92,8 @@ async def closed_by_server(path: os.PathLike[str], data: bytes) -> bool:
 
 
 async def test_the_socket_is_0600_in_a_0700_directory_of_this_user_and_goes_away_on_exit(name):
-    async with Runtime(name=name) as rt:
-        assert rt.control is not None
-        path = rt.control.path
+    async with Runtime(name=name, attach=[ControlEndpoint()]) as rt:
+        path = server(rt).path
         assert path == endpoint_dir() / f"{name}.sock"
         info = os.stat(path)
         assert stat.S_ISSOCK(info.st_mode) and stat.S_IMODE(info.st_mode) == 0o600
@@ -95,10 +103,10 @@ async def test_the_socket_is_0600_in_a_0700_directory_of_this_user_and_goes_away
 
 
 async def test_garbage_and_an_oversized_length_close_only_that_connection(name):
-    async with Runtime(name=name) as rt:
+    async with Runtime(name=name, attach=[ControlEndpoint()]) as rt:
         rt.spawn(Talker)
         listener = rt.spawn(Listener)
-        path = rt.control.path
+        path = server(rt).path
         assert await closed_by_server(path, b"\xc1 this is not msgpack at all")
         assert await closed_by_server(path, struct.pack(">I", MAX_FRAME + 1) + b"x" * 64)
         assert await closed_by_server(path, struct.pack(">I", 3) + b"\xc1\xc1\xc1")
@@ -113,8 +121,8 @@ async def test_garbage_and_an_oversized_length_close_only_that_connection(name):
 
 
 async def test_a_bad_request_gets_an_error_reply_and_the_connection_stays_open(name):
-    async with Runtime(name=name) as rt:
-        path = rt.control.path
+    async with Runtime(name=name, attach=[ControlEndpoint()]) as rt:
+        path = server(rt).path
         unknown_op = frame({"op": "reboot"})
         reply = await ask(path, unknown_op)
         assert not reply.ok and reply.error.startswith("bad request")
@@ -128,23 +136,25 @@ async def test_a_bad_request_gets_an_error_reply_and_the_connection_stays_open(n
 
 
 async def test_a_graph_name_in_use_moves_on_and_a_stale_socket_is_replaced(name):
-    async with Runtime(name=name) as first, Runtime(name=name) as second:
-        assert first.control.path.name == f"{name}.sock"
-        assert second.control.path.name == f"{name}-2.sock"
+    async with Runtime(name=name, attach=[ControlEndpoint()]) as first, Runtime(
+        name=name, attach=[ControlEndpoint()]
+    ) as second:
+        assert server(first).path.name == f"{name}.sock"
+        assert server(second).path.name == f"{name}-2.sock"
     stale = endpoint_dir() / f"{name}.sock"
     import socket
 
     sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     sock.bind(str(stale))
     sock.close()  # the file stays, nobody listens: what a killed graph leaves
-    async with Runtime(name=name) as rt:
-        assert rt.control.path == stale
+    async with Runtime(name=name, attach=[ControlEndpoint()]) as rt:
+        assert server(rt).path == stale
     assert not stale.exists()
 
 
-async def test_control_false_opens_no_endpoint(name):
-    async with Runtime(name=name, control=False) as rt:
-        assert rt.control is None
+async def test_a_runtime_without_the_attachment_opens_no_endpoint(name):
+    async with Runtime(name=name) as rt:
+        assert rt.attachments == ()
         assert not (endpoint_dir() / f"{name}.sock").exists()
 
 
@@ -156,21 +166,21 @@ async def test_a_directory_open_to_others_is_refused_and_the_graph_runs_without_
     os.chmod(tmp_path / "actors", 0o755)
     with pytest.raises(ControlError, match="refusing the control directory"):
         endpoint_dir()
-    async with Runtime(name=name) as rt:
-        assert rt.control is None
+    async with Runtime(name=name, attach=[endpoint := ControlEndpoint()]) as rt:
+        assert endpoint.server is None
         rt.spawn(Talker)
     assert "no control endpoint" in caplog.text
 
 
 async def test_the_runtime_dir_is_used_when_set_and_owned_by_the_user(name, tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_RUNTIME_DIR", str(tmp_path))
-    async with Runtime(name=name) as rt:
-        assert rt.control.path == tmp_path / "actors" / f"{name}.sock"
+    async with Runtime(name=name, attach=[ControlEndpoint()]) as rt:
+        assert server(rt).path == tmp_path / "actors" / f"{name}.sock"
         assert stat.S_IMODE(os.stat(tmp_path / "actors").st_mode) == 0o700
 
 
 async def test_the_client_finds_the_graph_and_sessions_clean_up_after_themselves(name):
-    async with Runtime(name=name) as rt:
+    async with Runtime(name=name, attach=[ControlEndpoint()]) as rt:
         rt.spawn(Talker)
 
         def publish_and_look() -> tuple[list[str], list[str]]:
@@ -194,7 +204,7 @@ async def test_the_client_finds_the_graph_and_sessions_clean_up_after_themselves
 
 
 async def test_errors_name_what_is_unknown(name):
-    async with Runtime(name=name) as rt:
+    async with Runtime(name=name, attach=[ControlEndpoint()]) as rt:
         rt.spawn(Talker)
         rt.spawn(Talker, name="far", namespace="/robot1")
 
@@ -240,7 +250,7 @@ async def test_hz_does_not_replay_a_latched_topics_history(name):
             super().__init__("latched")
             self.pub = self.create_publisher(String, "/latched", latched)
 
-    async with Runtime(name=name) as rt:
+    async with Runtime(name=name, attach=[ControlEndpoint()]) as rt:
         rt.spawn(Latched)
 
         def subscribe(content: bool) -> DurabilityPolicy:

@@ -9,7 +9,7 @@ import pytest
 
 from actors import DurabilityPolicy, Node, QoSProfile, ReliabilityPolicy, Runtime, SupervisorPolicy
 from actors.cli._client import connect
-from actors.control import Subscribe
+from actors.control import ControlEndpoint, Subscribe
 from actors.doctor import Report, diagnose
 from interfaces.std_msgs.msg import Int64, String
 
@@ -34,7 +34,7 @@ def checks(report: Report) -> dict[str, tuple[str, ...] | None]:
 
 @pytest.mark.virtual_time
 async def test_a_clean_graph_passes_every_check():
-    async with Runtime(name="doctor_clean", control=False) as rt:
+    async with Runtime(name="doctor_clean") as rt:
         rt.spawn(Talker)
         rt.spawn(Listener)
         await anyio.sleep(1)
@@ -63,7 +63,7 @@ async def test_one_sided_topics_fail_but_rosout_parameter_events_and_the_cli_do_
             self.create_subscription(Int64, "/ear", lambda msg: None, 10)
             self.create_subscription(String, "/rosout_copy", lambda msg: None, 10)
 
-    async with Runtime(name="doctor_sided", control=False) as rt:
+    async with Runtime(name="doctor_sided") as rt:
         rt.spawn(Lonely)
         report = checks(diagnose(rt))
     assert report["publishers without subscribers"] == (
@@ -77,7 +77,7 @@ async def test_one_sided_topics_fail_but_rosout_parameter_events_and_the_cli_do_
 
 async def test_the_command_lines_own_subscription_is_no_subscriber(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_RUNTIME_DIR", str(tmp_path))
-    async with Runtime(name="doctor_cli") as rt:
+    async with Runtime(name="doctor_cli", attach=[ControlEndpoint()]) as rt:
         rt.spawn(Talker)
 
         def echo_and_diagnose() -> dict[str, tuple[str, ...] | None]:
@@ -116,7 +116,7 @@ async def test_incompatible_qos_fails(offered, requested, why):
         def __init__(self) -> None:
             super().__init__(qos=requested)
 
-    async with Runtime(name="doctor_qos", control=False) as rt:
+    async with Runtime(name="doctor_qos") as rt:
         rt.spawn(Pub)
         rt.spawn(Sub)
         report = checks(diagnose(rt))
@@ -138,7 +138,7 @@ async def test_a_node_that_crashed_and_restarted_fails_node_health():
                 raise RuntimeError("boom")
 
     async with Runtime(
-        name="doctor_crash", control=False, supervisor=SupervisorPolicy(backoff=0)
+        name="doctor_crash", supervisor=SupervisorPolicy(backoff=0)
     ) as rt:
         rt.spawn(Fragile)
         await anyio.sleep(1)
@@ -158,7 +158,7 @@ async def test_a_temporary_node_that_crashed_for_good_fails_node_health():
         def tick(self) -> None:
             raise RuntimeError("gone")
 
-    async with Runtime(name="doctor_temporary", control=False) as rt:
+    async with Runtime(name="doctor_temporary") as rt:
         rt.spawn(Doomed, restart="temporary")
         await anyio.sleep(1)
         assert rt.graph.nodes() == []
@@ -180,7 +180,7 @@ async def test_dropped_messages_fail():
         def __init__(self) -> None:
             super().__init__(topic="/burst", qos=2)
 
-    async with Runtime(name="doctor_drops", control=False) as rt:
+    async with Runtime(name="doctor_drops") as rt:
         rt.spawn(Burst)
         rt.spawn(Slow)
         await anyio.sleep(0.15)  # one burst: five messages into a queue of two
@@ -206,9 +206,10 @@ class Blocker(Node):
 
 async def test_a_callback_blocking_the_loop_is_named_by_node_and_callback(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_RUNTIME_DIR", str(tmp_path))
-    async with Runtime(name="doctor_lag") as rt:
+    async with Runtime(name="doctor_lag", attach=[endpoint := ControlEndpoint()]) as rt:
         blocker = rt.spawn(Blocker)
-        monitor = rt.control.monitor
+        assert endpoint.server is not None
+        monitor = endpoint.server.monitor
         with anyio.fail_after(5):
             await blocker.blocked.wait()
             while not any(e.node == "/blocker" for e in monitor.events):

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from actors import codec, idl
+from actors import codec, idl, idl_gen
 from actors.errors import IdlError, InterfaceError, MessageValidationError
 
 THING = """\
@@ -58,7 +58,7 @@ def user_root(tmp_path, monkeypatch):
             "my_pkg/srv/Lookup.srv": LOOKUP,
         },
     )
-    idl.generate([root])
+    idl_gen.generate([root])
     monkeypatch.syspath_prepend(str(tmp_path))
     importlib.invalidate_caches()
     yield root
@@ -163,7 +163,7 @@ def test_strip_comment_ignores_hashes_in_quotes():
 
 
 def test_shipped_modules_do_not_drift_from_their_sources():
-    rendered = idl.render([idl.shipped_root()])
+    rendered = idl_gen.render([idl.shipped_root()])
     sources = sorted(idl.shipped_root().glob("*/*/*.msg")) + sorted(idl.shipped_root().glob("*/*/*.srv"))
     assert {source.parent / "__init__.py" for source in sources} <= set(rendered)
     for path, text in rendered.items():
@@ -238,13 +238,13 @@ def test_user_root_gets_init_files_and_aliased_imports(user_root):
     assert (user_root / "__init__.py").exists() and (user_root / "my_pkg/__init__.py").exists()
     text = (user_root / "my_pkg/msg/__init__.py").read_text(encoding="utf-8")
     assert "from interfaces.std_msgs.msg import Header as std_msgs_Header" in text
-    assert idl.generate([user_root]) == []  # nothing changed, nothing written
+    assert idl_gen.generate([user_root]) == []  # nothing changed, nothing written
 
 
 def test_generate_reports_a_malformed_line(tmp_path):
     root = write_root(tmp_path, "bad_root", {"pkg/msg/Ok.msg": "int8 a\n", "pkg/msg/Bad.msg": "int8 a\nfloat64 [] b\n"})
     with pytest.raises(IdlError) as caught:
-        idl.generate([root])
+        idl_gen.generate([root])
     assert caught.value.path == str(root / "pkg/msg/Bad.msg") and caught.value.line == 2
     assert not (root / "pkg/msg/__init__.py").exists()
 
@@ -260,7 +260,7 @@ def test_generate_reports_a_malformed_line(tmp_path):
 def test_generate_rejects_unknown_and_recursive_types(tmp_path, files, where, problem):
     root = write_root(tmp_path, "bad_root", files)
     with pytest.raises(IdlError, match=problem) as caught:
-        idl.generate([root])
+        idl_gen.generate([root])
     assert (caught.value.path, caught.value.line) == (str(root / where[0]), where[1])
 
 
@@ -277,7 +277,7 @@ def test_generate_rejects_unknown_and_recursive_types(tmp_path, files, where, pr
 def test_generate_rejects_unusable_names(tmp_path, name, files, problem):
     root = write_root(tmp_path, name, files)
     with pytest.raises(InterfaceError, match=problem):
-        idl.generate([root])
+        idl_gen.generate([root])
 
 
 def test_module_all_is_honest():

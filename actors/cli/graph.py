@@ -94,7 +94,7 @@ def _edges(
     graph: GraphSnapshot, everything: bool
 ) -> tuple[list[str], list[str], list[tuple[str, str, bool]]]:
     """Node names, topic names and edges ``(node, topic, node_publishes)`` to draw."""
-    from actors.control import is_hidden
+    from actors.names import is_hidden
     from actors.doctor import IGNORED_TOPICS
 
     nodes = {n.name for n in graph.nodes if everything or not is_hidden(n.name)}

@@ -63,9 +63,9 @@ def show_type(args: argparse.Namespace) -> None:
 
 def generate_modules(args: argparse.Namespace) -> None:
     """Generate the modules of each root and print the files written; raises IdlError."""
-    from actors import idl
+    from actors import idl_gen
 
-    written = idl.generate(args.roots)
+    written = idl_gen.generate(args.roots)
     for path in written:
         print(f"wrote {path}")
     if not written:

@@ -6,7 +6,8 @@ import argparse
 from typing import Any
 
 from actors.cli._client import add_verb, graph_snapshot, query
-from actors.control import GetNode, NodeDetail, is_hidden
+from actors.control import GetNode, NodeDetail
+from actors.names import is_hidden
 
 __all__ = ["register"]
 
