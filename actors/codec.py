@@ -1,7 +1,7 @@
 """Interface types by ROS name, and their codecs: msgpack, JSON, YAML, JSON Schema, MCAP text.
 
-The registry maps ``pkg/msg/Name`` (and ``pkg/srv/Name``, ``pkg/Name``) to the
-generated classes, importing a package's module only when one of its types is
+The registry maps ``pkg/msg/Name`` (and ``pkg/srv/Name``, ``pkg/action/Name``,
+``pkg/Name``) to the generated classes, importing a package's module only when one of its types is
 first asked for.  It is process-wide, like ``sys.modules``: types are
 definitions, not state.  Roots (see :mod:`actors.idl`) are searched newest
 registered first, the shipped ``interfaces`` root last.
@@ -63,10 +63,13 @@ _json_decoders: dict[Any, msgspec.json.Decoder[Any]] = {}
 
 
 def get_type(name: str) -> type:
-    """The message or service class named ``pkg/msg/Name``, ``pkg/srv/Name`` or ``pkg/Name``.
+    """The message, service or action class named ``pkg/msg/Name``, ``pkg/srv/Name``,
+    ``pkg/action/Name`` or ``pkg/Name``.
 
-    The short form tries the message first, then the service.  A service's
-    ``pkg/srv/Name_Request`` and ``_Response`` are found too.  Raises
+    The short form tries the message first, then the service, then the action.
+    A service's ``pkg/srv/Name_Request`` and ``_Response`` are found too, and
+    an action's parts and wire types (``pkg/action/Name_Goal``,
+    ``Name_SendGoal``, ``Name_FeedbackMessage``...).  Raises
     UnknownInterfaceError when no registered module or root defines it.
     """
     try:
@@ -75,12 +78,13 @@ def get_type(name: str) -> type:
         pass
     parts = name.split("/")
     if len(parts) == 2:
-        candidates = [f"{parts[0]}/msg/{parts[1]}", f"{parts[0]}/srv/{parts[1]}"]
-    elif len(parts) == 3 and parts[1] in ("msg", "srv"):
+        candidates = [f"{parts[0]}/{kind}/{parts[1]}" for kind in _KINDS]
+    elif len(parts) == 3 and parts[1] in _KINDS:
         candidates = [name]
     else:
         raise UnknownInterfaceError(
-            f"{name!r} is not an interface name (expected pkg/msg/Name, pkg/srv/Name or pkg/Name)"
+            f"{name!r} is not an interface name "
+            "(expected pkg/msg/Name, pkg/srv/Name, pkg/action/Name or pkg/Name)"
         )
     for full_name in candidates:
         found = _registered.get(full_name) or _import_type(full_name)
@@ -88,6 +92,9 @@ def get_type(name: str) -> type:
             _types[name] = found
             return found
     raise UnknownInterfaceError(f"unknown interface type {name!r}")
+
+
+_KINDS = ("msg", "srv", "action")
 
 
 def ros_name(type_: Any) -> str:
@@ -102,15 +109,20 @@ def ros_name(type_: Any) -> str:
 
 
 def list_types() -> list[str]:
-    """The ROS names of every message and service known: all roots and registered modules, sorted.
+    """The ROS names of every message, service and action known (all roots and modules), sorted.
 
-    Services' ``_Request``/``_Response`` messages are not listed separately.
+    Services' ``_Request``/``_Response`` messages are not listed separately,
+    nor the parts and wire types of an action.
     """
     from actors.idl import shipped_root
 
-    names = {name for name in _registered if not name.endswith(("_Request", "_Response"))}
+    names = {
+        name
+        for name in _registered
+        if not name.endswith(("_Request", "_Response")) and not ("/action/" in name and "_" in name)
+    }
     for root in [*_roots, shipped_root()]:
-        for kind in ("msg", "srv"):
+        for kind in _KINDS:
             names.update(
                 f"{source.parent.parent.name}/{kind}/{source.stem}"
                 for source in root.glob(f"*/{kind}/*.{kind}")
@@ -161,6 +173,8 @@ def _import_type(full_name: str) -> type | None:
     if not (pkg.isidentifier() and name.isidentifier()):
         return None
     service, _, part = name.rpartition("_")
+    # A service's parts are attributes of the service class; an action's module defines
+    # every part and wire type at its top level.
     attribute = service if part in ("Request", "Response") and kind == "srv" else name
     for top in [root.name for root in _roots] + ["interfaces"]:
         module_name = f"{top}.{pkg}.{kind}"

@@ -1,4 +1,4 @@
-"""The ``.msg``/``.srv`` parser: ROS 2 interface text to small frozen specs.
+"""The ``.msg``/``.srv``/``.action`` parser: ROS 2 interface text to small frozen specs.
 
 A ``.msg`` file holds one declaration a line, ``#`` starting a comment:
 
@@ -9,8 +9,13 @@ A ``.msg`` file holds one declaration a line, ``#`` starting a comment:
 TYPE is a primitive (``bool byte char float32 float64 int8 .. uint64 string
 wstring``), a bounded string (``string<=N``) or a message (``Name``,
 ``pkg/Name``, ``pkg/msg/Name``; a bare ``Name`` is the same package's message,
-in ``.srv`` files too), optionally an array: ``T[]``, ``T[N]`` or ``T[<=N]``.
-A ``.srv`` file is a request and a response separated by a ``---`` line.
+in ``.srv`` and ``.action`` files too), optionally an array: ``T[]``, ``T[N]``
+or ``T[<=N]``.  A ``.srv`` file is a request and a response separated by a
+``---`` line; an ``.action`` file is a goal, a result and a feedback separated
+by two.  An action also implies the types ROS derives from it (rosidl's
+``Action`` definition): the ``Name_SendGoal`` and ``Name_GetResult`` services
+and the ``Name_FeedbackMessage`` topic type, all of kind ``action``; their
+definitions name the action's own parts as ``pkg/action/Name_Goal``.
 
 Every problem raises :class:`actors.errors.IdlError` naming ``path:line``.
 Generating modules from parsed files is :mod:`actors.idl_gen`'s job.
@@ -32,6 +37,7 @@ __all__ = [
     "FieldType",
     "MessageSpec",
     "ServiceSpec",
+    "ActionSpec",
     "FLOATS",
     "INTEGER_RANGES",
     "OCTETS",
@@ -41,6 +47,7 @@ __all__ = [
     "TYPE_NAME",
     "parse_message",
     "parse_service",
+    "parse_action",
     "shipped_root",
     "strip_comment",
 ]
@@ -73,6 +80,8 @@ _TYPE = re.compile(
 #: What a package name and a type name may be.
 PACKAGE_NAME = re.compile(r"[a-z][a-z0-9_]*")
 TYPE_NAME = re.compile(r"[A-Z][A-Za-z0-9]*")
+# The parts of an action other definitions may name: ``pkg/action/Name_Goal``.
+_ACTION_PART = re.compile(r"[A-Z][A-Za-z0-9]*_(?:Goal|Result|Feedback)")
 _FIELD_NAME = re.compile(r"(?!.*__)(?!.*_$)[a-z][a-z0-9_]*")
 _CONSTANT_NAME = re.compile(r"[A-Z][A-Z0-9_]*")
 _CONSTANT = re.compile(r"(?P<name>[A-Za-z_][A-Za-z0-9_]*)\s*=\s*(?P<value>.*)")
@@ -86,7 +95,8 @@ class FieldType:
     """A field's type: ``base`` is a primitive name or a message name (then ``pkg`` is set).
 
     ``array`` is None for a scalar, else ``"unbounded"`` (``T[]``),
-    ``"bounded"`` (``T[<=size]``) or ``"fixed"`` (``T[size]``).
+    ``"bounded"`` (``T[<=size]``) or ``"fixed"`` (``T[size]``).  ``kind`` is
+    ``msg``, or ``action`` for an action's goal, result or feedback.
     """
 
     base: str
@@ -94,6 +104,7 @@ class FieldType:
     string_bound: int | None = None
     array: str | None = None
     size: int | None = None
+    kind: str = "msg"
 
     @property
     def is_nested(self) -> bool:
@@ -103,7 +114,7 @@ class FieldType:
     @property
     def ros_type(self) -> str:
         """The element's ROS name: ``pkg/msg/Name``, or the primitive's name."""
-        return f"{self.pkg}/msg/{self.base}" if self.pkg else self.base
+        return f"{self.pkg}/{self.kind}/{self.base}" if self.pkg else self.base
 
 
 @dataclass(frozen=True, slots=True)
@@ -128,7 +139,7 @@ class Constant:
 
 @dataclass(frozen=True, slots=True)
 class MessageSpec:
-    """A parsed message, or a service's request or response (``kind="srv"``).
+    """A parsed message, a service's request or response (``kind="srv"``), or an action's part.
 
     ``text`` is its raw definition, comments included.
     """
@@ -149,7 +160,10 @@ class MessageSpec:
 
 @dataclass(frozen=True, slots=True)
 class ServiceSpec:
-    """A parsed service: its request and response messages and its raw text."""
+    """A parsed service: its request and response messages and its raw text.
+
+    ``kind`` is ``action`` for the services an action implies.
+    """
 
     pkg: str
     name: str
@@ -157,20 +171,53 @@ class ServiceSpec:
     response: MessageSpec
     text: str
     path: str
+    kind: str = "srv"
 
     @property
     def ros_type(self) -> str:
-        """``pkg/srv/Name``."""
-        return f"{self.pkg}/srv/{self.name}"
+        """``pkg/srv/Name`` (``pkg/action/Name_SendGoal`` for an action's)."""
+        return f"{self.pkg}/{self.kind}/{self.name}"
 
 
-def parse_message(text: str, *, path: str | Path = "<string>", pkg: str, name: str) -> MessageSpec:
+@dataclass(frozen=True, slots=True)
+class ActionSpec:
+    """A parsed action: its goal, result and feedback, and the wire types ROS derives from them.
+
+    ``send_goal`` (request: ``goal_id`` and ``goal``; response: ``accepted``
+    and ``stamp``), ``get_result`` (request: ``goal_id``; response: ``status``
+    and ``result``) and ``feedback_message`` (``goal_id`` and ``feedback``) are
+    named and shaped exactly as rosidl makes them, so their type hashes and
+    wire form match ROS's.
+    """
+
+    pkg: str
+    name: str
+    goal: MessageSpec
+    result: MessageSpec
+    feedback: MessageSpec
+    send_goal: ServiceSpec
+    get_result: ServiceSpec
+    feedback_message: MessageSpec
+    text: str
+    path: str
+
+    @property
+    def ros_type(self) -> str:
+        """``pkg/action/Name``."""
+        return f"{self.pkg}/action/{self.name}"
+
+
+def parse_message(
+    text: str, *, path: str | Path = "<string>", pkg: str, name: str, kind: str = "msg"
+) -> MessageSpec:
     """Parse the text of a ``.msg`` file of package ``pkg``.
 
-    ``path`` only names the source in errors.  Raises IdlError at the first
-    malformed line, duplicate name or out-of-range value.
+    ``path`` only names the source in errors; ``kind`` is the ROS name's
+    middle part (``msg``, or ``srv``/``action`` for the parts of those).
+    Raises IdlError at the first malformed line, duplicate name or
+    out-of-range value.
     """
-    return _parse_lines(_lines(text), 0, path=str(path), pkg=pkg, name=name, kind="msg")
+    return _parse_lines(_lines(text), 0, path=str(path), pkg=pkg, name=name, kind=kind)
 
 
 def parse_service(text: str, *, path: str | Path = "<string>", pkg: str, name: str) -> ServiceSpec:
@@ -181,15 +228,72 @@ def parse_service(text: str, *, path: str | Path = "<string>", pkg: str, name: s
     :func:`parse_message` does.
     """
     lines = _lines(text)
-    separators = [i for i, line in enumerate(lines) if strip_comment(line).strip() == "---"]
-    if len(separators) != 1:
-        line = separators[1] + 1 if separators else len(lines)
-        raise IdlError(str(path), line, "a service needs exactly one '---' line")
-    cut = separators[0]
     common = {"path": str(path), "pkg": pkg, "kind": "srv"}
-    request = _parse_lines(lines[:cut], 0, name=f"{name}_Request", **common)
-    response = _parse_lines(lines[cut + 1 :], cut + 1, name=f"{name}_Response", **common)
-    return ServiceSpec(pkg, name, request, response, "\n".join(lines) + "\n", str(path))
+    (request, offset_r), (response, offset_s) = _sections(lines, 2, str(path), "a service")
+    request_spec = _parse_lines(request, offset_r, name=f"{name}_Request", **common)
+    response_spec = _parse_lines(response, offset_s, name=f"{name}_Response", **common)
+    return ServiceSpec(pkg, name, request_spec, response_spec, "\n".join(lines) + "\n", str(path))
+
+
+def parse_action(text: str, *, path: str | Path = "<string>", pkg: str, name: str) -> ActionSpec:
+    """Parse the text of an ``.action`` file: goal, ``---``, result, ``---``, feedback.
+
+    The parts become messages ``Name_Goal``, ``Name_Result`` and
+    ``Name_Feedback`` of kind ``action``, and the derived ``Name_SendGoal``,
+    ``Name_GetResult`` and ``Name_FeedbackMessage`` types are built around
+    them.  Raises IdlError unless there are exactly two separators, or as
+    :func:`parse_message` does.
+    """
+    lines = _lines(text)
+    where = {"path": str(path), "pkg": pkg, "kind": "action"}
+    parts = [
+        _parse_lines(section, offset, name=f"{name}_{part}", **where)
+        for part, (section, offset) in zip(
+            ("Goal", "Result", "Feedback"), _sections(lines, 3, str(path), "an action")
+        )
+    ]
+    goal, result, feedback = parts
+    uuid = "unique_identifier_msgs/UUID goal_id"
+    own = f"{pkg}/action/{name}"
+
+    def derived(part: str, definition: str) -> MessageSpec:
+        return parse_message(definition, path=f"{own}_{part}", pkg=pkg, name=f"{name}_{part}", kind="action")
+
+    def service(part: str, request: str, response: str) -> ServiceSpec:
+        return ServiceSpec(
+            pkg,
+            f"{name}_{part}",
+            derived(f"{part}_Request", request),
+            derived(f"{part}_Response", response),
+            f"{request}---\n{response}",
+            f"{own}_{part}",
+            "action",
+        )
+
+    return ActionSpec(
+        pkg,
+        name,
+        goal,
+        result,
+        feedback,
+        service("SendGoal", f"{uuid}\n{own}_Goal goal\n", "bool accepted\nbuiltin_interfaces/Time stamp\n"),
+        service("GetResult", f"{uuid}\n", f"int8 status\n{own}_Result result\n"),
+        derived("FeedbackMessage", f"{uuid}\n{own}_Feedback feedback\n"),
+        "\n".join(lines) + "\n",
+        str(path),
+    )
+
+
+def _sections(lines: list[str], count: int, path: str, what: str) -> list[tuple[list[str], int]]:
+    """``lines`` cut at its ``---`` lines into ``count`` sections, each with its line offset."""
+    separators = [i for i, line in enumerate(lines) if strip_comment(line).strip() == "---"]
+    if len(separators) != count - 1:
+        line = separators[count - 1] + 1 if len(separators) >= count else len(lines)
+        expected = "exactly one '---' line" if count == 2 else f"exactly {count - 1} '---' lines"
+        raise IdlError(path, line, f"{what} needs {expected}")
+    starts = [0, *(i + 1 for i in separators)]
+    ends = [*separators, len(lines)]
+    return [(lines[start:end], start) for start, end in zip(starts, ends)]
 
 
 def strip_comment(line: str) -> str:
@@ -264,13 +368,16 @@ def _parse_type(text: str, pkg: str, where: tuple[str, int]) -> FieldType:
     if base in PRIMITIVES:
         return FieldType(base, **bounds)
     parts = base.split("/")
-    if len(parts) == 3 and parts[1] == "msg":
+    kind = "msg"
+    if len(parts) == 3 and parts[1] in ("msg", "action"):
+        kind = parts[1]
         parts = [parts[0], parts[2]]
     if len(parts) == 1:
         parts = [pkg, parts[0]]
-    if len(parts) != 2 or not PACKAGE_NAME.fullmatch(parts[0]) or not TYPE_NAME.fullmatch(parts[1]):
+    name_form = _ACTION_PART if kind == "action" else TYPE_NAME
+    if len(parts) != 2 or not PACKAGE_NAME.fullmatch(parts[0]) or not name_form.fullmatch(parts[1]):
         raise IdlError(*where, f"unknown type {text!r}")
-    return FieldType(parts[1], pkg=parts[0], **bounds)
+    return FieldType(parts[1], pkg=parts[0], kind=kind, **bounds)
 
 
 def _parse_field(

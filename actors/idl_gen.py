@@ -1,9 +1,14 @@
-"""The interface generator: roots of .msg/.srv packages to msgspec Struct modules.
+"""The interface generator: roots of .msg/.srv/.action packages to msgspec Struct modules.
 
 :func:`generate` turns a *root* (a folder of packages ``<root>/<pkg>/msg/*.msg``,
-``<root>/<pkg>/srv/*.srv``) into one module per package and kind, written
-beside the sources: ``<root>/<pkg>/msg/__init__.py`` holds every message of
-``pkg``, ``<root>/<pkg>/srv/__init__.py`` every service.  The root folder's name is the top-level
+``<root>/<pkg>/srv/*.srv``, ``<root>/<pkg>/action/*.action``) into one module
+per package and kind, written beside the sources: ``<root>/<pkg>/msg/__init__.py``
+holds every message of ``pkg``, ``<root>/<pkg>/srv/__init__.py`` every service,
+``<root>/<pkg>/action/__init__.py`` every action.  An action's module holds,
+as rosidl's Python modules do, a class per action with ``Goal``, ``Result``,
+``Feedback`` and ``Impl`` (``SendGoalService``, ``GetResultService``,
+``FeedbackMessage``, ``CancelGoalService``, ``GoalStatusMessage``), beside the
+structs themselves (``Fibonacci_Goal``, ``Fibonacci_SendGoal_Request``...).  The root folder's name is the top-level
 Python package: the shipped root is ``interfaces``, so its types import as
 ``interfaces.std_msgs.msg``; a user's root ``/some/dir/my_root`` imports as
 ``my_root.my_pkg.msg`` once ``/some/dir`` is on ``sys.path``.  ``__init__.py``
@@ -30,6 +35,7 @@ from typing import Any
 from actors.errors import IdlError, InterfaceError
 from actors.idl import (
     FLOATS,
+    ActionSpec,
     INTEGER_RANGES,
     OCTETS,
     PACKAGE_NAME,
@@ -38,6 +44,7 @@ from actors.idl import (
     FieldType,
     MessageSpec,
     ServiceSpec,
+    parse_action,
     parse_message,
     parse_service,
     shipped_root,
@@ -56,30 +63,40 @@ _PYTHON_TYPE = {"bool": "bool", "string": "str", "wstring": "str"} | dict.fromke
 
 
 def render_module(
-    specs: Sequence[MessageSpec] | Sequence[ServiceSpec],
+    specs: Sequence[MessageSpec] | Sequence[ServiceSpec] | Sequence[ActionSpec],
     *,
     modules: Mapping[str, str],
     sources: str,
 ) -> str:
-    """The source of one module holding ``specs`` (all messages, or all services).
+    """The source of one module holding ``specs`` (all messages, all services, or all actions).
 
-    ``modules`` maps every known message (``pkg/msg/Name``) to the module
-    defining it; ``sources`` names the source files in the docstring.  Raises
-    IdlError for a message that (indirectly) contains itself.
+    ``modules`` maps every known message and service (``pkg/msg/Name``,
+    ``pkg/srv/Name``) to the module defining it; ``sources`` names the source
+    files in the docstring.  Raises IdlError for a message that (indirectly)
+    contains itself.
     """
     if all(isinstance(spec, MessageSpec) for spec in specs):
         local = {spec.ros_type: spec for spec in specs}
         writer = _Writer(modules, {spec.name for spec in specs})
         for spec in _dependencies_first(local):
             writer.struct(spec)
-    else:
+    elif all(isinstance(spec, ServiceSpec) for spec in specs):
         suffixes = ("", "_Request", "_Response")
         writer = _Writer(modules, {spec.name + suffix for spec in specs for suffix in suffixes})
         for service in specs:
-            writer.struct(service.request)
-            writer.struct(service.response)
             writer.service(service)
+    else:
+        writer = _Writer(modules, {name for spec in specs for name in _action_names(spec)})
+        for action in specs:
+            writer.action(action)
     return writer.source(sources)
+
+
+def _action_names(spec: Any) -> list[str]:
+    """Every Python name an action's module defines for ``spec``."""
+    services = (spec.send_goal, spec.get_result)
+    messages = (spec.goal, spec.result, spec.feedback, spec.feedback_message)
+    return [spec.name, *(m.name for m in messages), *(s.name + x for s in services for x in ("", "_Request", "_Response"))]
 
 
 def _dependencies_first(local: Mapping[str, MessageSpec]) -> list[MessageSpec]:
@@ -140,6 +157,8 @@ class _Writer:
         self.classes.append("\n".join(body))
 
     def service(self, spec: ServiceSpec) -> None:
+        self.struct(spec.request)
+        self.struct(spec.response)
         name = self._declare(spec.ros_type, spec.name)
         self.classes.append(
             "\n".join(
@@ -151,6 +170,43 @@ class _Writer:
                     f"    __ros_definition__: ClassVar[str] = {_text_literal(spec.text)}",
                     f"    Request = {self.local_names[spec.request.ros_type]}",
                     f"    Response = {self.local_names[spec.response.ros_type]}",
+                ]
+            )
+        )
+
+    def action(self, spec: ActionSpec) -> None:
+        for part in (spec.goal, spec.result, spec.feedback):
+            self.struct(part)
+        self.service(spec.send_goal)
+        self.service(spec.get_result)
+        self.struct(spec.feedback_message)
+        name = self._declare(spec.ros_type, spec.name)
+        local = self.local_names
+        cancel = self._imported("action_msgs/srv/CancelGoal", "CancelGoal")
+        status = self._imported("action_msgs/msg/GoalStatusArray", "GoalStatusArray")
+        self.classes.append(
+            "\n".join(
+                [
+                    f"class {name}:",
+                    f'    """``{spec.ros_type}``: ``Goal``, ``Result``, ``Feedback``.',
+                    "",
+                    "    ``Impl`` holds the types its wire protocol uses.",
+                    '    """',
+                    "",
+                    f"    __ros_type__: ClassVar[str] = {_literal(spec.ros_type)}",
+                    f"    __ros_definition__: ClassVar[str] = {_text_literal(spec.text)}",
+                    f"    Goal = {local[spec.goal.ros_type]}",
+                    f"    Result = {local[spec.result.ros_type]}",
+                    f"    Feedback = {local[spec.feedback.ros_type]}",
+                    "",
+                    "    class Impl:",
+                    '        """The services and topic types of the action\'s wire protocol."""',
+                    "",
+                    f"        SendGoalService = {local[spec.send_goal.ros_type]}",
+                    f"        GetResultService = {local[spec.get_result.ros_type]}",
+                    f"        FeedbackMessage = {local[spec.feedback_message.ros_type]}",
+                    f"        CancelGoalService = {cancel}",
+                    f"        GoalStatusMessage = {status}",
                 ]
             )
         )
@@ -183,12 +239,16 @@ class _Writer:
     def _type_name(self, type_: FieldType) -> str:
         if type_.ros_type in self.local_names:
             return self.local_names[type_.ros_type]
-        imported = self.imports.setdefault(self.modules[type_.ros_type], {})
-        if type_.base not in imported:
-            clash = type_.base in self.taken
-            imported[type_.base] = f"{type_.pkg}_{type_.base}" if clash else type_.base
-            self.taken.add(imported[type_.base])
-        return imported[type_.base]
+        return self._imported(type_.ros_type, type_.base)
+
+    def _imported(self, ros_type: str, base: str) -> str:
+        """The local name of ``base`` imported from the module defining ``ros_type``."""
+        imported = self.imports.setdefault(self.modules[ros_type], {})
+        if base not in imported:
+            clash = base in self.taken
+            imported[base] = f"{ros_type.split('/')[0]}_{base}" if clash else base
+            self.taken.add(imported[base])
+        return imported[base]
 
     def _annotation(self, type_: FieldType) -> str:
         if type_.array and type_.base in OCTETS:
@@ -286,9 +346,10 @@ def render(roots: Sequence[str | Path] = ()) -> dict[Path, str]:
     given = [Path(root).resolve() for root in roots] or [shipped_root()]
     packages = _find_packages([*given, shipped_root()])
     modules = {
-        f"{pkg}/msg/{source.stem}": f"{root.name}.{pkg}.msg"
+        f"{pkg}/{kind}/{source.stem}": f"{root.name}.{pkg}.{kind}"
         for pkg, (root, kinds) in packages.items()
-        for source in kinds.get("msg", ())
+        for kind in ("msg", "srv")
+        for source in kinds.get(kind, ())
     }
     out: dict[Path, str] = {}
     for pkg, (root, kinds) in packages.items():
@@ -299,7 +360,7 @@ def render(roots: Sequence[str | Path] = ()) -> dict[Path, str]:
             _check_references(specs, modules)
             text = render_module(specs, modules=modules, sources=f"{pkg}/{kind}/*.{kind}")
             out[root / pkg / kind / "__init__.py"] = text
-        doc = f"The {pkg} interface package: ``{root.name}.{pkg}.msg`` and ``.srv``."
+        doc = f"The {pkg} interface package: ``{root.name}.{pkg}.msg``, ``.srv`` and ``.action``."
         _where_missing(out, root / pkg / "__init__.py", doc)
     for root in given:
         _where_missing(out, root / "__init__.py", "Interface packages made by ``actors interface generate``.")
@@ -318,7 +379,7 @@ def _find_packages(roots: Iterable[Path]) -> dict[str, tuple[Path, dict[str, lis
         if tops.setdefault(root.name, root) != root:
             raise InterfaceError(f"{root}: another root is already named {root.name!r}")
         found: dict[str, dict[str, list[Path]]] = {}
-        for kind in ("msg", "srv"):
+        for kind in ("msg", "srv", "action"):
             for source in sorted(root.glob(f"*/{kind}/*.{kind}")):
                 found.setdefault(source.parent.parent.name, {}).setdefault(kind, []).append(source)
         for pkg, kinds in found.items():
@@ -328,22 +389,46 @@ def _find_packages(roots: Iterable[Path]) -> dict[str, tuple[Path, dict[str, lis
     return packages
 
 
-def _parse_file(path: Path, pkg: str, kind: str) -> MessageSpec | ServiceSpec:
+_PARSERS = {"msg": parse_message, "srv": parse_service, "action": parse_action}
+
+
+def _parse_file(path: Path, pkg: str, kind: str) -> MessageSpec | ServiceSpec | ActionSpec:
     if not TYPE_NAME.fullmatch(path.stem):
         raise InterfaceError(f"{path}: a type name must be CamelCase letters and digits")
     if path.stem in ("Annotated", "ClassVar"):  # generated modules import these from typing
         raise InterfaceError(f"{path}: the type name {path.stem!r} is reserved")
-    parse = parse_message if kind == "msg" else parse_service
+    parse: Any = _PARSERS[kind]
     return parse(path.read_text(encoding="utf-8"), path=path, pkg=pkg, name=path.stem)
 
 
-def _check_references(specs: Iterable[MessageSpec | ServiceSpec], modules: dict[str, str]) -> None:
+def _parts(spec: MessageSpec | ServiceSpec | ActionSpec) -> tuple[MessageSpec, ...]:
+    """The messages of a spec whose fields its module defines."""
+    if isinstance(spec, ServiceSpec):
+        return (spec.request, spec.response)
+    if isinstance(spec, ActionSpec):
+        return (spec.goal, spec.result, spec.feedback)
+    return (spec,)
+
+
+def _check_references(specs: Iterable[MessageSpec | ServiceSpec | ActionSpec], modules: dict[str, str]) -> None:
     for spec in specs:
-        parts = (spec.request, spec.response) if isinstance(spec, ServiceSpec) else (spec,)
-        for part in parts:
+        if isinstance(spec, ActionSpec):
+            missing = [t for t in _ACTION_NEEDS if t not in modules]
+            if missing:
+                raise IdlError(spec.path, 1, f"an action needs {', '.join(missing)}")
+        for part in _parts(spec):
             for field in part.fields:
                 if field.type.is_nested and field.type.ros_type not in modules:
                     raise IdlError(part.path, field.line, f"unknown type {field.type.ros_type!r}")
+
+
+# What every action's module uses beside its own parts.
+_ACTION_NEEDS = (
+    "unique_identifier_msgs/msg/UUID",
+    "builtin_interfaces/msg/Time",
+    "action_msgs/srv/CancelGoal",
+    "action_msgs/msg/GoalStatusArray",
+)
 
 
 def _where_missing(out: dict[Path, str], path: Path, doc: str) -> None:

@@ -27,6 +27,21 @@ def test_show_service_prints_request_separator_response(capsys):
     assert (code, out) == (0, "int64 a\nint64 b\n---\nint64 sum\n")
 
 
+def test_show_action_prints_goal_result_feedback(capsys):
+    code, out, _ = run(capsys, "show", "example_interfaces/action/Fibonacci")
+    assert (code, out) == (0, "# Goal\nint32 order\n---\n# Result\nint32[] sequence\n---\n# Feedback\nint32[] sequence\n")
+
+
+def test_show_an_actions_wire_type(capsys):
+    _, out, _ = run(capsys, "show", "example_interfaces/action/Fibonacci_FeedbackMessage")
+    assert out == (
+        "unique_identifier_msgs/UUID goal_id\n"
+        "\tuint8[16] uuid\n"
+        "example_interfaces/action/Fibonacci_Feedback feedback\n"
+        "\tint32[] sequence\n"
+    )
+
+
 def test_show_keeps_top_level_comments_only(capsys):
     _, out, _ = run(capsys, "show", "geometry_msgs/PoseStamped")
     assert out == (
@@ -64,14 +79,15 @@ def test_show_unknown_type_is_one_line_and_exit_2(capsys):
     assert err.count("\n") == 1 and "nope_msgs/msg/Nope" in err
 
 
-def test_list_prints_messages_then_services(capsys):
+def test_list_prints_messages_then_services_then_actions(capsys):
     code, out, _ = run(capsys, "list")
     lines = out.splitlines()
     assert code == 0 and lines[0] == "Messages:"
-    services = lines.index("Services:")
+    services, actions = lines.index("Services:"), lines.index("Actions:")
     assert "    std_msgs/msg/String" in lines[1:services]
-    assert "    example_interfaces/srv/AddTwoInts" in lines[services + 1 :]
-    assert all(line.startswith("    ") for line in lines if line not in ("Messages:", "Services:"))
+    assert "    example_interfaces/srv/AddTwoInts" in lines[services + 1 : actions]
+    assert "    example_interfaces/action/Fibonacci" in lines[actions + 1 :]
+    assert all(line.startswith("    ") for line in lines if not line.endswith(":"))
 
 
 def test_generate_and_show_a_user_root(tmp_path, capsys, monkeypatch):

@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 from actors import codec, idl
 from actors.errors import MessageValidationError, UnknownInterfaceError
 from interfaces.builtin_interfaces.msg import Time
+from interfaces.example_interfaces.action import Fibonacci
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.geometry_msgs.msg import PoseStamped, Quaternion, Twist, Vector3
 from interfaces.rcl_interfaces.msg import Log, ParameterDescriptor, ParameterValue
@@ -21,19 +22,26 @@ from interfaces.tutorial_interfaces.msg import Sphere
 
 
 def message_types() -> list[type]:
-    """Every shipped message type, services' requests and responses included."""
+    """Every shipped message type, services' requests and responses and actions' parts included."""
     found = []
     for name in codec.list_types():
         cls = codec.get_type(name)
-        found += [cls.Request, cls.Response] if "/srv/" in name else [cls]
+        if "/srv/" in name:
+            found += [cls.Request, cls.Response]
+        elif "/action/" in name:
+            impl = cls.Impl
+            found += [cls.Goal, cls.Result, cls.Feedback, impl.FeedbackMessage]
+            found += [part for srv in (impl.SendGoalService, impl.GetResultService) for part in (srv.Request, srv.Response)]
+        else:
+            found.append(cls)
     return found
 
 
 @functools.cache
 def messages(cls: type) -> st.SearchStrategy:
     """Any valid ``cls`` message, built from its parsed definition (ranges and bounds respected)."""
-    pkg, _, name = cls.__ros_type__.split("/")
-    spec = idl.parse_message(cls.__ros_definition__, pkg=pkg, name=name)
+    pkg, kind, name = cls.__ros_type__.split("/")
+    spec = idl.parse_message(cls.__ros_definition__, pkg=pkg, name=name, kind=kind)
     return st.builds(cls, **{field.name: values(field.type) for field in spec.fields})
 
 
@@ -142,6 +150,12 @@ def test_malformed_bytes_are_validation_errors():
         ("example_interfaces/AddTwoInts", AddTwoInts),
         ("example_interfaces/srv/AddTwoInts_Request", AddTwoInts.Request),
         ("example_interfaces/srv/AddTwoInts_Response", AddTwoInts.Response),
+        ("example_interfaces/action/Fibonacci", Fibonacci),
+        ("example_interfaces/Fibonacci", Fibonacci),
+        ("example_interfaces/action/Fibonacci_Goal", Fibonacci.Goal),
+        ("example_interfaces/action/Fibonacci_SendGoal", Fibonacci.Impl.SendGoalService),
+        ("example_interfaces/action/Fibonacci_GetResult_Response", Fibonacci.Impl.GetResultService.Response),
+        ("example_interfaces/action/Fibonacci_FeedbackMessage", Fibonacci.Impl.FeedbackMessage),
     ],
 )
 def test_get_type_accepts_every_name_form(name, expected):
@@ -149,7 +163,18 @@ def test_get_type_accepts_every_name_form(name, expected):
 
 
 @pytest.mark.parametrize(
-    "name", ["std_msgs/msg/Nope", "nope/Nope", "std_msgs/srv/String", "String", "a/b/c/d", "std_msgs/x/String", "../x/Y"]
+    "name",
+    [
+        "std_msgs/msg/Nope",
+        "nope/Nope",
+        "std_msgs/srv/String",
+        "String",
+        "a/b/c/d",
+        "std_msgs/x/String",
+        "../x/Y",
+        "example_interfaces/action/Nope",
+        "example_interfaces/action/Fibonacci_Nope",
+    ],
 )
 def test_get_type_rejects_unknown_names(name):
     with pytest.raises(UnknownInterfaceError, match=repr(name)):
@@ -163,12 +188,13 @@ def test_ros_name():
         codec.ros_name(int)
 
 
-def test_list_types_lists_messages_and_services():
+def test_list_types_lists_messages_services_and_actions():
     names = codec.list_types()
     assert names == sorted(names)
     assert {"std_msgs/msg/String", "geometry_msgs/msg/Twist", "rcl_interfaces/msg/Log"} <= set(names)
     assert {"example_interfaces/srv/AddTwoInts", "rcl_interfaces/srv/ListParameters"} <= set(names)
-    assert not any(name.endswith(("_Request", "_Response")) for name in names)
+    assert {"example_interfaces/action/Fibonacci", "action_msgs/srv/CancelGoal", "unique_identifier_msgs/msg/UUID"} <= set(names)
+    assert not any(name.endswith(("_Request", "_Response", "_Goal", "_FeedbackMessage")) for name in names)
 
 
 def test_register_module_adds_its_types(monkeypatch, tmp_path):

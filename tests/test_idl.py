@@ -1,4 +1,4 @@
-"""Tests for actors.idl and actors.idl_gen: parsing .msg/.srv text, generating modules, drift."""
+"""Tests for actors.idl and actors.idl_gen: parsing .msg/.srv/.action text, generating modules, drift."""
 
 from __future__ import annotations
 
@@ -34,6 +34,7 @@ Header local_header
 PART = "int16\tid -3  # tab-separated, trailing comment\nwstring note\n"
 HEADER = "# a Header of this package, not std_msgs'\nuint32 seq\n"
 LOOKUP = "string key\nPart template\n---\nThing thing\nbool found\n"
+MOVE = "# where to\nPart target\nfloat64 speed 0.5\n---\nbool arrived\n---\n# progress\nfloat32 left\n"
 
 
 def write_root(base: Path, name: str, files: dict[str, str]) -> Path:
@@ -56,6 +57,7 @@ def user_root(tmp_path, monkeypatch):
             "my_pkg/msg/Part.msg": PART,
             "my_pkg/msg/Header.msg": HEADER,
             "my_pkg/srv/Lookup.srv": LOOKUP,
+            "my_pkg/action/Move.action": MOVE,
         },
     )
     idl_gen.generate([root])
@@ -154,6 +156,64 @@ def test_service_errors_count_lines_from_the_file_start():
     assert caught.value.line == 4
 
 
+def test_parse_action_splits_goal_result_feedback():
+    spec = idl.parse_action(MOVE, path="Move.action", pkg="my_pkg", name="Move")
+    assert spec.ros_type == "my_pkg/action/Move"
+    assert [p.ros_type for p in (spec.goal, spec.result, spec.feedback)] == [
+        "my_pkg/action/Move_Goal",
+        "my_pkg/action/Move_Result",
+        "my_pkg/action/Move_Feedback",
+    ]
+    assert spec.goal.fields[0].type.ros_type == "my_pkg/msg/Part"  # bare name: same package's msg
+    assert spec.goal.fields[1].default == 0.5
+    assert [(f.name, f.line) for f in spec.result.fields] == [("arrived", 5)]
+    assert [(f.name, f.line) for f in spec.feedback.fields] == [("left", 8)]
+    assert spec.text == MOVE
+
+
+def test_parse_action_derives_the_wire_types_as_rosidl_does():
+    spec = idl.parse_action(MOVE, pkg="my_pkg", name="Move")
+
+    def shape(message: idl.MessageSpec) -> list[tuple[str, str]]:
+        return [(f.name, f.type.ros_type) for f in message.fields]
+
+    assert spec.send_goal.ros_type == "my_pkg/action/Move_SendGoal"
+    assert spec.send_goal.request.ros_type == "my_pkg/action/Move_SendGoal_Request"
+    assert shape(spec.send_goal.request) == [
+        ("goal_id", "unique_identifier_msgs/msg/UUID"),
+        ("goal", "my_pkg/action/Move_Goal"),
+    ]
+    assert shape(spec.send_goal.response) == [("accepted", "bool"), ("stamp", "builtin_interfaces/msg/Time")]
+    assert spec.get_result.ros_type == "my_pkg/action/Move_GetResult"
+    assert shape(spec.get_result.request) == [("goal_id", "unique_identifier_msgs/msg/UUID")]
+    assert shape(spec.get_result.response) == [("status", "int8"), ("result", "my_pkg/action/Move_Result")]
+    assert spec.feedback_message.ros_type == "my_pkg/action/Move_FeedbackMessage"
+    assert shape(spec.feedback_message) == [
+        ("goal_id", "unique_identifier_msgs/msg/UUID"),
+        ("feedback", "my_pkg/action/Move_Feedback"),
+    ]
+
+
+@pytest.mark.parametrize(("text", "line"), [("int32 a\n---\nint32 b\n", 3), ("---\n---\n---\n", 3)])
+def test_action_needs_exactly_two_separators(text, line):
+    with pytest.raises(IdlError, match="exactly 2 '---' lines") as caught:
+        idl.parse_action(text, path="A.action", pkg="p", name="A")
+    assert caught.value.line == line
+
+
+def test_action_errors_count_lines_from_the_file_start():
+    with pytest.raises(IdlError) as caught:
+        idl.parse_action("---\n---\nint32 b\nint32 b\n", path="A.action", pkg="p", name="A")
+    assert (caught.value.path, caught.value.line) == ("A.action", 4)
+
+
+def test_only_an_actions_parts_are_action_types():
+    spec = idl.parse_message("p/action/Move_Goal g\n", pkg="p", name="X")
+    assert spec.fields[0].type.ros_type == "p/action/Move_Goal"
+    with pytest.raises(IdlError, match="unknown type"):
+        idl.parse_message("p/action/Move g\n", pkg="p", name="X")
+
+
 def test_strip_comment_ignores_hashes_in_quotes():
     assert idl.strip_comment('string s "a#b" # note') == 'string s "a#b" '
     assert idl.strip_comment("string s 'it\\'s#' #x") == "string s 'it\\'s#' "
@@ -164,7 +224,8 @@ def test_strip_comment_ignores_hashes_in_quotes():
 
 def test_shipped_modules_do_not_drift_from_their_sources():
     rendered = idl_gen.render([idl.shipped_root()])
-    sources = sorted(idl.shipped_root().glob("*/*/*.msg")) + sorted(idl.shipped_root().glob("*/*/*.srv"))
+    sources = [path for kind in ("msg", "srv", "action") for path in idl.shipped_root().glob(f"*/*/*.{kind}")]
+    assert any(path.suffix == ".action" for path in sources)
     assert {source.parent / "__init__.py" for source in sources} <= set(rendered)
     for path, text in rendered.items():
         assert path.exists(), f"{path} is missing: run python -m actors interface generate"
@@ -201,6 +262,30 @@ def test_user_root_types_behave_like_shipped_ones(user_root):
     assert codec.decode_json(codec.encode_json(thing), Thing) == thing
 
 
+def test_user_root_actions_have_rclpys_shape(user_root):
+    from my_root.my_pkg import action
+    from my_root.my_pkg.action import Move
+    from my_root.my_pkg.msg import Part
+
+    from interfaces.action_msgs.msg import GoalStatusArray
+    from interfaces.action_msgs.srv import CancelGoal
+    from interfaces.unique_identifier_msgs.msg import UUID
+
+    assert Move.__ros_type__ == "my_pkg/action/Move" and Move.__ros_definition__ == MOVE
+    assert (Move.Goal, Move.Result, Move.Feedback) == (action.Move_Goal, action.Move_Result, action.Move_Feedback)
+    assert Move.Goal().speed == 0.5 and type(Move.Goal().target) is Part
+    impl = Move.Impl
+    assert impl.CancelGoalService is CancelGoal and impl.GoalStatusMessage is GoalStatusArray
+    request = impl.SendGoalService.Request(goal_id=UUID(uuid=bytes(range(16))), goal=Move.Goal(speed=2.0))
+    assert impl.SendGoalService.Request.__ros_type__ == "my_pkg/action/Move_SendGoal_Request"
+    assert codec.decode(codec.encode(request), impl.SendGoalService.Request) == request
+    assert impl.GetResultService.Response().result == Move.Result()
+    feedback = impl.FeedbackMessage(feedback=Move.Feedback(left=1.5))
+    assert feedback.goal_id.uuid == bytes(16) and feedback.feedback.left == 1.5
+    with pytest.raises(MessageValidationError):  # a UUID is exactly 16 bytes
+        codec.convert({"goal_id": {"uuid": [1, 2]}}, impl.FeedbackMessage)
+
+
 @pytest.mark.parametrize(
     ("change", "path"),
     [
@@ -228,7 +313,11 @@ def test_user_root_is_found_by_name_once_registered(user_root, monkeypatch):
 
     assert codec.get_type("my_pkg/Thing") is Thing
     assert codec.get_type("my_pkg/srv/Lookup_Request").__ros_type__ == "my_pkg/srv/Lookup_Request"
-    assert {"my_pkg/msg/Thing", "my_pkg/srv/Lookup", "std_msgs/msg/String"} <= set(codec.list_types())
+    assert {"my_pkg/msg/Thing", "my_pkg/srv/Lookup", "my_pkg/action/Move", "std_msgs/msg/String"} <= set(
+        codec.list_types()
+    )
+    assert codec.get_type("my_pkg/Move").Goal.__ros_type__ == "my_pkg/action/Move_Goal"
+    assert codec.get_type("my_pkg/action/Move_SendGoal_Response").__ros_type__.endswith("_SendGoal_Response")
     # Two classes named Header: the schema still titles each with its ROS name.
     titles = {d["title"] for d in codec.json_schema(Thing)["$defs"].values()}
     assert {"std_msgs/msg/Header", "my_pkg/msg/Header", "my_pkg/msg/Part"} <= titles
@@ -255,6 +344,7 @@ def test_generate_reports_a_malformed_line(tmp_path):
         ({"pkg/msg/A.msg": "int8 x\nNope n\n"}, ("pkg/msg/A.msg", 2), "unknown type 'pkg/msg/Nope'"),
         ({"pkg/srv/S.srv": "---\nother_pkg/Thing t\n"}, ("pkg/srv/S.srv", 2), "unknown type"),
         ({"pkg/msg/A.msg": "B b\n", "pkg/msg/B.msg": "A a\n"}, ("pkg/msg/B.msg", 1), "contains itself"),
+        ({"pkg/action/A.action": "---\n---\nNope n\n"}, ("pkg/action/A.action", 3), "unknown type"),
     ],
 )
 def test_generate_rejects_unknown_and_recursive_types(tmp_path, files, where, problem):

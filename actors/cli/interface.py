@@ -1,4 +1,4 @@
-"""``actors interface list|show|generate``: message and service types, as ``ros2 interface`` shows them."""
+"""``actors interface list|show|generate``: message, service and action types, as ``ros2 interface`` shows them."""
 
 from __future__ import annotations
 
@@ -15,31 +15,32 @@ def register(subparsers: Any) -> None:
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
     root_help = "also search this generated interface root (repeatable)"
 
-    listing = verbs.add_parser("list", help="list every message and service type")
+    listing = verbs.add_parser("list", help="list every message, service and action type")
     listing.add_argument("--root", action="append", default=[], type=Path, help=root_help)
     listing.set_defaults(func=list_types)
 
     show = verbs.add_parser("show", help="print a type's definition, nested types expanded")
-    show.add_argument("type", metavar="TYPE", help="pkg/msg/Name, pkg/srv/Name or pkg/Name")
+    show.add_argument("type", metavar="TYPE", help="pkg/msg/Name, pkg/srv/Name, pkg/action/Name or pkg/Name")
     show.add_argument("--no-comments", action="store_true", help="leave out comments and blank lines")
     show.add_argument("--root", action="append", default=[], type=Path, help=root_help)
     show.set_defaults(func=show_type)
 
-    generate = verbs.add_parser("generate", help="generate Python modules beside .msg/.srv sources")
+    generate = verbs.add_parser("generate", help="generate Python modules beside .msg/.srv/.action sources")
     generate.add_argument(
         "roots", nargs="*", metavar="ROOT", type=Path,
-        help="a folder of packages <ROOT>/<pkg>/msg/*.msg (default: the shipped interfaces)",
+        help="a folder of packages <ROOT>/<pkg>/msg/*.msg, srv/*.srv, action/*.action "
+        "(default: the shipped interfaces)",
     )
     generate.set_defaults(func=generate_modules)
 
 
 def list_types(args: argparse.Namespace) -> None:
-    """Print ``Messages:`` and ``Services:``, each followed by its types indented four spaces."""
+    """Print ``Messages:``, ``Services:`` and ``Actions:``, each followed by its types indented four spaces."""
     from actors import codec
 
     _register_roots(args.root)
     names = codec.list_types()
-    for title, kind in (("Messages", "/msg/"), ("Services", "/srv/")):
+    for title, kind in (("Messages", "/msg/"), ("Services", "/srv/"), ("Actions", "/action/")):
         print(f"{title}:")
         for name in names:
             if kind in name:
@@ -53,10 +54,15 @@ def show_type(args: argparse.Namespace) -> None:
     _register_roots(args.root)
     cls = codec.get_type(args.type)
     comments = not args.no_comments
-    if hasattr(cls, "Request"):
-        lines = [*_expand(cls.Request, comments), "---", *_expand(cls.Response, comments)]
+    if hasattr(cls, "Goal"):
+        parts = [cls.Goal, cls.Result, cls.Feedback]
+    elif hasattr(cls, "Request"):
+        parts = [cls.Request, cls.Response]
     else:
-        lines = _expand(cls, comments)
+        parts = [cls]
+    lines = _expand(parts[0], comments)
+    for part in parts[1:]:
+        lines += ["---", *_expand(part, comments)]
     for line in lines:
         print(line)
 
@@ -79,9 +85,9 @@ def _expand(cls: type, comments: bool, depth: int = 0) -> list[str]:
     """
     from actors import codec, idl
 
-    pkg, _, name = cls.__ros_type__.split("/")
+    pkg, kind, name = cls.__ros_type__.split("/")
     text = cls.__ros_definition__
-    spec = idl.parse_message(text, path=cls.__ros_type__, pkg=pkg, name=name)
+    spec = idl.parse_message(text, path=cls.__ros_type__, pkg=pkg, name=name, kind=kind)
     nested = {field.line: field.type.ros_type for field in spec.fields if field.type.is_nested}
     keep_comments = comments and depth == 0
     lines = []

@@ -1,0 +1,1 @@
+"""The action_msgs interface package: ``interfaces.action_msgs.msg``, ``.srv`` and ``.action``."""
