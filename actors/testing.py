@@ -2,41 +2,104 @@
 
 ::
 
-    @pytest.mark.asyncio          # not needed with asyncio_mode = "auto"
     @pytest.mark.virtual_time
     async def test_an_hour():
         await anyio.sleep(3600)   # takes milliseconds
 
-The test's loop is a :class:`~actors.clock.VirtualTimeLoop`, provided through
-pytest-asyncio's ``pytest_asyncio_loop_factories`` hook (pytest-asyncio 1.4+).
-Unmarked async tests keep an ordinary asyncio loop.
+The mark is enough, in pytest-asyncio's ``strict`` mode as in ``auto``: the
+plugin adds ``asyncio`` to a marked coroutine test while it is collected, and
+hands pytest-asyncio (1.4+) a :class:`~actors.clock.VirtualTimeLoop` through
+its ``pytest_asyncio_loop_factories`` hook, so the test and its async fixtures
+share one virtual clock.  The mark works on a test, a class or a module
+(``pytestmark = pytest.mark.virtual_time``).  Unmarked tests are left to
+pytest-asyncio as they are: nothing is marked for them, and their loop is the
+ordinary one.
 """
 
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Callable, Mapping
+import inspect
+from collections.abc import Callable, Generator, Mapping
 from typing import Any
 
 import pytest
 
 from actors.clock import VirtualTimeLoop
 
-__all__ = ["pytest_configure", "pytest_asyncio_loop_factories"]
+__all__ = [
+    "pytest_configure",
+    "pytest_pycollect_makeitem",
+    "pytest_runtest_setup",
+    "pytest_asyncio_loop_factories_virtual_time",
+    "pytest_asyncio_loop_factories",
+]
+
+_MARK = "virtual_time"
+_NEEDS = "the virtual_time mark needs pytest-asyncio 1.4 or newer: pip install 'pytest-asyncio>=1.4'"
 
 
 def pytest_configure(config: pytest.Config) -> None:
     """Declare the ``virtual_time`` marker."""
     config.addinivalue_line(
-        "markers", "virtual_time: run this async test on actors' VirtualTimeLoop (virtual time)"
+        "markers", f"{_MARK}: run this async test on actors' VirtualTimeLoop (virtual time)"
     )
 
 
+@pytest.hookimpl(wrapper=True, tryfirst=True)
+def pytest_pycollect_makeitem(
+    collector: pytest.Module | pytest.Class, name: str, obj: object
+) -> Generator[None, Any, Any]:
+    """Mark a ``virtual_time`` coroutine test ``asyncio`` before pytest-asyncio looks for the mark.
+
+    pytest-asyncio decides while collecting (in strict mode, by the ``asyncio``
+    mark alone), so adding the mark later, when the items exist, is too late.
+    """
+    if (
+        collector.config.pluginmanager.hasplugin("asyncio")
+        and inspect.iscoroutinefunction(obj)
+        and collector.istestfunction(obj, name)
+        and _marked(obj, collector, _MARK)
+        and not _marked(obj, collector, "asyncio")
+    ):
+        pytest.mark.asyncio(obj)
+    return (yield)
+
+
+def _marked(obj: object, collector: pytest.Collector, name: str) -> bool:
+    """Whether the function, its class or its module carries the mark ``name``."""
+    own = getattr(obj, "pytestmark", [])
+    own = own if isinstance(own, list) else [own]
+    return any(mark.name == name for mark in own) or collector.get_closest_marker(name) is not None
+
+
+def pytest_runtest_setup(item: pytest.Item) -> None:
+    """Fail a ``virtual_time`` test at once when no pytest-asyncio could give it a virtual loop."""
+    if item.get_closest_marker(_MARK) is None:
+        return
+    manager = item.config.pluginmanager
+    if not manager.hasplugin("asyncio") or not hasattr(item.config.hook, "pytest_asyncio_loop_factories"):
+        pytest.fail(_NEEDS, pytrace=False)
+
+
+# pytest-asyncio's hook is firstresult: the first implementation to answer decides.  This
+# one (pytest reads only names starting with pytest_, hence the suffix) runs first and answers only for marked tests, so a project's own hook (uvloop, say)
+# still decides for every other test.
+@pytest.hookimpl(optionalhook=True, tryfirst=True, specname="pytest_asyncio_loop_factories")
+def pytest_asyncio_loop_factories_virtual_time(
+    config: pytest.Config, item: pytest.Item
+) -> Mapping[str, Callable[[], Any]] | None:
+    """The virtual-time loop for a test marked ``virtual_time``; no answer for any other."""
+    if item.get_closest_marker(_MARK) is not None:
+        return {_MARK: VirtualTimeLoop}
+    return None
+
+
+# pytest-asyncio requires an answer for every async test once any implementation exists:
+# the last word is the loop it would have made without one.
 @pytest.hookimpl(optionalhook=True, trylast=True)
 def pytest_asyncio_loop_factories(
     config: pytest.Config, item: pytest.Item
 ) -> Mapping[str, Callable[[], Any]]:
-    """The virtual-time loop for tests marked ``virtual_time``, a plain asyncio loop otherwise."""
-    if item.get_closest_marker("virtual_time") is not None:
-        return {"virtual_time": VirtualTimeLoop}
+    """An ordinary asyncio loop (from the current event loop policy) for every other async test."""
     return {"asyncio": asyncio.new_event_loop}
