@@ -3,7 +3,10 @@
 :func:`diagnose` runs every check on a runtime's graph as it is now; each
 check passes or fails with one reason per problem found:
 
-- publishers without subscribers, and subscriptions without publishers;
+- publishers without subscribers, and subscriptions without publishers: these
+  are *warnings*, as in ``ros2 doctor`` (a graph may well publish what only a
+  command line reads); a check with warnings still passes unless the caller
+  counts warnings as failures (``actors doctor --include-warnings``);
 - endpoints whose type differs from their topic's (the topic table refuses
   them, so this guards the invariant rather than expecting failures);
 - QoS incompatibility: a best-effort publisher to a reliable subscription, a
@@ -46,11 +49,16 @@ _OPTIONAL = ("pillow",)
 
 
 class Check(msgspec.Struct, frozen=True, kw_only=True):
-    """One check: its name, whether it passed, and a reason per problem found."""
+    """One check: its name, whether it passed, a reason per problem found, a text per warning."""
 
     name: str
     passed: bool
     reasons: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
+
+    def failed(self, include_warnings: bool = False) -> bool:
+        """Whether this check failed; with ``include_warnings``, a warning is a failure too."""
+        return not self.passed or (include_warnings and bool(self.warnings))
 
 
 class LagEvent(msgspec.Struct, frozen=True, kw_only=True):
@@ -77,10 +85,9 @@ class Report(msgspec.Struct, frozen=True, kw_only=True):
     platform: dict[str, str]
     versions: dict[str, str]
 
-    @property
-    def failed(self) -> list[Check]:
-        """The checks that failed."""
-        return [check for check in self.checks if not check.passed]
+    def failures(self, include_warnings: bool = False) -> list[Check]:
+        """The checks that failed (with ``include_warnings``, those with warnings too)."""
+        return [check for check in self.checks if check.failed(include_warnings)]
 
 
 def diagnose(runtime: Runtime, monitor: LagMonitor | None = None) -> Report:
@@ -127,7 +134,10 @@ def _visible(endpoints: Iterable[EndpointInfo]) -> list[EndpointInfo]:
 
 
 def _one_sided(topics: list[TopicInfo], *, publishers: bool) -> Check:
-    """Topics with publishers but no subscriptions (or, with ``publishers=False``, the reverse)."""
+    """Topics with publishers but no subscriptions (or, with ``publishers=False``, the reverse).
+
+    Warnings, not failures, as ros2doctor's topic check has them.
+    """
     reasons = []
     for topic in topics:
         pubs, subs = _visible(topic.publishers), _visible(topic.subscriptions)
@@ -141,7 +151,7 @@ def _one_sided(topics: list[TopicInfo], *, publishers: bool) -> Check:
             )
             reasons.append(f"{topic.name} ({topic.type}) is {what.format(nodes)}")
     name = "publishers without subscribers" if publishers else "subscriptions without publishers"
-    return Check(name=name, passed=not reasons, reasons=tuple(reasons))
+    return Check(name=name, passed=True, warnings=tuple(reasons))
 
 
 def _per_topic(topics: list[TopicInfo], name: str, find: Callable[[TopicInfo], list[str]]) -> Check:

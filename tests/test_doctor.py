@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import time
 
 import anyio
@@ -28,8 +29,8 @@ class Listener(Node):
 
 
 def checks(report: Report) -> dict[str, tuple[str, ...] | None]:
-    """Each check's reasons, or None when it passed."""
-    return {c.name: None if c.passed else c.reasons for c in report.checks}
+    """Each check's reasons and warnings, or None when it passed without a warning."""
+    return {c.name: (*c.reasons, *c.warnings) or None for c in report.checks}
 
 
 @pytest.mark.virtual_time
@@ -55,7 +56,7 @@ async def test_a_clean_graph_passes_every_check():
 
 
 @pytest.mark.virtual_time
-async def test_one_sided_topics_fail_but_rosout_parameter_events_and_the_cli_do_not_count():
+async def test_one_sided_topics_warn_but_rosout_parameter_events_and_the_cli_do_not_count():
     class Lonely(Node):
         def __init__(self) -> None:
             super().__init__("lonely")
@@ -65,7 +66,14 @@ async def test_one_sided_topics_fail_but_rosout_parameter_events_and_the_cli_do_
 
     async with Runtime(name="doctor_sided") as rt:
         rt.spawn(Lonely)
-        report = checks(diagnose(rt))
+        full = diagnose(rt)
+        report = checks(full)
+    # Warnings, as in ros2doctor: the checks pass unless warnings count as failures.
+    assert full.failures() == []
+    assert {c.name for c in full.failures(include_warnings=True)} == {
+        "publishers without subscribers",
+        "subscriptions without publishers",
+    }
     assert report["publishers without subscribers"] == (
         "/shout (std_msgs/msg/String) is published by /lonely but nobody subscribes",
     )
@@ -222,3 +230,26 @@ async def test_a_callback_blocking_the_loop_is_named_by_node_and_callback(tmp_pa
     assert reason.startswith("/blocker: Blocker.block blocked the loop 1 time(s), longest 0.")
     (event,) = [e for e in report.lag_events if e.node == "/blocker"]
     assert event.callback == "Blocker.block" and event.lag >= 0.05
+
+
+async def test_the_command_line_prints_warnings_and_counts_them_only_with_include_warnings(
+    tmp_path, monkeypatch, capsys
+):
+    from actors.cli import main
+
+    monkeypatch.setenv("XDG_RUNTIME_DIR", str(tmp_path))
+    async with Runtime(name="doctor_warnings", attach=[ControlEndpoint()]) as rt:
+        rt.spawn(Talker)
+        assert await anyio.to_thread.run_sync(main, ["doctor"]) == 0
+        plain = capsys.readouterr().out
+        assert await anyio.to_thread.run_sync(main, ["doctor", "-iw"]) == 0
+        strict = capsys.readouterr().out
+    reason = "/chatter (std_msgs/msg/String) is published by /talker but nobody subscribes"
+    lines = plain.splitlines()
+    assert lines[0] == f"WARNING: publishers without subscribers: {reason}"
+    assert re.fullmatch(r"All (\d+) checks passed", lines[-1])
+    total = re.fullmatch(r"All (\d+) checks passed", lines[-1])[1]
+    assert strict.splitlines() == [
+        f"1/{total} checks failed",
+        f"  publishers without subscribers: {reason}",
+    ]

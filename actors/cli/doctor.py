@@ -4,9 +4,12 @@ from __future__ import annotations
 
 import argparse
 from collections.abc import Iterable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from actors.cli._client import add_verb, connect
+
+if TYPE_CHECKING:
+    from actors.doctor import Check
 
 __all__ = ["register"]
 
@@ -20,13 +23,24 @@ def register(subparsers: Any) -> None:
         help="check the graph's health: topics, QoS, crashes, drops, lag",
     )
     parser.add_argument(
-        "--report", action="store_true", help="also print the platform, versions and graph report"
+        "-r",
+        "--report",
+        action="store_true",
+        help="also print the platform, versions and graph report",
+    )
+    parser.add_argument(
+        "-iw",
+        "--include-warnings",
+        action="store_true",
+        help="count warnings (e.g. a publisher nobody subscribes to) as failed checks",
     )
 
 
 def doctor(args: argparse.Namespace) -> None:
-    """Print ``All N checks passed`` or ``k/N checks failed`` and each failure's reasons.
+    """Print the warnings, then ``All N checks passed`` or ``k/N checks failed`` and why.
 
+    As ``ros2 doctor``, a warning does not fail its check unless
+    ``--include-warnings`` is given; then it is listed with the failures.
     Exits 0 either way: the checks ran.  Only an unreachable graph is an error.
     """
     from actors.control import Diagnose
@@ -77,16 +91,26 @@ def doctor(args: argparse.Namespace) -> None:
             if report.lag_measured
             else [("measured", "no (virtual time)")],
         )
-        _section("CHECKS", [(c.name, "passed" if c.passed else "FAILED") for c in report.checks])
+        _section("CHECKS", [(c.name, _verdict(c, args.include_warnings)) for c in report.checks])
         print()
-    failed = report.failed
+    failed = report.failures(args.include_warnings)
+    if not args.include_warnings:
+        for check in report.checks:
+            for warning in check.warnings:
+                print(f"WARNING: {check.name}: {warning}")
     if not failed:
         print(f"All {len(report.checks)} checks passed")
         return
     print(f"{len(failed)}/{len(report.checks)} checks failed")
     for check in failed:
-        for reason in check.reasons:
+        for reason in (*check.reasons, *check.warnings):
             print(f"  {check.name}: {reason}")
+
+
+def _verdict(check: Check, include_warnings: bool) -> str:
+    if check.failed(include_warnings):
+        return "FAILED"
+    return f"passed, {len(check.warnings)} warning(s)" if check.warnings else "passed"
 
 
 def _section(title: str, rows: Iterable[tuple[str, str]]) -> None:
