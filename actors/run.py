@@ -1,17 +1,23 @@
-"""``python -m actors.run GRAPH``: run a graph file until its duration ends or a signal stops it.
+"""``python -m actors.run GRAPH`` (or ``actors launch GRAPH``): run a graph file until it is stopped.
 
-Exit codes: 0 after a graceful stop (end of duration, SIGINT, SIGTERM); 1 when a
-failure escalates past the supervisor (its cause printed once); 2 for misuse
-(bad options, a malformed graph file), with one line on stderr.
+Exit codes: 0 after a graceful stop (end of duration, SIGINT, SIGTERM); 1 when
+the graph fails: a node's constructor raises, the supervisor gives up, or any
+other error ends the run; 2 for misuse (bad options, a malformed graph file),
+with one line on stderr.  A failure is printed once, as one ``[FATAL]`` line
+naming what failed and the error, followed by the frames of the traceback that
+are the user's own (not the runtime's, anyio's or asyncio's).
 """
 
 from __future__ import annotations
 
 import argparse
+import asyncio
 import signal
 import sys
-from collections.abc import Sequence
+import traceback
+from collections.abc import Iterator, Sequence
 from pathlib import Path
+from types import FrameType
 from typing import Any
 
 import anyio
@@ -24,18 +30,25 @@ from actors.log import LEVELS, configure_console
 from actors.node import Node
 from actors.runtime import Runtime
 
-__all__ = ["main", "run_graph"]
+__all__ = ["main", "add_arguments", "launch", "run_graph", "NodeStartError"]
 
 
-def _parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
-        prog="python -m actors.run", description="Run an actors graph file."
-    )
+class NodeStartError(Exception):
+    """A node's constructor raised while the graph started it; the error is ``__cause__``."""
+
+    def __init__(self, node: str, use: str, error: BaseException) -> None:
+        self.node = node
+        self.use = use
+        super().__init__(f"node {node} ({use}) failed to start: {_one_line(error)}")
+        self.__cause__ = error
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """The graph file and the options that override its ``[runtime]`` table."""
     parser.add_argument("graph", help="the graph file, e.g. graph.toml")
     parser.add_argument("--clock", choices=("wall", "virtual"), help="override [runtime] clock")
     parser.add_argument("--duration", type=_seconds, help="seconds to run; 0 runs until stopped")
     parser.add_argument("--log-level", choices=sorted(LEVELS), help="override [runtime] log_level")
-    return parser
 
 
 def _seconds(text: str) -> float:
@@ -58,8 +71,10 @@ async def run_graph(
 ) -> None:
     """Spawn the graph's nodes in file order and run until ``duration`` or a signal.
 
-    Raises Escalation if the supervisor gives up, and what a node's constructor
-    raises (wrapped in GraphFileError naming the node's entry).
+    Raises Escalation if the supervisor gives up; NodeStartError when a node's
+    constructor raises (delayed or not); GraphFileError naming the node's entry
+    when the graph asks for what cannot be (a parameter override of the wrong
+    type, a duplicate name).
     """
     policy = graph.supervisor.policy()
     async with Runtime(name=name, supervisor=policy, attach=[ControlEndpoint()]) as rt:
@@ -89,14 +104,27 @@ def _spawn(rt: Runtime, index: int, entry: NodeEntry, cls: type[Node]) -> None:
         )
     except ActorsError as exc:
         raise GraphFileError(f"nodes[{index}] ({entry.use}): {exc}") from None
+    except Exception as exc:
+        raise NodeStartError(_node_name(exc, cls) or f"nodes[{index}]", entry.use, exc) from exc
+
+
+def _node_name(error: BaseException, cls: type[Node]) -> str | None:
+    """The full name the failed constructor had given its node, if it got that far.
+
+    The instance is still reachable from the constructor's frame in the traceback.
+    """
+    for frame, _ in traceback.walk_tb(error.__traceback__):
+        core = getattr(frame.f_locals.get("self"), "_core", None)
+        if isinstance(frame.f_locals.get("self"), cls) and core is not None:
+            return str(core.fqn)
+    return None
 
 
 async def _spawn_later(rt: Runtime, index: int, entry: NodeEntry, cls: type[Node]) -> None:
     await anyio.sleep(entry.delay)
-    try:
-        _spawn(rt, index, entry, cls)
-    except GraphFileError as exc:
-        rt._fail(exc)
+    # A failure leaves the runtime's block (in an ExceptionGroup), which stops every node
+    # gracefully before it reaches launch(), which unwraps it.
+    _spawn(rt, index, entry, cls)
 
 
 async def _stop_on_signal(rt: Runtime) -> None:
@@ -106,9 +134,15 @@ async def _stop_on_signal(rt: Runtime) -> None:
             return
 
 
-def main(argv: Sequence[str] | None = None) -> int:
+def main(argv: Sequence[str] | None = None, prog: str = "python -m actors.run") -> int:
     """Parse options, load the graph, run it; return the exit code."""
-    args = _parser().parse_args(argv)
+    parser = argparse.ArgumentParser(prog=prog, description="Run an actors graph file.")
+    add_arguments(parser)
+    return launch(parser.parse_args(argv))
+
+
+def launch(args: argparse.Namespace) -> int:
+    """Load and run the graph that :func:`add_arguments`' options name; return the exit code."""
     try:
         graph, classes = load_graph(args.graph)
     except GraphFileError as exc:
@@ -117,6 +151,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     settings = graph.runtime
     clock = args.clock or settings.clock
     duration = settings.duration if args.duration is None else args.duration
+    if clock == "virtual" and not duration:
+        # Virtual time runs as fast as the CPU allows: with no end it would never stop.
+        print(
+            f"error: {args.graph}: the virtual clock needs a duration, e.g. --duration 10 "
+            "(virtual time runs as fast as it can, so nothing else would stop it)",
+            file=sys.stderr,
+        )
+        return 2
     configure_console(LEVELS[args.log_level or settings.log_level])
     options: dict[str, Any] = {"loop_factory": VirtualTimeLoop if clock == "virtual" else precise_loop}
     try:
@@ -124,19 +166,87 @@ def main(argv: Sequence[str] | None = None) -> int:
             lambda: run_graph(graph, classes, name=Path(args.graph).stem, duration=duration),
             backend_options=options,
         )
-    except GraphFileError as exc:
-        print(f"error: {args.graph}: {exc}", file=sys.stderr)
-        return 2
-    except Escalation as exc:
-        print(f"[FATAL] supervisor: {exc}", file=sys.stderr)
-        return 1
-    except ActorsError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return 1
-    except KeyboardInterrupt:
-        # A second Ctrl-C while shutting down: stop at once, still without a traceback.
-        return 130
+    except BaseException as exc:  # noqa: BLE001 - every error ends here, printed once
+        return _report(exc, args.graph)
     return 0
+
+
+# --------------------------------------------------------------------------- failures
+
+
+def _report(exc: BaseException, graph: str) -> int:
+    """Print what ended the run, once; return the exit code."""
+    errors = list(_leaves(exc))
+    if any(isinstance(error, KeyboardInterrupt) for error in errors) or not errors:
+        return 130  # a second Ctrl-C while shutting down: stop at once, without a traceback
+    codes = []
+    for error in errors:
+        if isinstance(error, GraphFileError):
+            print(f"error: {graph}: {error}", file=sys.stderr)
+            codes.append(2)
+            continue
+        if isinstance(error, Escalation):
+            headline, shown = f"supervisor: {error}", error.__cause__
+        elif isinstance(error, NodeStartError):
+            headline, shown = str(error), error.__cause__
+        else:
+            headline, shown = _one_line(error), error
+        print(f"[FATAL] {headline}", file=sys.stderr)
+        if shown is not None:
+            print("".join(_user_traceback(shown)), end="", file=sys.stderr)
+        codes.append(1)
+    return codes[0]
+
+
+def _leaves(exc: BaseException) -> Iterator[BaseException]:
+    """The errors inside (nested) exception groups, without the cancellations."""
+    if isinstance(exc, BaseExceptionGroup):
+        for inner in exc.exceptions:
+            yield from _leaves(inner)
+    elif not isinstance(exc, asyncio.CancelledError):  # the only backend actors.run uses
+        yield exc
+
+
+def _one_line(error: BaseException) -> str:
+    text = str(error)
+    name = type(error).__name__
+    return f"{name}: {text}" if text else name
+
+
+# Frames from these top-level packages are the machinery, not the user's code.
+_MACHINERY = frozenset(
+    {"actors", "anyio", "asyncio", "runpy", "contextlib", "sniffio", "importlib", "selectors"}
+)
+
+
+def _is_users(frame: FrameType) -> bool:
+    spec = frame.f_globals.get("__spec__")  # __name__ is "__main__" under python -m
+    module = str(getattr(spec, "name", None) or frame.f_globals.get("__name__", ""))
+    return module.partition(".")[0] not in _MACHINERY and not module.startswith("<frozen")
+
+
+def _user_traceback(error: BaseException) -> list[str]:
+    """The user's own frames of ``error``, then its causes' alike.
+
+    An error with no frame of the user's shows them all, unless it is one
+    actors raises on purpose (its message says what is wrong).
+    """
+    lines: list[str] = []
+    seen: set[int] = set()
+    current: BaseException | None = error
+    while current is not None and id(current) not in seen:
+        seen.add(id(current))
+        if current is not error:
+            lines.append(f"caused by {_one_line(current)}\n")
+        frames = list(traceback.walk_tb(current.__traceback__))
+        users = [(frame, line) for frame, line in frames if _is_users(frame)]
+        if not users and not isinstance(current, ActorsError):
+            users = frames  # a bug of the machinery itself: show where
+        lines += traceback.StackSummary.extract(iter(users)).format()
+        current = current.__cause__ or (
+            None if current.__suppress_context__ else current.__context__
+        )
+    return lines
 
 
 if __name__ == "__main__":

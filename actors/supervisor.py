@@ -96,6 +96,7 @@ class Child:
         self.restarts = 0
         self.crashes = 0
         self.last_error: str | None = None
+        self.last_exception: BaseException | None = None  # the Escalation's cause
         self.state = "starting"
         self._inheritance: dict[tuple[str, str], list[Any]] = {}
         self._scope: anyio.CancelScope | None = None
@@ -268,6 +269,7 @@ class Supervisor:
             cause = error
             text = f"node crashed: {cause!r}"
         child.last_error = repr(cause)
+        child.last_exception = cause
         core.logger.error(text, exc_info=cause)
 
     async def _restart(self, group: list[Child], crashed: Child | None) -> None:
@@ -295,21 +297,27 @@ class Supervisor:
             child.restarts += 1
             try:
                 self.start(child)
+                continue
             except Exception as exc:
                 # A constructor that raises on restart is one more crash.
                 child.crashes += 1
                 child.last_error = repr(exc)
+                child.last_exception = exc
                 self.runtime.logger.error(f"restarting {child.cls.__name__} failed: {exc!r}", exc_info=exc)
-                await self._restart([child], crashed=child)
-                return
+            # Retried outside the handler, so that the next failure is not chained to this one.
+            await self._restart([child], crashed=child)
+            return
 
     async def _escalate(self, crashed: Child) -> None:
         policy = self.policy
         name = crashed.core.fqn if crashed.core is not None else crashed.cls.__name__
+        cls = crashed.cls
         reason = Escalation(
             f"node {name} crashed {crashed.crashes} times; more than {policy.intensity} "
-            f"restarts within {policy.period} s, giving up (last error: {crashed.last_error})"
+            f"restarts within {policy.period} s, giving up "
+            f"({cls.__module__}:{cls.__qualname__}, last error: {crashed.last_error})"
         )
+        reason.__cause__ = crashed.last_exception
         for child in reversed(list(self.children)):
             if child.core is not None and not child.core.destroyed:
                 await self._halt(child)

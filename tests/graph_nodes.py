@@ -46,3 +46,31 @@ class AlwaysCrash(Node):
 
     def on_number(self, msg: Int64) -> None:
         raise RuntimeError(f"cannot handle {msg.data}")
+
+
+def _read_calibration() -> None:
+    raise ValueError("no calibration file")
+
+
+class FailsToStart(Node):
+    """Its constructor raises (in a helper of its own), after naming itself."""
+
+    def __init__(self) -> None:
+        super().__init__("fails_to_start")
+        _read_calibration()
+
+
+class FailsOnRestart(Node):
+    """The first instance crashes in a timer at 0.5 s; every later constructor raises."""
+
+    instances = 0
+
+    def __init__(self) -> None:
+        super().__init__("fails_on_restart")
+        type(self).instances += 1
+        if type(self).instances > 1:
+            raise RuntimeError("cannot reopen the device")
+        self.create_timer(0.5, self.tick)
+
+    def tick(self) -> None:
+        raise OSError("device unplugged")

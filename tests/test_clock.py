@@ -112,7 +112,7 @@ def test_actors_run_uses_the_precise_loop_on_the_wall_clock(monkeypatch):
     monkeypatch.setattr(actors.run, "configure_console", lambda level: None)
     assert actors.run.main(["graph.toml", "--clock", "wall"]) == 0
     assert seen["loop_factory"] is precise_loop
-    assert actors.run.main(["graph.toml", "--clock", "virtual"]) == 0
+    assert actors.run.main(["graph.toml", "--clock", "virtual", "--duration", "1"]) == 0
     assert seen["loop_factory"] is VirtualTimeLoop
 
 

@@ -61,12 +61,120 @@ use = "graph_nodes:Counter"
     )
     result = run_module("actors.run", str(graph))
     assert result.returncode == 1
-    fatal = [line for line in result.stderr.splitlines() if "giving up" in line]
+    fatal = [line for line in result.stderr.splitlines() if line.startswith("[FATAL]")]
     assert fatal == [
         "[FATAL] supervisor: node /always_crash crashed 3 times; more than 2 restarts within "
-        "10.0 s, giving up (last error: RuntimeError('cannot handle 2'))"
+        "10.0 s, giving up (graph_nodes:AlwaysCrash, last error: RuntimeError('cannot handle 2'))"
     ]
     assert result.stdout.count("dead letter") == 3
+    assert_only_users_frames(result.stderr, "graph_nodes.py")
+
+
+def run_virtual(run_module, tmp_path, text: str) -> tuple[str, subprocess.CompletedProcess[str]]:
+    """Write ``text`` as a graph file and run it for 5 s of virtual time; the file and the result."""
+    graph = tmp_path / "graph_under_test.toml"
+    graph.write_text(text)
+    return str(graph), run_module("actors.run", str(graph), "--clock", "virtual", "--duration", "5")
+
+
+def assert_only_users_frames(stderr: str, source: str) -> None:
+    """After the [FATAL] line come the frames of ``source`` only: none of the machinery's."""
+    lines = stderr[stderr.index("[FATAL]") :].splitlines()[1:]
+    files = re.findall(r'^  File "([^"]+)", line \d+, in \w+$', "\n".join(lines), re.MULTILINE)
+    assert files and all(file.endswith(source) for file in files), stderr
+    for word in ("Traceback", "ExceptionGroup", "anyio", "asyncio", "runpy", "actors/"):
+        assert word not in stderr, stderr
+
+
+@pytest.mark.parametrize("delay", [0.0, 1.0])
+def test_a_constructor_that_raises_at_start_is_one_fatal_line_and_its_frames(
+    run_module, tmp_path, delay
+):
+    _, result = run_virtual(
+        run_module,
+        tmp_path,
+        '[[nodes]]\nuse = "graph_nodes:Counter"\n\n'
+        f'[[nodes]]\nuse = "graph_nodes:FailsToStart"\ndelay = {delay}\n',
+    )
+    assert result.returncode == 1
+    assert result.stderr.splitlines()[0] == (
+        "[FATAL] node /fails_to_start (graph_nodes:FailsToStart) failed to start: "
+        "ValueError: no calibration file"
+    )
+    assert result.stderr.count("[FATAL]") == 1
+    assert_only_users_frames(result.stderr, "graph_nodes.py")
+    assert '    raise ValueError("no calibration file")' in result.stderr.splitlines()
+
+
+def test_a_constructor_that_raises_on_restart_escalates_once_naming_node_class_and_error(
+    run_module, tmp_path
+):
+    _, result = run_virtual(
+        run_module,
+        tmp_path,
+        '[supervisor]\nintensity = 2\nbackoff = 0.0\n\n[[nodes]]\nuse = "graph_nodes:FailsOnRestart"\n',
+    )
+    assert result.returncode == 1
+    fatal = [line for line in result.stderr.splitlines() if line.startswith("[FATAL]")]
+    assert fatal == [
+        "[FATAL] supervisor: node /fails_on_restart crashed 3 times; more than 2 restarts "
+        "within 5.0 s, giving up (graph_nodes:FailsOnRestart, "
+        "last error: RuntimeError('cannot reopen the device'))"
+    ]
+    assert_only_users_frames(result.stderr, "graph_nodes.py")
+    assert '    raise RuntimeError("cannot reopen the device")' in result.stderr.splitlines()
+    assert "caused by" not in result.stderr  # each retry fails on its own, not chained
+
+
+def test_a_delayed_node_with_a_bad_override_is_a_graph_file_error_not_an_exception_group(
+    run_module, tmp_path
+):
+    graph, result = run_virtual(
+        run_module,
+        tmp_path,
+        '[[nodes]]\nuse = "nodes.param_talker:MinimalParam"\nparams = { my_parameter = 3 }\ndelay = 1.0\n',
+    )
+    assert result.returncode == 2
+    assert result.stderr == (
+        f"error: {graph}: nodes[0] (nodes.param_talker:MinimalParam): parameter 'my_parameter' of "
+        "/minimal_param_node: wrong type: expected STRING, got INTEGER (3)\n"
+    )
+
+
+def test_any_other_error_leaving_the_run_is_unwrapped_from_its_groups(capsys):
+    from actors.run import _report
+
+    def users_code() -> None:
+        raise KeyError("left")
+
+    try:
+        try:
+            users_code()
+        except KeyError as exc:
+            raise BaseExceptionGroup("outer", [ExceptionGroup("inner", [exc])]) from None
+    except BaseExceptionGroup as group:
+        assert _report(group, "g.toml") == 1
+    err = capsys.readouterr().err
+    assert err.splitlines()[0] == "[FATAL] KeyError: 'left'"
+    assert "in users_code" in err and "ExceptionGroup" not in err and "Traceback" not in err
+
+
+@pytest.mark.parametrize(
+    ("contents", "args"),
+    [
+        ('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n', ("--clock", "virtual")),
+        ('[runtime]\nclock = "virtual"\n\n[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n', ()),
+    ],
+)
+def test_virtual_time_without_a_duration_is_refused_with_a_hint(run_module, tmp_path, contents, args):
+    graph = tmp_path / "endless.toml"
+    graph.write_text(contents)
+    result = run_module("actors.run", str(graph), *args)
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr == (
+        f"error: {graph}: the virtual clock needs a duration, e.g. --duration 10 "
+        "(virtual time runs as fast as it can, so nothing else would stop it)\n"
+    )
 
 
 @contextlib.contextmanager
@@ -128,3 +236,13 @@ def test_the_params_graph_with_an_override(run_module, tmp_path):
     result = run_module("actors.run", str(graph), "--clock", "virtual", "--duration", "2.5")
     hellos = re.findall(r"\[minimal_param_node\]: (Hello \w+!)", result.stdout)
     assert hellos == ["Hello earth!", "Hello world!"]
+
+
+def test_actors_launch_is_python_m_actors_run(run_module, tmp_path):
+    args = ("--clock", "virtual", "graphs/services.toml", "--duration", "3")
+    launched = run_module("actors", "launch", *args)
+    ran = run_module("actors.run", *args)
+    assert (launched.returncode, launched.stdout) == (ran.returncode, ran.stdout) == (0, ran.stdout)
+    assert "Result of add_two_ints: for 41 + 1 = 42" in launched.stdout
+    usage = run_module("actors", "launch", "--clock", "sundial", "graph.toml")
+    assert usage.returncode == 2 and usage.stderr.startswith("usage: actors launch ")

@@ -15,7 +15,7 @@ __all__ = ["main"]
 # Each group module exposes ``register(subparsers)``, which adds its parser and
 # sets ``func(args) -> int | None`` on every verb.  Imports inside the verbs stay
 # lazy so that ``actors --help`` is quick.
-GROUPS = ("node", "topic", "service", "param", "interface", "doctor", "graph")
+GROUPS = ("node", "topic", "service", "param", "interface", "doctor", "graph", "launch")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -31,6 +31,12 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run one command; return its exit code (2 for misuse, with one line on stderr)."""
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv[:1] == ["launch"]:
+        # actors.run's own parser takes the rest, options before or after the graph file.
+        from actors.cli.launch import launch
+
+        return launch(argv[1:])
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
