@@ -8,6 +8,7 @@
     ├── InvalidNameError             a node, topic or service name breaks the ROS rules
     ├── TopicTypeError               publisher and subscription disagree on a topic's type
     ├── GraphFileError               graph.toml is malformed (names file and key path)
+    ├── RosArgsError                 a --ros-args argument or a parameter file is malformed
     ├── WorldError                   a robot without a world, a start pose that does not fit
     │   └── WorldFileError           a world file is malformed (names file and key path)
     ├── ServiceError                 a service call failed on the server's side
@@ -31,6 +32,7 @@ __all__ = [
     "InvalidNameError",
     "TopicTypeError",
     "GraphFileError",
+    "RosArgsError",
     "WorldError",
     "WorldFileError",
     "ServiceError",
@@ -77,6 +79,10 @@ class TopicTypeError(ActorsError, TypeError):
 
 class GraphFileError(ActorsError):
     """A graph file is malformed; the text names the file and the key path."""
+
+
+class RosArgsError(ActorsError, ValueError):
+    """A ``--ros-args`` argument or a ROS parameter file is malformed; the text names which."""
 
 
 class WorldError(ActorsError):
