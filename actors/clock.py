@@ -146,9 +146,21 @@ class Rate:
 
     async def sleep(self) -> None:
         """Wait for the next deadline."""
-        now = self._loop.time()
-        self._k = max(self._k + 1, int((now - self._start) / self._period) + 1)
-        await asyncio.sleep(self._start + self._k * self._period - now)
+        loop = self._loop
+        self._k = max(self._k + 1, int((loop.time() - self._start) / self._period) + 1)
+        # One loop timer on the absolute deadline (asyncio.sleep would re-read the clock
+        # and add the delay to a later "now").
+        future = loop.create_future()
+        timer = loop.call_at(self._start + self._k * self._period, _wake, future)
+        try:
+            await future
+        finally:
+            timer.cancel()
+
+
+def _wake(future: asyncio.Future[None]) -> None:
+    if not future.done():
+        future.set_result(None)
 
 
 def precise_loop() -> asyncio.AbstractEventLoop:

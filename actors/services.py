@@ -10,6 +10,9 @@ mailbox — so awaiting a call from inside a callback cannot deadlock.
 - A call to a service that does not exist yet waits for it to appear; with a
   timeout it raises TimeoutError.  While a server's node restarts its queue
   stays attached, and the new instance answers what was queued.
+- A timeout is one loop timer (``loop.call_at``) that fails the caller's future
+  and is cancelled when the response comes first: a cancel scope per call
+  (``anyio.fail_after``) cost more than the round trip itself.
 - A node calling its own service gets ServiceError at once: its callbacks run
   one at a time, so the request could never be handled while it waits.
 - A cancelled or timed-out caller does not disturb the server: the response is
@@ -23,8 +26,6 @@ from collections import deque
 from collections.abc import Awaitable, Callable
 from inspect import isawaitable
 from typing import Any
-
-import anyio
 
 from actors.actor import Mailbox, Owner
 from actors.errors import ServiceError
@@ -159,10 +160,12 @@ class Client:
         """
         if timeout is None:
             timeout = timeout_sec
-        with anyio.move_on_after(timeout):
-            while not self.service_is_ready():
-                await self._table.appeared(self.service_name).wait()
-        return self.service_is_ready()
+        loop = self._loop
+        deadline = None if timeout is None else loop.time() + timeout
+        while not self.service_is_ready():
+            if not await self._table.appearance(self.service_name, deadline):
+                return False
+        return True
 
     def call_async(self, request: Any) -> asyncio.Future[Any]:
         """Send ``request``; return a future of the response.
@@ -194,30 +197,49 @@ class Client:
         """Send ``request`` and wait for the response.
 
         Raises TimeoutError after ``timeout`` seconds (the request is then
-        dropped unanswered), ServiceError when the server's handler raises or the
-        node calls its own service, TypeError for a request of the wrong type.
-        Cancelling the call does not disturb the server.
+        dropped unanswered: a server that has not started it skips it, a
+        response that comes later is discarded), ServiceError when the server's
+        handler raises or the node calls its own service, TypeError for a
+        request of the wrong type.  Cancelling the call does not disturb the server.
         """
         future = self.call_async(request)
         if timeout is None:
-            return await future  # no cancel scope: it would cost more than the call itself
-        with anyio.fail_after(timeout):
             return await future
+        loop = self._loop
+        timer = loop.call_at(loop.time() + timeout, _expire, future, self, timeout)
+        try:
+            return await future
+        finally:
+            timer.cancel()
 
     def destroy(self) -> None:
         """Forget this client."""
         self.node.destroy_client(self)
 
 
+def _expire(future: asyncio.Future[Any], client: Client, timeout: float) -> None:
+    # The timer of a call with a timeout: fail the caller's future unless it is settled.
+    if not future.done():
+        future.set_exception(
+            TimeoutError(f"no response from service {client.service_name} within {timeout:g} s")
+        )
+
+
+def _settle(future: asyncio.Future[bool], value: bool) -> None:
+    if not future.done():
+        future.set_result(value)
+
+
 class ServiceTable:
     """Every service of a runtime, and the calls waiting for services not yet there."""
 
-    __slots__ = ("servers", "_parked", "_appeared")
+    __slots__ = ("servers", "_parked", "_watchers")
 
     def __init__(self) -> None:
         self.servers: dict[str, Service] = {}
         self._parked: dict[str, list[_Call]] = {}
-        self._appeared: dict[str, anyio.Event] = {}
+        # Futures of wait_for_service() callers, by service name (insertion-ordered sets).
+        self._watchers: dict[str, dict[asyncio.Future[bool], None]] = {}
 
     def add(self, service: Service, *, replacing: Service | None = None) -> None:
         """Register ``service``; raise ServiceError if another server has the name."""
@@ -232,9 +254,8 @@ class ServiceTable:
         for call in self._parked.pop(name, ()):
             if not call.future.done():
                 service._push(call)
-        event = self._appeared.pop(name, None)
-        if event is not None:
-            event.set()
+        for watcher in self._watchers.pop(name, ()):
+            _settle(watcher, True)
 
     def remove(self, service: Service) -> None:
         """Unregister ``service``; its queued calls fail."""
@@ -252,9 +273,22 @@ class ServiceTable:
             parked[:] = [c for c in parked if not c.future.done()]
         parked.append(call)
 
-    def appeared(self, name: str) -> anyio.Event:
-        """An event set when a server for ``name`` registers."""
-        event = self._appeared.get(name)
-        if event is None:
-            event = self._appeared[name] = anyio.Event()
-        return event
+    async def appearance(self, name: str, deadline: float | None = None) -> bool:
+        """Wait until a server for ``name`` registers (True) or loop time ``deadline`` passes (False).
+
+        The deadline is one loop timer, cancelled when the server comes first.
+        Cancelling the wait forgets it.
+        """
+        loop = asyncio.get_running_loop()
+        future: asyncio.Future[bool] = loop.create_future()
+        watchers = self._watchers.setdefault(name, {})
+        watchers[future] = None
+        timer = None if deadline is None else loop.call_at(deadline, _settle, future, False)
+        try:
+            return await future
+        finally:
+            if timer is not None:
+                timer.cancel()
+            watchers.pop(future, None)
+            if not watchers and self._watchers.get(name) is watchers:
+                del self._watchers[name]

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import asyncio
 import os
 import subprocess
 import sys
@@ -36,3 +37,8 @@ def run_module():
         )
 
     return run
+
+
+def live_loop_timers() -> list[asyncio.TimerHandle]:
+    """The running loop's timers that are still armed (asyncio keeps cancelled ones until they come up)."""
+    return [h for h in asyncio.get_running_loop()._scheduled if not h.cancelled()]  # type: ignore[attr-defined]

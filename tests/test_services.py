@@ -9,6 +9,7 @@ import anyio
 import pytest
 
 from actors import Node, Runtime, ServiceError, SupervisorPolicy
+from conftest import live_loop_timers
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.std_msgs.msg import Int64
 from interfaces.std_srvs.srv import SetBool, Trigger
@@ -79,6 +80,69 @@ async def test_a_missing_service_times_out():
         with pytest.raises(TimeoutError):
             await caller.cli.call(AddTwoInts.Request(a=1, b=2), timeout=0.5)
         assert rt.clock.monotonic() - start == pytest.approx(0.5)
+
+
+async def test_a_call_that_times_out_discards_the_late_response_and_leaves_the_server_serving(caplog):
+    class SlowAdder(Adder):
+        latency = 1.0
+
+    caplog.set_level(logging.ERROR, logger="actors")
+    async with Runtime() as rt:
+        rt.spawn(SlowAdder)
+        caller = rt.spawn(Caller)
+        start = rt.clock.monotonic()
+        with pytest.raises(TimeoutError, match=r"no response from service /add_two_ints within 0.5 s"):
+            await caller.cli.call(AddTwoInts.Request(a=1, b=1), timeout=0.5)
+        assert rt.clock.monotonic() - start == 0.5
+        # The server finishes the abandoned request at 1.0 and drops its response; the next
+        # call gets its own answer, not the late one.
+        response = await caller.cli.call(AddTwoInts.Request(a=20, b=22), timeout=5)
+        assert response.sum == 42
+        assert rt.clock.monotonic() - start == 2.0
+        (info,) = [s for s in rt.graph.services() if s.name == "/add_two_ints"]
+        assert (info.handled, info.queued) == (2, 0)
+        assert rt.graph.nodes()[0].crashes == 0
+    assert not [r for r in caplog.records if r.levelno >= logging.ERROR]
+
+
+async def test_a_call_answered_in_time_cancels_its_timeout_timer():
+    async with Runtime() as rt:
+        rt.spawn(Adder)
+        caller = rt.spawn(Caller)
+        await anyio.sleep(0)
+        assert (await caller.cli.call(AddTwoInts.Request(a=1, b=2), timeout=3600)).sum == 3
+        assert live_loop_timers() == []
+        assert rt.clock.monotonic() == 0.0
+
+
+async def test_a_request_that_timed_out_before_the_server_took_it_is_skipped():
+    class CountingAdder(Adder):
+        seen: list[int] = []
+
+        async def add(self, request: AddTwoInts.Request, response: AddTwoInts.Response) -> AddTwoInts.Response:
+            CountingAdder.seen.append(request.a)
+            return await super().add(request, response)
+
+    async with Runtime() as rt:
+        caller = rt.spawn(Caller)
+        with pytest.raises(TimeoutError):
+            await caller.cli.call(AddTwoInts.Request(a=1, b=1), timeout=0.5)  # parked: no server yet
+        rt.spawn(CountingAdder)
+        assert (await caller.cli.call(AddTwoInts.Request(a=2, b=2), timeout=1)).sum == 4
+        assert CountingAdder.seen == [2]
+
+
+async def test_wait_for_service_times_out_on_one_timer_and_forgets_its_waiter():
+    async with Runtime() as rt:
+        caller = rt.spawn(Caller)
+        assert await caller.cli.wait_for_service(timeout=2.5) is False
+        assert rt.clock.monotonic() == 2.5
+        with anyio.move_on_after(1):
+            await caller.cli.wait_for_service()  # no timeout: cancelled from outside
+        assert rt.clock.monotonic() == 3.5
+        assert rt.services._watchers == {} and live_loop_timers() == []
+        rt.spawn(Adder)
+        assert await caller.cli.wait_for_service(timeout=0) is True
 
 
 async def test_a_call_made_before_the_server_exists_is_answered_when_it_appears():
