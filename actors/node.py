@@ -16,7 +16,7 @@ from __future__ import annotations
 import asyncio
 from collections.abc import Callable, Mapping, Sequence
 from contextvars import ContextVar
-from typing import Any, Protocol, TypeVar
+from typing import Any, Protocol
 
 from actors.actor import Actor
 from actors.clock import Clock, Rate
@@ -24,14 +24,12 @@ from actors.log import NodeLogger
 from actors.names import Resolver, fully_qualified, normalize_namespace, validate_node_name
 from actors.params import OnSet, Parameter, ParameterStore
 from actors.services import Client, Service
-from actors.timers import Timer
 from actors.services import ServiceTable
+from actors.timers import Deadlines, Timer
 from actors.topics import Publisher, QoSProfile, Subscription, TopicTable, as_qos
 from interfaces.rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 
 __all__ = ["Node", "NodeCore", "Host", "ChildSpec", "SpawnRequest"]
-
-T = TypeVar("T")
 
 
 class Host(Protocol):
@@ -41,6 +39,7 @@ class Host(Protocol):
     clock: Clock
     topics: TopicTable
     services: ServiceTable
+    deadlines: Deadlines
     parameter_events: Publisher
     graph: Any
 
@@ -99,11 +98,12 @@ class NodeCore:
         self.parameter_events = self.runtime.parameter_events
         self.actor = Actor(self.loop)
         self._logger: NodeLogger | None = None
-        self.publishers: list[Publisher] = []
-        self.subscriptions: list[Subscription] = []
-        self.timers: list[Timer] = []
-        self.services: list[Service] = []
-        self.clients: list[Client] = []
+        # Insertion-ordered sets ({entity: None}): creation order, O(1) removal.
+        self.publishers: dict[Publisher, None] = {}
+        self.subscriptions: dict[Subscription, None] = {}
+        self.timers: dict[Timer, None] = {}
+        self.services: dict[Service, None] = {}
+        self.clients: dict[Client, None] = {}
         self.destroyed = False
         # Entities of the previous instance, taken over by name when this one recreates them.
         self._inherited: dict[tuple[str, str], list[Any]] = child.take_inheritance()
@@ -138,7 +138,7 @@ class NodeCore:
         self.runtime.topics.add_publisher(pub)
         if old is not None:
             self.runtime.topics.remove_publisher(old)
-        self.publishers.append(pub)
+        self.publishers[pub] = None
         return pub
 
     def create_subscription(
@@ -156,15 +156,15 @@ class NodeCore:
             sub._adopt(old)
         else:
             self.runtime.topics.add_subscription(sub)
-        self.subscriptions.append(sub)
+        self.subscriptions[sub] = None
         return sub
 
     def create_timer(self, period: float, callback: Callable[[], Any]) -> Timer:
         """See :meth:`Node.create_timer`."""
         if not callable(callback):
             raise TypeError(f"timer callback must be callable, got {callback!r}")
-        timer = Timer(self, period, callback)
-        self.timers.append(timer)
+        timer = Timer(self, period, callback, self.runtime.deadlines)
+        self.timers[timer] = None
         return timer
 
     def create_service(self, srv_type: type, name: str, handler: Callable[[Any, Any], Any]) -> Service:
@@ -175,39 +175,39 @@ class NodeCore:
         self.runtime.services.add(service, replacing=old)
         if old is not None:
             service._adopt(old)
-        self.services.append(service)
+        self.services[service] = None
         return service
 
     def create_client(self, srv_type: type, name: str) -> Client:
         """See :meth:`Node.create_client`."""
         full = self.resolver.resolve(name, what="service name")
         client = Client(self, full, srv_type, self.runtime.services)
-        self.clients.append(client)
+        self.clients[client] = None
         return client
 
     def destroy_service(self, service: Service) -> None:
         """Stop serving ``service``; its queued calls fail."""
-        _remove(self.services, service)
+        self.services.pop(service, None)
         self.runtime.services.remove(service)
 
     def destroy_client(self, client: Client) -> None:
         """Forget ``client``."""
-        _remove(self.clients, client)
+        self.clients.pop(client, None)
 
     def destroy_publisher(self, pub: Publisher) -> None:
         """Remove ``pub`` from this node and its topic."""
-        _remove(self.publishers, pub)
+        self.publishers.pop(pub, None)
         self.runtime.topics.remove_publisher(pub)
 
     def destroy_subscription(self, sub: Subscription) -> None:
         """Remove ``sub`` from this node and its topic; its queued messages are dropped."""
-        _remove(self.subscriptions, sub)
+        self.subscriptions.pop(sub, None)
         self.runtime.topics.remove_subscription(sub)
 
     def destroy_timer(self, timer: Timer) -> None:
         """Cancel ``timer`` and forget it."""
         timer.cancel()
-        _remove(self.timers, timer)
+        self.timers.pop(timer, None)
 
     # -- logging --------------------------------------------------------------
 
@@ -263,11 +263,6 @@ class NodeCore:
 def _check_type(msg_type: Any, where: str) -> None:
     if not isinstance(msg_type, type):
         raise TypeError(f"{where} needs a message type (a class), got {msg_type!r}")
-
-
-def _remove(entities: list[T], entity: T) -> None:
-    if entity in entities:
-        entities.remove(entity)
 
 
 class Node:

@@ -27,6 +27,7 @@ from actors.log import NodeLogger
 from actors.node import Node, NodeCore, SpawnRequest, _spawning
 from actors.services import ServiceTable
 from actors.supervisor import Child, RestartType, Supervisor, SupervisorPolicy
+from actors.timers import Deadlines
 from actors.topics import Publisher, QoSProfile, Subscription, TopicTable, type_name
 
 __all__ = ["Runtime", "Attachment"]
@@ -86,6 +87,7 @@ class Runtime:
             raise RuntimeError(f"runtime {self.name!r} is {self._state}; a Runtime is entered once")
         self.loop: asyncio.AbstractEventLoop = asyncio.get_running_loop()
         self.clock = Clock(self.loop)
+        self.deadlines = Deadlines(self.loop)
         self._rosout = self._runtime_publisher("/rosout", "Log")
         self.parameter_events = self._runtime_publisher("/parameter_events", "ParameterEvent")
         self.logger = self.make_logger("actors")
@@ -186,7 +188,7 @@ class Runtime:
                 for entity in olds:
                     entity.destroy()
             raise
-        self.supervisor.children.append(child)
+        self.supervisor.children[child] = None
         return core.node  # type: ignore[return-value]
 
     async def stop(self, name: str) -> None:

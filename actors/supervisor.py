@@ -17,17 +17,25 @@ with the traceback, as a dead letter, and the supervisor decides what to do:
 A restarted node is a new instance.  The crashed instance's subscriptions stay
 attached to their topics while it is down, and the new instance adopts their
 mailboxes when it subscribes again, so messages queued for it are not lost.
+
+Each node's actor runs in an asyncio task of its own that the supervisor
+tracks (not in an anyio task group: a cancel scope and a done event per node
+cost 1.5 KB and a loop iteration to stop).  Halting a node whose actor is idle
+needs no cancellation and no wait: :meth:`Actor.stop` guarantees that none of
+its callbacks runs again, so stopping 10,000 nodes takes no loop iteration per
+node.  A node in the middle of an ``async`` callback is cancelled, and the halt
+waits until the callback has unwound.
 """
 
 from __future__ import annotations
 
+import asyncio
 from collections import deque
 from collections.abc import Mapping
 from enum import StrEnum
 from typing import Any, Protocol
 
 import anyio
-import anyio.abc
 import msgspec
 
 from actors.actor import CallbackFailed, OneShot
@@ -99,8 +107,8 @@ class Child:
         self.last_exception: BaseException | None = None  # the Escalation's cause
         self.state = "starting"
         self._inheritance: dict[tuple[str, str], list[Any]] = {}
-        self._scope: anyio.CancelScope | None = None
-        self._done: anyio.Event | None = None
+        # The current instance's actor task; None once the supervisor halted it.
+        self._task: asyncio.Task[None] | None = None
 
     def give_back(self, entities: dict[tuple[str, str], list[Any]]) -> None:
         """Keep ``entities`` (a failed instance's) for the next instance to adopt."""
@@ -124,7 +132,7 @@ class Supervised(Protocol):
 
     clock: Clock
     logger: NodeLogger
-    _task_group: anyio.abc.TaskGroup
+    loop: asyncio.AbstractEventLoop
 
     def _instantiate(self, child: Child) -> NodeCore: ...
 
@@ -137,7 +145,8 @@ class Supervisor:
     def __init__(self, runtime: Supervised, policy: SupervisorPolicy) -> None:
         self.runtime = runtime
         self.policy = policy
-        self.children: list[Child] = []
+        # Live children in start order: an insertion-ordered set, O(1) removal.
+        self.children: dict[Child, None] = {}
         # Children that ended for good and why (bounded): doctor reports crashes among them.
         self.ended: deque[Child] = deque(maxlen=100)
         self._restart_times: deque[float] = deque()
@@ -155,39 +164,43 @@ class Supervisor:
             core.actor.schedule(OneShot(on_start, "on_start"))
         child.core = core
         child.state = "running"
-        child._done = anyio.Event()
-        # Made here, entered by the task: halting a node whose task has not started yet
-        # cancels it on entry.
-        child._scope = anyio.CancelScope()
-        self.runtime._task_group.start_soon(self._watch, child, core, name=f"node {core.fqn}")
+        child._task = self.runtime.loop.create_task(self._watch(child, core), name=f"node {core.fqn}")
         return core
 
     async def _watch(self, child: Child, core: NodeCore) -> None:
         error: BaseException | None = None
-        assert child._scope is not None
-        with child._scope as scope:
-            try:
-                await core.actor.run()
-            except CallbackFailed as failed:
-                error = failed
-            except Exception as exc:
-                error = exc
-        assert child._done is not None
-        child._done.set()
-        if not scope.cancelled_caught:
+        try:
+            await core.actor.run()
+        except CallbackFailed as failed:
+            error = failed
+        except asyncio.CancelledError:
+            if child._task is asyncio.current_task():
+                raise  # not a halt: the loop itself is being torn down
+            return
+        except Exception as exc:
+            error = exc
+        if child._task is asyncio.current_task():  # it ended by itself, not by a halt
             self._send.send_nowait(_Exit(child, core, error))
 
     async def _halt(self, child: Child) -> None:
-        """Cancel ``child``'s actor task and wait until it has ended."""
-        if child._scope is not None:
-            child._scope.cancel()
-        if child._done is not None:
-            await child._done.wait()
+        """End ``child``'s actor: none of its callbacks runs after this returns.
+
+        An idle actor is only told to stop (its task ends on its next wake-up);
+        one inside an ``async`` callback is cancelled, and waited for.
+        """
+        task, child._task = child._task, None
+        if task is None or task.done() or child.core is None:
+            return
+        actor = child.core.actor
+        if actor.awaiting:
+            task.cancel()
+            await asyncio.wait((task,))
+        else:
+            actor.stop()
 
     async def stop(self, child: Child) -> None:
-        """Stop ``child`` for good: actor cancelled, ``on_shutdown`` and ``destroy_node`` run."""
-        if child in self.children:
-            self.children.remove(child)
+        """Stop ``child`` for good: actor halted, ``on_shutdown`` and ``destroy_node`` run."""
+        self.children.pop(child, None)
         child.state = "stopping"
         await self._halt(child)
         if child.core is not None and not child.core.destroyed:
@@ -240,19 +253,16 @@ class Supervisor:
             core.destroy()
             self._retire(child, "crashed")
             return
-        index = self.children.index(child)
         strategy = self.policy.strategy
-        group = (
-            [child]
-            if strategy is Strategy.ONE_FOR_ONE
-            else list(self.children)
-            if strategy is Strategy.ONE_FOR_ALL
-            else self.children[index:]
-        )
+        if strategy is Strategy.ONE_FOR_ONE:
+            group = [child]
+        else:
+            children = list(self.children)
+            group = children if strategy is Strategy.ONE_FOR_ALL else children[children.index(child):]
         await self._restart(group, crashed=child)
 
     def _retire(self, child: Child, state: str) -> None:
-        self.children.remove(child)
+        del self.children[child]
         child.state = state
         self.ended.append(child)
 

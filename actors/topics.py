@@ -10,6 +10,10 @@ A publisher and a subscription are *matched* (connected) only when their QoS is
 compatible, as in ROS: a best-effort publisher does not feed a reliable
 subscription, nor a volatile publisher a transient-local one.  Incompatible
 pairs are logged once and reported by ``doctor``.
+
+Endpoints are kept in dicts used as insertion-ordered sets (``{endpoint: None}``):
+creation order is kept, and removing one endpoint costs O(1), so stopping a
+graph of 10,000 nodes that share a topic is linear, not quadratic.
 """
 
 from __future__ import annotations
@@ -124,7 +128,7 @@ class Publisher:
         self.topic_name = topic_name
         self.msg_type = msg_type
         self.qos = qos
-        self._subs: list[Subscription] = []
+        self._subs: dict[Subscription, None] = {}  # matched subscriptions, in match order
         self._history: deque[Any] | None = (
             deque(maxlen=qos.depth) if qos.durability == DurabilityPolicy.TRANSIENT_LOCAL else None
         )
@@ -251,8 +255,8 @@ class Topic:
     def __init__(self, name: str, msg_type: type) -> None:
         self.name = name
         self.msg_type = msg_type
-        self.publishers: list[Publisher] = []
-        self.subscriptions: list[Subscription] = []
+        self.publishers: dict[Publisher, None] = {}  # insertion-ordered sets: O(1) removal
+        self.subscriptions: dict[Subscription, None] = {}
 
 
 class TopicTable:
@@ -269,26 +273,26 @@ class TopicTable:
         if topic is None:
             topic = self.topics[name] = Topic(name, msg_type)
         elif topic.msg_type is not msg_type:
-            others = topic.publishers or topic.subscriptions
+            other = next(iter(topic.publishers or topic.subscriptions))
             raise TopicTypeError(
                 f"cannot create {endpoint} of {type_name(msg_type)} on {name} for node "
                 f"{node}: the topic already carries {type_name(topic.msg_type)} "
                 f"({'published' if topic.publishers else 'subscribed'} by "
-                f"{others[0].node.fqn})"
+                f"{other.node.fqn})"
             )
         return topic
 
     def add_publisher(self, pub: Publisher) -> None:
         """Register ``pub`` and connect it to every compatible subscription."""
         topic = self._topic_for(pub.topic_name, pub.msg_type, "a publisher", pub.node.fqn)
-        topic.publishers.append(pub)
+        topic.publishers[pub] = None
         for sub in topic.subscriptions:
             self._match(pub, sub)
 
     def add_subscription(self, sub: Subscription, *, replay: bool = True) -> None:
         """Register ``sub``, connect it, and replay transient-local history if it asks for it."""
         topic = self._topic_for(sub.topic_name, sub.msg_type, "a subscription", sub.node.fqn)
-        topic.subscriptions.append(sub)
+        topic.subscriptions[sub] = None
         for pub in topic.publishers:
             if self._match(pub, sub) and replay and pub._history:
                 if sub.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL:
@@ -300,34 +304,43 @@ class TopicTable:
         if reason is not None:
             self._on_incompatible(pub, sub, reason)
             return False
-        pub._subs.append(sub)
+        pub._subs[sub] = None
         return True
 
     def replace_subscription(self, old: Subscription, new: Subscription) -> None:
-        """Put ``new`` where ``old`` was, in the topic and in every publisher feeding it."""
+        """Connect ``new`` to every publisher that fed ``old``, and forget ``old``.
+
+        The restarted node's subscription moves to the end of the topic's
+        order; the publishers that fed the old one feed the new one, whatever
+        their QoS was matched against.
+        """
         topic = self.topics[old.topic_name]
-        topic.subscriptions[topic.subscriptions.index(old)] = new
+        del topic.subscriptions[old]
+        topic.subscriptions[new] = None
         for pub in topic.publishers:
             subs = pub._subs
             if old in subs:
-                subs[subs.index(old)] = new
+                del subs[old]
+                subs[new] = None
 
     def remove_publisher(self, pub: Publisher) -> None:
-        """Forget ``pub``; drop the topic when it has no endpoint left."""
+        """Forget ``pub``; drop the topic when it has no endpoint left.  O(1)."""
         topic = self.topics.get(pub.topic_name)
         if topic is not None and pub in topic.publishers:
-            topic.publishers.remove(pub)
-            pub._subs = []
+            del topic.publishers[pub]
+            pub._subs = {}
             self._drop_if_empty(topic)
 
     def remove_subscription(self, sub: Subscription) -> None:
-        """Forget ``sub``; drop the topic when it has no endpoint left."""
+        """Forget ``sub``; drop the topic when it has no endpoint left.
+
+        O(publishers of the topic): each publisher forgets it in O(1).
+        """
         topic = self.topics.get(sub.topic_name)
         if topic is not None and sub in topic.subscriptions:
-            topic.subscriptions.remove(sub)
+            del topic.subscriptions[sub]
             for pub in topic.publishers:
-                if sub in pub._subs:
-                    pub._subs.remove(sub)
+                pub._subs.pop(sub, None)
             self._drop_if_empty(topic)
 
     def _drop_if_empty(self, topic: Topic) -> None:

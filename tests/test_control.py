@@ -256,7 +256,7 @@ async def test_hz_does_not_replay_a_latched_topics_history(name):
         def subscribe(content: bool) -> DurabilityPolicy:
             with connect(name) as conn:
                 conn.request(Subscribe(topic="/latched", content=content))
-                return rt.topics.topics["/latched"].subscriptions[-1].qos.durability
+                return [*rt.topics.topics["/latched"].subscriptions][-1].qos.durability
 
         # echo shows a latched topic's last message; hz must not count that replay as a burst
         assert await anyio.to_thread.run_sync(subscribe, True) is DurabilityPolicy.TRANSIENT_LOCAL

@@ -167,9 +167,11 @@ async def test_shutdown_stops_nodes_in_reverse_order():
             order.append(self.get_name())
 
     async with Runtime() as rt:
-        for name in ("first", "second", "third"):
+        for name in ("first", "second", "third", "fourth"):
             rt.spawn(Named, name=name)
-    assert order == ["third", "second", "first"]
+        await rt.stop("second")  # O(1) removal: the others keep their start order
+        assert [n.name for n in rt.graph.nodes()] == ["/first", "/third", "/fourth"]
+    assert order == ["second", "fourth", "third", "first"]
 
 
 async def test_a_constructor_that_raises_half_way_leaves_nothing_behind():
@@ -213,3 +215,55 @@ async def test_messages_survive_a_restart_whose_first_constructor_attempt_fails(
         await anyio.sleep(3)
     assert Flaky.attempts == 3
     assert Flaky.heard == [n for n in range(30) if n != 3]
+
+
+async def test_stopping_an_idle_node_runs_none_of_its_queued_callbacks():
+    events: list[str] = []
+
+    class Quiet(Node):
+        def __init__(self) -> None:
+            super().__init__("quiet")
+            self.create_subscription(Int64, "numbers", lambda msg: events.append(f"heard {msg.data}"), 10)
+
+        def on_shutdown(self) -> None:
+            events.append("on_shutdown")
+
+    class Loud(Node):
+        def __init__(self) -> None:
+            super().__init__("loud")
+            self.pub = self.create_publisher(Int64, "numbers", 10)
+
+    async with Runtime() as rt:
+        rt.spawn(Quiet)
+        loud = rt.spawn(Loud)
+        await anyio.sleep(0)
+        loud.pub.publish(Int64(data=1))  # queued, and the node is scheduled to run it
+        await rt.stop("quiet")
+        await anyio.sleep(1)
+        assert events == ["on_shutdown"]
+
+
+async def test_stopping_a_node_inside_an_async_callback_unwinds_it_before_the_hooks():
+    events: list[str] = []
+
+    class Busy(Node):
+        def __init__(self) -> None:
+            super().__init__("busy")
+            self.create_timer(1.0, self.work)
+
+        async def work(self) -> None:
+            events.append("work started")
+            try:
+                await anyio.sleep(10)
+            finally:
+                events.append("work unwound")
+
+        def on_shutdown(self) -> None:
+            events.append("on_shutdown")
+
+    async with Runtime() as rt:
+        rt.spawn(Busy)
+        await anyio.sleep(2)
+        await rt.stop("busy")
+        assert events == ["work started", "work unwound", "on_shutdown"]
+        assert rt.clock.monotonic() == 2.0

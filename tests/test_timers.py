@@ -8,6 +8,7 @@ import anyio
 import pytest
 
 from actors import Node, Runtime
+from conftest import live_loop_timers
 
 pytestmark = pytest.mark.virtual_time
 
@@ -80,3 +81,52 @@ async def test_a_timer_can_cancel_itself_from_its_callback():
         node = rt.spawn(Once)
         await anyio.sleep(5)
         assert node.count == 1
+
+
+async def test_timers_sharing_a_deadline_fire_from_one_loop_timer_in_creation_order():
+    order: list[str] = []
+
+    class Named(Node):
+        def __init__(self) -> None:
+            super().__init__("named")
+            self.create_timer(1.0, lambda: order.append(self.get_name()))
+
+    async with Runtime() as rt:
+        for name in ("a", "b", "c"):
+            rt.spawn(Named, name=name)
+        assert len(rt.deadlines) == 3
+        assert [h.when() for h in live_loop_timers()] == [1.0]
+        await anyio.sleep(2.5)
+        assert order == ["a", "b", "c", "a", "b", "c"]
+
+
+async def test_a_canceled_timer_leaves_no_loop_timer_for_its_deadline():
+    class Two(Node):
+        def __init__(self) -> None:
+            super().__init__("two")
+            self.soon = self.create_timer(1.0, lambda: None)
+            self.later = self.create_timer(5.0, lambda: None)
+
+    async with Runtime() as rt:
+        node = rt.spawn(Two)
+        node.soon.cancel()
+        # Armed for the live deadline only: virtual time never jumps to 1.0 for nothing.
+        assert [h.when() for h in live_loop_timers()] == [5.0]
+        node.later.cancel()
+        assert live_loop_timers() == [] and len(rt.deadlines) == 0
+
+
+async def test_stale_deadlines_of_canceled_timers_are_swept_out():
+    class Many(Node):
+        def __init__(self) -> None:
+            super().__init__("many")
+            self.timers = [self.create_timer(10.0 + i, lambda: None) for i in range(1000)]
+
+    async with Runtime() as rt:
+        node = rt.spawn(Many)
+        for timer in node.timers[1:]:
+            timer.cancel()
+        assert len(rt.deadlines) == 1
+        assert len(rt.deadlines._heap) < 200  # rebuilt when stale entries became the majority
+        await anyio.sleep(10)
+        assert node.timers[0].ticks == 1

@@ -58,6 +58,25 @@ async def test_messages_arrive_in_order_and_are_the_same_objects():
         assert all(a is b for a, b in zip(received, sent))  # in-process: no copy, no serialisation
 
 
+async def test_removing_a_subscription_keeps_the_others_in_order():
+    woken: list[str] = []
+
+    class Listener(Node):
+        def __init__(self) -> None:
+            super().__init__("listener")
+            self.sub = self.create_subscription(Int64, "numbers", lambda msg: woken.append(self.get_name()), 10)
+
+    async with Runtime() as rt:
+        listeners = [rt.spawn(Listener, name=name) for name in ("s1", "s2", "s3", "s4")]
+        source = rt.spawn(Source)
+        listeners[1].destroy_subscription(listeners[1].sub)
+        assert [s.node for s in rt.graph.topic("/numbers").subscriptions] == ["/s1", "/s3", "/s4"]
+        assert source.pub.get_subscription_count() == 3
+        source.pub.publish(Int64(data=1))
+        await anyio.sleep(0.01)
+        assert woken == ["s1", "s3", "s4"]  # woken in subscription order
+
+
 async def test_keep_last_drops_the_oldest_and_counts_the_drops():
     class SlowSink(Sink):
         qos = 10
