@@ -72,3 +72,22 @@ async def test_shutdown_ends_wait():
             await anyio.sleep(1)
             rt.shutdown()
         assert rt.clock.monotonic() == 1.0
+
+
+@pytest.mark.virtual_time
+async def test_a_runtime_failed_from_outside_the_supervisor_still_stops_its_nodes():
+    stopped: list[str] = []
+
+    class Hooked(Node):
+        def __init__(self) -> None:
+            super().__init__("hooked")
+
+        def on_shutdown(self) -> None:
+            stopped.append(self.get_name())
+
+    with pytest.raises(ValueError, match="given up"):
+        async with Runtime() as rt:
+            rt.spawn(Hooked)
+            rt._fail(ValueError("given up"))  # cancels the block; the nodes still stop gracefully
+            await anyio.sleep(1)
+    assert stopped == ["hooked"]
