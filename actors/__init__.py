@@ -1,7 +1,16 @@
 """actors: ROS 2's programming model as a pure-Python asyncio runtime."""
 
+from actors.actions import (
+    ActionClient,
+    ActionServer,
+    CancelResponse,
+    ClientGoalHandle,
+    GoalResponse,
+    ServerGoalHandle,
+)
 from actors.clock import Clock, Duration, Rate, Time, VirtualTimeLoop
 from actors.errors import (
+    ActionError,
     ActorsError,
     Escalation,
     GraphFileError,
@@ -30,7 +39,14 @@ from actors.topics import (
 )
 
 __all__ = [
+    "ActionClient",
+    "ActionError",
+    "ActionServer",
     "ActorsError",
+    "CancelResponse",
+    "ClientGoalHandle",
+    "GoalResponse",
+    "ServerGoalHandle",
     "Client",
     "Clock",
     "Duration",

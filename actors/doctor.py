@@ -7,12 +7,15 @@ check passes or fails with one reason per problem found:
   are *warnings*, as in ``ros2 doctor`` (a graph may well publish what only a
   command line reads); a check with warnings still passes unless the caller
   counts warnings as failures (``actors doctor --include-warnings``);
+  hidden topics (an action's) are left out: actions have their own check;
+- action clients whose action no node serves (a warning too);
 - endpoints whose type differs from their topic's (the topic table refuses
   them, so this guards the invariant rather than expecting failures);
 - QoS incompatibility: a best-effort publisher to a reliable subscription, a
   volatile publisher to a transient-local one (such pairs are not connected);
 - nodes that crashed or keep restarting;
-- subscriptions that dropped messages (a full KEEP_LAST mailbox);
+- subscriptions that dropped messages (a full KEEP_LAST mailbox; not on
+  hidden topics: an action's status subscription keeps only the latest);
 - callbacks that block the loop, named by node and callback (wall clock only:
   on virtual time the loop's clock stands still while a callback runs);
 - required packages installed.
@@ -32,8 +35,8 @@ from typing import TYPE_CHECKING, Any
 import anyio
 import msgspec
 
-from actors.names import is_hidden
-from actors.introspection import EndpointInfo, NodeInfo, TopicInfo
+from actors.introspection import ActionInfo, EndpointInfo, NodeInfo, TopicInfo
+from actors.names import is_hidden, is_hidden_name
 from actors.topics import qos_incompatibility
 
 if TYPE_CHECKING:
@@ -103,6 +106,7 @@ def diagnose(runtime: Runtime, monitor: LagMonitor | None = None) -> Report:
     checks = [
         _one_sided(topics, publishers=True),
         _one_sided(topics, publishers=False),
+        _unserved(graph.actions()),
         _per_topic(topics, "topic types", _type_mismatches),
         _per_topic(topics, "QoS compatibility", _qos_mismatches),
         _node_health(nodes + graph.ended()),
@@ -140,6 +144,8 @@ def _one_sided(topics: list[TopicInfo], *, publishers: bool) -> Check:
     """
     reasons = []
     for topic in topics:
+        if is_hidden_name(topic.name):
+            continue
         pubs, subs = _visible(topic.publishers), _visible(topic.subscriptions)
         have, lack = (pubs, subs) if publishers else (subs, pubs)
         if have and not lack:
@@ -152,6 +158,16 @@ def _one_sided(topics: list[TopicInfo], *, publishers: bool) -> Check:
             reasons.append(f"{topic.name} ({topic.type}) is {what.format(nodes)}")
     name = "publishers without subscribers" if publishers else "subscriptions without publishers"
     return Check(name=name, passed=True, warnings=tuple(reasons))
+
+
+def _unserved(actions: list[ActionInfo]) -> Check:
+    """Actions that clients send goals to but no node serves: warnings, as a lone subscription's."""
+    reasons = tuple(
+        f"{a.name} ({a.type}) has clients ({', '.join(a.clients)}) but no server"
+        for a in actions
+        if a.clients and not a.servers
+    )
+    return Check(name="action servers", passed=True, warnings=reasons)
 
 
 def _per_topic(topics: list[TopicInfo], name: str, find: Callable[[TopicInfo], list[str]]) -> Check:
@@ -178,6 +194,8 @@ def _qos_mismatches(topic: TopicInfo) -> list[str]:
 
 
 def _drops(topic: TopicInfo) -> list[str]:
+    if is_hidden_name(topic.name):
+        return []  # an action's status keeps only its latest array (depth 1), as ROS's does
     return [
         f"{topic.name}: {e.node} dropped {e.dropped} message(s) (queue depth {e.qos.depth})"
         for e in _visible(topic.subscriptions)

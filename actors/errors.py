@@ -12,6 +12,7 @@
     ├── WorldError                   a robot without a world, a start pose that does not fit
     │   └── WorldFileError           a world file is malformed (names file and key path)
     ├── ServiceError                 a service call failed on the server's side
+    ├── ActionError                  a goal cannot do what was asked (rejected, invalid transition)
     ├── ParameterError               a parameter is undeclared, or already declared
     ├── ControlError                 the command line cannot reach or use a running graph
     ├── VirtualTimeDeadlock          virtual time has nothing left to wait for
@@ -36,6 +37,7 @@ __all__ = [
     "WorldError",
     "WorldFileError",
     "ServiceError",
+    "ActionError",
     "ParameterError",
     "ControlError",
     "VirtualTimeDeadlock",
@@ -95,6 +97,10 @@ class WorldFileError(WorldError):
 
 class ServiceError(ActorsError):
     """A service call failed: the server raised, or the call cannot be made."""
+
+
+class ActionError(ActorsError):
+    """An action goal cannot do what was asked: it was rejected, or the transition is not allowed."""
 
 
 class ParameterError(ActorsError):

@@ -1,20 +1,35 @@
-"""A read-only view of a running graph: nodes, topics, endpoints, drop counts.
+"""A read-only view of a running graph: nodes, topics, endpoints, drop counts, actions.
 
 The command line and ``doctor`` read the graph only through these frozen
-snapshots, which encode to msgpack as they are.
+snapshots, which encode to msgpack as they are.  Actions are not a table of
+their own: as rcl_action does, they are read off the topics and services
+they are made of (``<action>/_action/feedback`` and the rest), so a snapshot
+of topics is enough to list them (:func:`action_infos`).
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from typing import Protocol
 
 import msgspec
 
+from actors.names import is_hidden
 from actors.services import ServiceTable
 from actors.supervisor import Child, Supervisor
 from actors.topics import QoSProfile, Topic, TopicTable, type_name
 
-__all__ = ["EndpointInfo", "TopicInfo", "ServiceInfo", "NodeInfo", "GraphView", "Viewed"]
+__all__ = [
+    "EndpointInfo",
+    "TopicInfo",
+    "ServiceInfo",
+    "NodeInfo",
+    "ActionInfo",
+    "GraphView",
+    "Viewed",
+    "action_infos",
+    "action_of",
+]
 
 
 class EndpointInfo(msgspec.Struct, frozen=True, kw_only=True):
@@ -63,6 +78,60 @@ class NodeInfo(msgspec.Struct, frozen=True, kw_only=True):
     timers: int
 
 
+class ActionInfo(msgspec.Struct, frozen=True, kw_only=True):
+    """An action: its name, type, and the nodes serving it and sending it goals."""
+
+    name: str
+    type: str
+    servers: tuple[str, ...]
+    clients: tuple[str, ...]
+
+
+_INFIX = "/_action/"
+_SUFFIXES = {
+    "send_goal": "_SendGoal",
+    "cancel_goal": "",
+    "get_result": "_GetResult",
+    "feedback": "_FeedbackMessage",
+    "status": "",
+}
+
+
+def action_of(name: str, type_: str) -> tuple[str, str] | None:
+    """The action an endpoint belongs to, as ``(action name, action type)``, or None.
+
+    ``("/fibonacci/_action/send_goal", "pkg/action/Fibonacci_SendGoal")`` gives
+    ``("/fibonacci", "pkg/action/Fibonacci")``; the cancel and status endpoints
+    (whose types are action_msgs') give None, as do other names.
+    """
+    action, infix, role = name.rpartition(_INFIX)
+    suffix = _SUFFIXES.get(role) if infix else None
+    if not suffix or not type_.endswith(suffix) or "/action/" not in type_:
+        return None
+    return action, type_[: -len(suffix)]
+
+
+def action_infos(topics: Iterable[TopicInfo]) -> list[ActionInfo]:
+    """Every action of a graph, from its topics: servers publish feedback, clients subscribe to it.
+
+    Hidden nodes (the command line's own) are left out.  Sorted by name.
+    """
+    found = []
+    for topic in topics:
+        action = action_of(topic.name, topic.type)
+        if action is None:
+            continue
+        found.append(
+            ActionInfo(
+                name=action[0],
+                type=action[1],
+                servers=tuple(sorted({e.node for e in topic.publishers if not is_hidden(e.node)})),
+                clients=tuple(sorted({e.node for e in topic.subscriptions if not is_hidden(e.node)})),
+            )
+        )
+    return sorted(found, key=lambda info: info.name)
+
+
 class Viewed(Protocol):
     """The tables a graph view reads (a runtime's)."""
 
@@ -103,6 +172,10 @@ class GraphView:
             )
             for name, s in sorted(self._rt.services.servers.items())
         ]
+
+    def actions(self) -> list[ActionInfo]:
+        """Every action with its servers and clients, sorted by name."""
+        return action_infos(self.topics())
 
     def topic(self, name: str) -> TopicInfo | None:
         """One topic, or None."""

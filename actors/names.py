@@ -13,6 +13,7 @@ __all__ = [
     "fully_qualified",
     "expand",
     "is_hidden",
+    "is_hidden_name",
     "Resolver",
 ]
 
@@ -33,6 +34,14 @@ def validate_node_name(name: str) -> str:
 def is_hidden(name: str) -> bool:
     """Whether a node name is hidden, as in ROS: its last part starts with ``_``."""
     return name.rsplit("/", 1)[-1].startswith("_")
+
+
+def is_hidden_name(name: str) -> bool:
+    """Whether a topic, service or action name is hidden, as ROS tools judge it: a part starts with ``_``.
+
+    ``/fibonacci/_action/feedback`` is hidden: ``topic list`` leaves it out unless asked.
+    """
+    return any(part.startswith("_") for part in name.split("/"))
 
 
 def _check_absolute(name: str, what: str) -> str:

@@ -18,6 +18,9 @@ from collections.abc import Callable, Mapping, Sequence
 from contextvars import ContextVar
 from typing import Any, Protocol
 
+import anyio.abc
+
+from actors.actions import ActionClient, ActionServer
 from actors.actor import Actor
 from actors.clock import Clock, Rate
 from actors.log import NodeLogger
@@ -42,6 +45,7 @@ class Host(Protocol):
     deadlines: Deadlines
     parameter_events: Publisher
     graph: Any
+    _task_group: anyio.abc.TaskGroup
 
     def make_logger(self, name: str) -> NodeLogger: ...
 
@@ -104,6 +108,8 @@ class NodeCore:
         self.timers: dict[Timer, None] = {}
         self.services: dict[Service, None] = {}
         self.clients: dict[Client, None] = {}
+        self.action_servers: dict[ActionServer, None] = {}
+        self.action_clients: dict[ActionClient, None] = {}
         self.destroyed = False
         # Entities of the previous instance, taken over by name when this one recreates them.
         self._inherited: dict[tuple[str, str], list[Any]] = child.take_inheritance()
@@ -170,13 +176,46 @@ class NodeCore:
     def create_service(self, srv_type: type, name: str, handler: Callable[[Any, Any], Any]) -> Service:
         """See :meth:`Node.create_service`."""
         full = self.resolver.resolve(name, what="service name")
-        service = Service(self, full, srv_type, handler)
-        old = self._take_inherited("srv", full, srv_type)
+        return self.add_service(Service(self, full, srv_type, handler))
+
+    def add_service(self, service: Service) -> Service:
+        """Serve a service built by an entity of this node (an action's); adopts a predecessor's queue."""
+        old = self._take_inherited("srv", service.service_name, service.srv_type)
         self.runtime.services.add(service, replacing=old)
         if old is not None:
             service._adopt(old)
         self.services[service] = None
         return service
+
+    def create_action_server(
+        self, action_type: type, name: str, execute: Callable[..., Any], **options: Any
+    ) -> ActionServer:
+        """See :meth:`Node.create_action_server`."""
+        full = self.resolver.resolve(name, what="action name")
+        server = ActionServer(self, full, action_type, execute, **options)
+        self.action_servers[server] = None
+        return server
+
+    def create_action_client(self, action_type: type, name: str) -> ActionClient:
+        """See :meth:`Node.create_action_client`."""
+        full = self.resolver.resolve(name, what="action name")
+        client = ActionClient(self, full, action_type)
+        self.action_clients[client] = None
+        return client
+
+    def destroy_action_server(self, server: ActionServer) -> None:
+        """Stop ``server``: its unfinished goals abort, its services and topics go away."""
+        self.action_servers.pop(server, None)
+        server._destroy_entities()
+
+    def destroy_action_client(self, client: ActionClient) -> None:
+        """Forget ``client`` and its services and topics."""
+        self.action_clients.pop(client, None)
+        client._destroy_entities()
+
+    def start_task(self, fn: Callable[..., Any], *args: Any, name: str) -> None:
+        """Run ``fn(*args)`` beside the node's actor, in the runtime's task group; it must not raise."""
+        self.runtime._task_group.start_soon(fn, *args, name=name)
 
     def create_client(self, srv_type: type, name: str) -> Client:
         """See :meth:`Node.create_client`."""
@@ -223,6 +262,8 @@ class NodeCore:
     def _stop_activity(self) -> None:
         for timer in self.timers:
             timer.cancel()
+        for server in self.action_servers:
+            server._halt(f"its node {self.fqn} stopped")
         self.actor.stop()
 
     def orphan(self) -> dict[tuple[str, str], list[Any]]:
@@ -385,6 +426,40 @@ class Node:
         """Forget ``client``; returns True as rclpy does."""
         self._core.destroy_client(client)
         return True
+
+    # -- actions --------------------------------------------------------------
+
+    def create_action_server(
+        self,
+        action_type: type,
+        action_name: str,
+        execute: Callable[..., Any],
+        *,
+        goal: Callable[[Any], Any] | None = None,
+        cancel: Callable[[Any], Any] | None = None,
+        accepted: Callable[[Any], Any] | None = None,
+        result_timeout: float = 10.0,
+    ) -> ActionServer:
+        """Serve the action ``action_name``: ``execute(goal_handle)`` runs each accepted goal.
+
+        ``execute`` (plain or ``async``) runs in a task of its own, sends
+        ``goal_handle.publish_feedback(...)``, ends the goal with ``succeed()``,
+        ``abort()`` or ``canceled()`` and returns the action's Result.
+        ``goal(request)`` accepts or rejects (GoalResponse; default accept),
+        ``cancel(goal_handle)`` accepts or rejects a cancel (CancelResponse;
+        default reject, as ROS), ``accepted(goal_handle)`` starts an accepted
+        goal (default ``goal_handle.execute()``).  Results are kept
+        ``result_timeout`` seconds after a goal ends.  Raises ServiceError if
+        another node serves the action.  See :mod:`actors.actions`.
+        """
+        return self._core.create_action_server(
+            action_type, action_name, execute,
+            goal=goal, cancel=cancel, accepted=accepted, result_timeout=result_timeout,
+        )
+
+    def create_action_client(self, action_type: type, action_name: str) -> ActionClient:
+        """A client of ``action_name``: ``handle = await client.send_goal(goal, feedback=cb)``."""
+        return self._core.create_action_client(action_type, action_name)
 
     # -- parameters -----------------------------------------------------------
 

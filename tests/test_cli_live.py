@@ -133,7 +133,7 @@ def test_node_info_prints_ros2s_sections(graph):
         "  Service Servers:\n"
         "    /minimal_publisher/describe_parameters: rcl_interfaces/srv/DescribeParameters\n" in out
     )
-    assert out.endswith("  Service Clients:\n\n")
+    assert out.endswith("  Service Clients:\n\n  Action Servers:\n\n  Action Clients:\n\n")
 
 
 def test_topic_list_and_info(graph):

@@ -43,6 +43,7 @@ async def test_a_clean_graph_passes_every_check():
     assert checks(report) == {
         "publishers without subscribers": None,
         "subscriptions without publishers": None,
+        "action servers": None,
         "topic types": None,
         "QoS compatibility": None,
         "node health": None,
@@ -253,3 +254,24 @@ async def test_the_command_line_prints_warnings_and_counts_them_only_with_includ
         f"1/{total} checks failed",
         f"  publishers without subscribers: {reason}",
     ]
+
+
+@pytest.mark.virtual_time
+async def test_actions_alone_are_healthy_and_a_client_without_server_is_a_warning():
+    from nodes.fibonacci_action_client import FibonacciActionClient
+    from nodes.fibonacci_action_server import FibonacciActionServer
+
+    async with Runtime(name="doctor_actions") as rt:
+        rt.spawn(FibonacciActionServer)
+        await anyio.sleep(1)
+        assert not any(c.failed(include_warnings=True) for c in diagnose(rt).checks)  # feedback unheard: fine
+        await rt.stop("fibonacci_action_server")
+        rt.spawn(FibonacciActionClient)
+        await anyio.sleep(1)
+        report = diagnose(rt)
+    assert checks(report)["action servers"] == (
+        "/fibonacci (example_interfaces/action/Fibonacci) has clients (/fibonacci_action_client) but no server",
+    )
+    assert checks(report)["subscriptions without publishers"] is None
+    (unserved,) = [c for c in report.checks if c.name == "action servers"]
+    assert unserved.passed and unserved.failed(include_warnings=True)

@@ -16,7 +16,7 @@ ROOT = Path(actors.__file__).resolve().parent
 # Lowest first.  A module may import its own layer and those below it, never above.
 LAYERS: list[set[str]] = [
     {"errors", "log", "names", "clock", "actor", "config", "idl", "idl_gen", "codec", "rosargs"},
-    {"topics", "services", "timers", "params"},
+    {"topics", "services", "timers", "params", "actions"},
     {"node"},
     {"supervisor", "runtime", "introspection", "graph"},
     {"control", "doctor"},

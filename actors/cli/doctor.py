@@ -45,6 +45,7 @@ def doctor(args: argparse.Namespace) -> None:
     """
     from actors.control import Diagnose
     from actors.doctor import Report
+    from actors.introspection import action_infos
 
     with connect(args.graph) as conn:
         report = conn.request(Diagnose(), Report)
@@ -68,6 +69,14 @@ def doctor(args: argparse.Namespace) -> None:
                 (n.name, f"{n.state}, {n.restarts} restart(s), {n.crashes} crash(es)")
                 for n in graph.nodes
             ],
+        )
+        _section(
+            "ACTIONS",
+            [
+                (a.name, f"{a.type}, servers: {', '.join(a.servers) or 'none'}, "
+                 f"clients: {', '.join(a.clients) or 'none'}")
+                for a in action_infos(graph.topics)
+            ] or [("actions", "none")],
         )
         _section(
             "TOPICS",

@@ -7,7 +7,8 @@ from typing import Any
 
 from actors.cli._client import add_verb, graph_snapshot, query
 from actors.control import GetNode, NodeDetail
-from actors.names import is_hidden
+from actors.introspection import action_of
+from actors.names import is_hidden, is_hidden_name
 
 __all__ = ["register"]
 
@@ -26,9 +27,12 @@ def register(subparsers: Any) -> None:
         verbs,
         "info",
         node_info,
-        help="a node's subscribers, publishers, service servers and clients",
+        help="a node's subscribers, publishers, service servers and clients, action servers and clients",
     )
     info.add_argument("node", metavar="NODE")
+    info.add_argument(
+        "--include-hidden", action="store_true", help="also show hidden topics, services and actions"
+    )
 
 
 def list_nodes(args: argparse.Namespace) -> None:
@@ -39,14 +43,28 @@ def list_nodes(args: argparse.Namespace) -> None:
 
 
 def node_info(args: argparse.Namespace) -> None:
-    """Print the node's name, then each section's ``name: type`` lines; ControlError if unknown."""
+    """Print the node's name, then each section's ``name: type`` lines; ControlError if unknown.
+
+    As ``ros2 node info``, hidden names (an action's ``/_action/`` topics and
+    services among them) are left out unless ``--include-hidden``; actions are
+    read off their ``send_goal`` servers and clients.
+    """
     detail = query(args, GetNode(name=args.node), NodeDetail)
     print(detail.name)
+
+    def shown(pairs: tuple[tuple[str, str], ...]) -> list[tuple[str, str]]:
+        return [(name, type_) for name, type_ in pairs if args.include_hidden or not is_hidden_name(name)]
+
+    def actions(pairs: tuple[tuple[str, str], ...]) -> list[tuple[str, str]]:
+        return sorted(a for n, t in pairs if n.endswith("/_action/send_goal") and (a := action_of(n, t)))
+
     sections = (
-        ("Subscribers", detail.subscribers),
-        ("Publishers", detail.publishers),
-        ("Service Servers", detail.servers),
-        ("Service Clients", detail.clients),
+        ("Subscribers", shown(detail.subscribers)),
+        ("Publishers", shown(detail.publishers)),
+        ("Service Servers", shown(detail.servers)),
+        ("Service Clients", shown(detail.clients)),
+        ("Action Servers", shown(tuple(actions(detail.servers)))),
+        ("Action Clients", shown(tuple(actions(detail.clients)))),
     )
     for title, pairs in sections:
         print(f"  {title}:")

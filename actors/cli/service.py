@@ -19,6 +19,9 @@ def register(subparsers: Any) -> None:
     listing.add_argument(
         "-t", "--show-types", action="store_true", help="also show each service's type"
     )
+    listing.add_argument(
+        "--include-hidden-services", action="store_true", help="also list hidden services (an action's)"
+    )
 
     type_ = add_verb(verbs, "type", service_type, help="print a service's type")
     type_.add_argument("service", metavar="NAME")
@@ -39,8 +42,11 @@ def register(subparsers: Any) -> None:
 
 
 def list_services(args: argparse.Namespace) -> None:
-    """Print each service's name, with ``[type]`` under ``-t``."""
-    print_names(graph_snapshot(args).services, args.show_types)
+    """Print each service's name, with ``[type]`` under ``-t``; hidden ones only when asked."""
+    from actors.names import is_hidden_name
+
+    services = graph_snapshot(args).services
+    print_names([s for s in services if args.include_hidden_services or not is_hidden_name(s.name)], args.show_types)
 
 
 def service_type(args: argparse.Namespace) -> None:

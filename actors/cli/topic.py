@@ -19,6 +19,9 @@ def register(subparsers: Any) -> None:
     listing.add_argument(
         "-t", "--show-types", action="store_true", help="also show each topic's type"
     )
+    listing.add_argument(
+        "--include-hidden-topics", action="store_true", help="also list hidden topics (an action's)"
+    )
 
     info = add_verb(
         verbs, "info", topic_info, help="a topic's type and its publishers and subscriptions"
@@ -78,8 +81,11 @@ def _positive(text: str) -> float:
 
 
 def list_topics(args: argparse.Namespace) -> None:
-    """Print each topic's name, with ``[type]`` under ``-t``."""
-    print_names(graph_snapshot(args).topics, args.show_types)
+    """Print each topic's name, with ``[type]`` under ``-t``; hidden ones only when asked."""
+    from actors.names import is_hidden_name
+
+    topics = graph_snapshot(args).topics
+    print_names([t for t in topics if args.include_hidden_topics or not is_hidden_name(t.name)], args.show_types)
 
 
 def topic_info(args: argparse.Namespace) -> None:
