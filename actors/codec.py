@@ -1,4 +1,4 @@
-"""Interface types by ROS name, and their codecs: msgpack, JSON, YAML, JSON Schema, MCAP text.
+"""Interface types by ROS name, and their codecs: msgpack, JSON, YAML, CDR, JSON Schema, MCAP text.
 
 The registry maps ``pkg/msg/Name`` (and ``pkg/srv/Name``, ``pkg/action/Name``,
 ``pkg/Name``) to the generated classes, importing a package's module only when one of its types is
@@ -11,6 +11,10 @@ hot paths: encoders are shared, decoders cached per type, and nothing is
 validated on encode (a struct does not check its fields when built; the
 receiving side's decode does).  JSON cannot carry NaN or infinity: msgspec
 writes them as ``null``, which does not decode as a float.
+
+``encode_cdr``/``decode_cdr`` speak ROS 2's own wire format (see
+:mod:`actors.cdr`), ``type_hash`` names a type as ROS 2 does (see
+:mod:`actors.typehash`).
 """
 
 from __future__ import annotations
@@ -26,14 +30,17 @@ from typing import Any, TypeVar
 import msgspec
 import msgspec.inspect as mi
 
+from actors import cdr
 from actors.errors import InterfaceError, MessageValidationError, UnknownInterfaceError
 
 __all__ = [
     "convert",
     "decode",
+    "decode_cdr",
     "decode_json",
     "definition_text",
     "encode",
+    "encode_cdr",
     "encode_json",
     "from_yaml",
     "get_type",
@@ -227,6 +234,25 @@ def encode_json(msg: Any) -> bytes:
 def decode_json(data: bytes | str, type_: type[T] | str) -> T:
     """A ``type_`` message from JSON ``data``; raises as :func:`decode` does."""
     return _decode(_json_decoders, msgspec.json.Decoder, data, type_)
+
+
+def encode_cdr(msg: Any) -> bytes:
+    """``msg`` as ROS 2's CDR (little-endian, with its 4-byte header), as a ROS middleware sends it.
+
+    Raises TypeError for an object that is not a generated message, CdrError
+    (a MessageValidationError) naming the field for a value its ROS type
+    cannot carry.
+    """
+    return cdr.encode(msg)
+
+
+def decode_cdr(data: bytes | bytearray | memoryview, type_: type[T] | str) -> T:
+    """A ``type_`` message (a class or a ROS name) from CDR ``data``, either endianness.
+
+    Raises CdrError naming the type and field path for truncated or malformed
+    data, UnknownInterfaceError for an unknown name.
+    """
+    return cdr.decode(data, _resolve(type_))
 
 
 def _decode(decoders: dict[Any, Any], factory: Callable[[type], Any], data: Any, type_: Any) -> Any:

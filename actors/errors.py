@@ -5,6 +5,7 @@
     │   ├── IdlError                 a syntax or type error at file:line
     │   ├── UnknownInterfaceError    no such type (``pkg/msg/Name``)
     │   └── MessageValidationError   a value does not fit its type (names the field path)
+    │       └── CdrError             bytes that are not CDR of the type, or a value CDR cannot carry
     ├── InvalidNameError             a node, topic or service name breaks the ROS rules
     ├── TopicTypeError               publisher and subscription disagree on a topic's type
     ├── GraphFileError               graph.toml is malformed (names file and key path)
@@ -30,6 +31,7 @@ __all__ = [
     "IdlError",
     "UnknownInterfaceError",
     "MessageValidationError",
+    "CdrError",
     "InvalidNameError",
     "TopicTypeError",
     "GraphFileError",
@@ -69,6 +71,14 @@ class UnknownInterfaceError(InterfaceError, LookupError):
 
 class MessageValidationError(InterfaceError, ValueError):
     """A value does not fit its message type; the text names the field path."""
+
+
+class CdrError(MessageValidationError):
+    """CDR bytes that do not decode as their type (truncated, malformed), or a value CDR cannot carry.
+
+    The text names the type and the field path (``$.header.frame_id``,
+    ``$.points[3].x``).
+    """
 
 
 class InvalidNameError(ActorsError, ValueError):

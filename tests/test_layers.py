@@ -15,7 +15,8 @@ ROOT = Path(actors.__file__).resolve().parent
 
 # Lowest first.  A module may import its own layer and those below it, never above.
 LAYERS: list[set[str]] = [
-    {"errors", "log", "names", "clock", "actor", "config", "idl", "idl_gen", "codec", "rosargs"},
+    {"errors", "log", "names", "clock", "actor", "config", "idl", "idl_gen", "codec", "rosargs", "layout", "cdr",
+     "typehash"},
     {"topics", "services", "timers", "params", "actions"},
     {"node"},
     {"supervisor", "runtime", "introspection", "graph"},
