@@ -132,3 +132,28 @@ def test_doctor_is_happy_and_reports_the_action(graph):
         r"clients: /fibonacci_action_client",
         report,
     )
+
+
+def test_ctrl_c_cancels_the_goal(graph):
+    import signal
+    import subprocess
+    import sys
+
+    from conftest import ROOT, python_env
+
+    command = [sys.executable, "-m", "actors", "action", "send_goal", "/fibonacci",
+               "example_interfaces/action/Fibonacci", "{order: 40}", "--feedback", "--graph", graph.name]
+    proc = subprocess.Popen(command, cwd=ROOT, env=python_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert proc.stdout is not None
+        lines = []
+        while not lines or not lines[-1].startswith("Feedback:"):
+            lines.append(proc.stdout.readline())
+            assert lines[-1], "".join(lines)
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=20)
+    finally:
+        proc.kill()
+    assert proc.returncode == 0 and err == ""
+    assert out.endswith("Canceling goal...\nGoal canceled.\n")
+    graph.wait_for("Goal canceled", after=0)
