@@ -7,6 +7,10 @@
     │   └── MessageValidationError   a value does not fit its type (names the field path)
     │       └── CdrError             bytes that are not CDR of the type, or a value CDR cannot carry
     ├── InvalidNameError             a node, topic or service name breaks the ROS rules
+    │   ├── InvalidNodeNameException     (rclpy's names, for the same errors)
+    │   ├── InvalidNamespaceException
+    │   ├── InvalidTopicNameException
+    │   └── InvalidServiceNameException
     ├── TopicTypeError               publisher and subscription disagree on a topic's type
     ├── GraphFileError               graph.toml is malformed (names file and key path)
     ├── RosArgsError                 a --ros-args argument or a parameter file is malformed
@@ -14,10 +18,21 @@
     │   └── WorldFileError           a world file is malformed (names file and key path)
     ├── ServiceError                 a service call failed on the server's side
     ├── ActionError                  a goal cannot do what was asked (rejected, invalid transition)
-    ├── ParameterError               a parameter is undeclared, or already declared
+    ├── ParameterError               a parameter cannot be declared, read or set (rclpy: ParameterException)
+    │   ├── ParameterNotDeclaredException        used without being declared
+    │   ├── ParameterAlreadyDeclaredException    declared twice
+    │   ├── InvalidParameterException            a name no parameter may have
+    │   ├── InvalidParameterTypeException        a value of another type than declared
+    │   ├── InvalidParameterValueException       refused by its descriptor or an on-set callback
+    │   ├── ParameterImmutableException          read-only
+    │   └── ParameterUninitializedException      declared with a type but never given a value
     ├── ControlError                 the command line cannot reach or use a running graph
     ├── VirtualTimeDeadlock          virtual time has nothing left to wait for
     └── Escalation                   the supervisor gave up: too many restarts
+
+The classes named ``...Exception`` carry rclpy's names (``rclpy.exceptions``), so
+code written for rclpy catches what it expects; ``ParameterException`` is another
+name for ``ParameterError``.
 
 A ``TypeError`` (not an ActorsError) is raised for a message of the wrong type,
 as Python itself would, and ``TimeoutError`` for a call that timed out.
@@ -33,6 +48,10 @@ __all__ = [
     "MessageValidationError",
     "CdrError",
     "InvalidNameError",
+    "InvalidNodeNameException",
+    "InvalidNamespaceException",
+    "InvalidTopicNameException",
+    "InvalidServiceNameException",
     "TopicTypeError",
     "GraphFileError",
     "RosArgsError",
@@ -41,6 +60,14 @@ __all__ = [
     "ServiceError",
     "ActionError",
     "ParameterError",
+    "ParameterException",
+    "ParameterNotDeclaredException",
+    "ParameterAlreadyDeclaredException",
+    "InvalidParameterException",
+    "InvalidParameterTypeException",
+    "InvalidParameterValueException",
+    "ParameterImmutableException",
+    "ParameterUninitializedException",
     "ControlError",
     "VirtualTimeDeadlock",
     "Escalation",
@@ -85,6 +112,22 @@ class InvalidNameError(ActorsError, ValueError):
     """A node, namespace, topic or service name breaks the ROS naming rules."""
 
 
+class InvalidNodeNameException(InvalidNameError):
+    """A node name breaks the ROS naming rules."""
+
+
+class InvalidNamespaceException(InvalidNameError):
+    """A namespace breaks the ROS naming rules."""
+
+
+class InvalidTopicNameException(InvalidNameError):
+    """A topic name breaks the ROS naming rules."""
+
+
+class InvalidServiceNameException(InvalidNameError):
+    """A service name breaks the ROS naming rules."""
+
+
 class TopicTypeError(ActorsError, TypeError):
     """An endpoint's message type differs from the type already used on the topic."""
 
@@ -114,7 +157,38 @@ class ActionError(ActorsError):
 
 
 class ParameterError(ActorsError):
-    """A parameter was used without being declared, or declared twice."""
+    """A parameter cannot be declared, read or set; the text names the parameter and node."""
+
+
+ParameterException = ParameterError
+
+
+class ParameterNotDeclaredException(ParameterError, LookupError):
+    """A parameter was read, set or described without being declared."""
+
+
+class ParameterAlreadyDeclaredException(ParameterError):
+    """A parameter was declared a second time."""
+
+
+class InvalidParameterException(ParameterError, ValueError):
+    """A parameter name breaks the rules (empty, or with empty parts between dots)."""
+
+
+class InvalidParameterTypeException(ParameterError, TypeError):
+    """A parameter was given a value of another type than the one it was declared with."""
+
+
+class InvalidParameterValueException(ParameterError, ValueError):
+    """A value was refused by the parameter's descriptor (range) or by an on-set callback."""
+
+
+class ParameterImmutableException(ParameterError):
+    """A read-only parameter was to be changed or undeclared."""
+
+
+class ParameterUninitializedException(ParameterError):
+    """A parameter declared with only a type was read before it was given a value."""
 
 
 class ControlError(ActorsError):

@@ -5,7 +5,13 @@ from __future__ import annotations
 import re
 from collections.abc import Mapping
 
-from actors.errors import InvalidNameError
+from actors.errors import (
+    InvalidNameError,
+    InvalidNamespaceException,
+    InvalidNodeNameException,
+    InvalidServiceNameException,
+    InvalidTopicNameException,
+)
 
 __all__ = [
     "validate_node_name",
@@ -19,12 +25,22 @@ __all__ = [
 
 _NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
 _TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
+# The error raised for each kind of name (rclpy's exception names); others get InvalidNameError.
+_ERRORS: dict[str, type[InvalidNameError]] = {
+    "namespace": InvalidNamespaceException,
+    "topic name": InvalidTopicNameException,
+    "service name": InvalidServiceNameException,
+}
+
+
+def _invalid(what: str, text: str) -> InvalidNameError:
+    return _ERRORS.get(what, InvalidNameError)(text)
 
 
 def validate_node_name(name: str) -> str:
     """Return ``name`` if it is a valid ROS node name, else raise InvalidNameError."""
     if not isinstance(name, str) or not _NODE_NAME.match(name):
-        raise InvalidNameError(
+        raise InvalidNodeNameException(
             f"invalid node name {name!r}: use letters, digits and underscores, "
             f"not starting with a digit"
         )
@@ -50,9 +66,10 @@ def _check_absolute(name: str, what: str) -> str:
     tokens = name[1:].split("/")
     for token in tokens:
         if not _TOKEN.match(token):
-            raise InvalidNameError(
+            raise _invalid(
+                what,
                 f"invalid {what} {name!r}: each part between '/' must be letters, digits "
-                f"and underscores, not empty and not starting with a digit"
+                f"and underscores, not empty and not starting with a digit",
             )
     return name
 
@@ -76,7 +93,7 @@ def fully_qualified(namespace: str, name: str) -> str:
 def expand(name: str, namespace: str, node_name: str, *, what: str = "topic name") -> str:
     """Expand a relative, absolute or ``~/private`` name to an absolute one, by ROS rules."""
     if not isinstance(name, str) or not name:
-        raise InvalidNameError(f"invalid {what} {name!r}: it must not be empty")
+        raise _invalid(what, f"invalid {what} {name!r}: it must not be empty")
     if name == "~" or name.startswith("~/"):
         full = fully_qualified(namespace, node_name) + name[1:]
     elif name.startswith("/"):
@@ -84,7 +101,7 @@ def expand(name: str, namespace: str, node_name: str, *, what: str = "topic name
     else:
         full = (namespace if namespace != "/" else "") + "/" + name
     if full != "/" and full.endswith("/"):
-        raise InvalidNameError(f"invalid {what} {name!r}: it must not end with '/'")
+        raise _invalid(what, f"invalid {what} {name!r}: it must not end with '/'")
     return _check_absolute(full, what)
 
 
