@@ -8,7 +8,7 @@ from actors.actions import (
     GoalResponse,
     ServerGoalHandle,
 )
-from actors.clock import Clock, Duration, Rate, Time, VirtualTimeLoop
+from actors.clock import Clock, ClockType, Duration, Rate, ROSClock, Time, VirtualTimeLoop
 from actors.errors import (
     ActionError,
     ActorsError,
@@ -21,7 +21,9 @@ from actors.errors import (
     VirtualTimeDeadlock,
 )
 from actors.introspection import EndpointInfo, GraphView, NodeInfo, TopicInfo
+from actors.log import LoggingSeverity
 from actors.node import Node
+from actors.param_client import AsyncParameterClient
 from actors.params import Parameter, ParameterType
 from actors.runtime import Runtime
 from actors.services import Client, Service
@@ -43,12 +45,14 @@ __all__ = [
     "ActionError",
     "ActionServer",
     "ActorsError",
+    "AsyncParameterClient",
     "CancelResponse",
     "ClientGoalHandle",
     "GoalResponse",
     "ServerGoalHandle",
     "Client",
     "Clock",
+    "ClockType",
     "Duration",
     "DurabilityPolicy",
     "EndpointInfo",
@@ -57,6 +61,7 @@ __all__ = [
     "GraphView",
     "HistoryPolicy",
     "InvalidNameError",
+    "LoggingSeverity",
     "Node",
     "Parameter",
     "ParameterError",
@@ -64,6 +69,7 @@ __all__ = [
     "NodeInfo",
     "Publisher",
     "QoSProfile",
+    "ROSClock",
     "Rate",
     "ReliabilityPolicy",
     "RestartType",

@@ -22,15 +22,16 @@ import anyio.abc
 
 from actors.actions import ActionClient, ActionServer
 from actors.actor import Actor
-from actors.clock import Clock, Rate
+from actors.clock import Clock, Rate, ROSClock
 from actors.log import NodeLogger
 from actors.names import Resolver, fully_qualified, normalize_namespace, validate_node_name
-from actors.params import OnSet, Parameter, ParameterStore
-from actors.services import Client, Service
-from actors.services import ServiceTable
+from actors.node_graph import GraphQueries
+from actors.node_params import ParameterMethods
+from actors.params import Parameter, ParameterStore
+from actors.services import Client, Service, ServiceTable
 from actors.timers import Deadlines, Timer
 from actors.topics import Publisher, QoSProfile, Subscription, TopicTable, as_qos
-from interfaces.rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+from interfaces.rcl_interfaces.msg import ParameterDescriptor
 
 __all__ = ["Node", "NodeCore", "Host", "ChildSpec", "SpawnRequest"]
 
@@ -39,13 +40,14 @@ class Host(Protocol):
     """What a node needs from the runtime that spawns it (the runtime layer sits above this one)."""
 
     loop: asyncio.AbstractEventLoop
-    clock: Clock
+    clock: ROSClock
     topics: TopicTable
     services: ServiceTable
     deadlines: Deadlines
     parameter_events: Publisher
     graph: Any
     _task_group: anyio.abc.TaskGroup
+    nodes: dict[str, NodeCore]
 
     def make_logger(self, name: str) -> NodeLogger: ...
 
@@ -88,6 +90,10 @@ class NodeCore:
         default_name: str,
         namespace: str | None,
         parameter_overrides: Mapping[str, Any] | None,
+        *,
+        allow_undeclared_parameters: bool = False,
+        automatically_declare_parameters_from_overrides: bool = False,
+        start_parameter_services: bool = True,
     ) -> None:
         child = request.child
         self.node = node
@@ -98,7 +104,7 @@ class NodeCore:
         self.fqn = fully_qualified(self.namespace, self.name)
         self.resolver = Resolver(self.namespace, self.name, child.remap)
         self.loop: asyncio.AbstractEventLoop = self.runtime.loop
-        self.clock: Clock = self.runtime.clock
+        self.clock: ROSClock = self.runtime.clock
         self.parameter_events = self.runtime.parameter_events
         self.actor = Actor(self.loop)
         self._logger: NodeLogger | None = None
@@ -114,8 +120,18 @@ class NodeCore:
         # Entities of the previous instance, taken over by name when this one recreates them.
         self._inherited: dict[tuple[str, str], list[Any]] = child.take_inheritance()
         self.runtime._register_node(self)
-        self.params = ParameterStore(self, {**(parameter_overrides or {}), **child.params})
-        self.params.serve()
+        self.params = ParameterStore(
+            self, {**(parameter_overrides or {}), **child.params}, allow_undeclared=allow_undeclared_parameters
+        )
+        if automatically_declare_parameters_from_overrides:
+            for name, value in self.params.overrides.items():
+                self.params.declare(name, value, ParameterDescriptor(), ignore_override=True)
+        if not self.params.has("use_sim_time"):
+            # Every ROS node has it.  Accepted, and it changes nothing: the graph's clock is
+            # simulated (virtual) time or wall time for every node alike.
+            self.params.declare("use_sim_time", False)
+        if start_parameter_services:
+            self.params.serve()
 
     # -- entities -------------------------------------------------------------
 
@@ -306,12 +322,21 @@ def _check_type(msg_type: Any, where: str) -> None:
         raise TypeError(f"{where} needs a message type (a class), got {msg_type!r}")
 
 
-class Node:
+class Node(ParameterMethods, GraphQueries):
     """A ROS node as an actor: subclass it and create entities in ``__init__``, as in rclpy.
 
     All callbacks of one node (subscriptions, timers, services, parameter
     callbacks) run one at a time in the node's own task, so node code needs no
     locks.  Callbacks may be plain functions or ``async def``.
+
+    ``parameter_overrides`` (a mapping, or rclpy's list of Parameters) are
+    initial values, beneath those of the graph or ``spawn(params=...)``.
+    ``allow_undeclared_parameters`` lets sets and reads of undeclared names
+    through; ``automatically_declare_parameters_from_overrides`` declares every
+    override at once; ``start_parameter_services=False`` leaves out the
+    ``~/get_parameters`` family.  The parameter and graph methods are rclpy's
+    (see :class:`~actors.node_params.ParameterMethods`,
+    :class:`~actors.node_graph.GraphQueries`).
 
     Raises RuntimeError when constructed outside ``Runtime.spawn``, and
     InvalidNameError for a bad node name or namespace.
@@ -324,7 +349,10 @@ class Node:
         node_name: str,
         *,
         namespace: str | None = None,
-        parameter_overrides: Mapping[str, Any] | None = None,
+        parameter_overrides: Mapping[str, Any] | Sequence[Parameter] | None = None,
+        allow_undeclared_parameters: bool = False,
+        automatically_declare_parameters_from_overrides: bool = False,
+        start_parameter_services: bool = True,
     ) -> None:
         request = _spawning.get()
         if request is None:
@@ -332,7 +360,18 @@ class Node:
                 f"{type(self).__name__} must be started by a runtime: "
                 f"`async with Runtime() as rt: rt.spawn({type(self).__name__})`"
             )
-        self._core = NodeCore(self, request, node_name, namespace, parameter_overrides)
+        if parameter_overrides is not None and not isinstance(parameter_overrides, Mapping):
+            parameter_overrides = {p.name: p.value for p in parameter_overrides}
+        self._core = NodeCore(
+            self,
+            request,
+            node_name,
+            namespace,
+            parameter_overrides,
+            allow_undeclared_parameters=allow_undeclared_parameters,
+            automatically_declare_parameters_from_overrides=automatically_declare_parameters_from_overrides,
+            start_parameter_services=start_parameter_services,
+        )
 
     # -- names ----------------------------------------------------------------
 
@@ -383,24 +422,6 @@ class Node:
         """Destroy ``subscription``; returns True as rclpy does."""
         self._core.destroy_subscription(subscription)
         return True
-
-    def count_publishers(self, topic: str) -> int:
-        """How many publishers ``topic`` has."""
-        info = self._core.runtime.topics.topics.get(self._core.resolver.resolve(topic))
-        return len(info.publishers) if info else 0
-
-    def count_subscribers(self, topic: str) -> int:
-        """How many subscriptions ``topic`` has."""
-        info = self._core.runtime.topics.topics.get(self._core.resolver.resolve(topic))
-        return len(info.subscriptions) if info else 0
-
-    def get_topic_names_and_types(self) -> list[tuple[str, list[str]]]:
-        """Every topic of the graph with its type, as rclpy returns them."""
-        return [(t.name, [t.type]) for t in self._core.runtime.graph.topics()]
-
-    def get_node_names(self) -> list[str]:
-        """The names of every node in the graph."""
-        return [n.name.rsplit("/", 1)[-1] for n in self._core.runtime.graph.nodes()]
 
     # -- services -------------------------------------------------------------
 
@@ -461,70 +482,6 @@ class Node:
         """A client of ``action_name``: ``handle = await client.send_goal(goal, feedback=cb)``."""
         return self._core.create_action_client(action_type, action_name)
 
-    # -- parameters -----------------------------------------------------------
-
-    def declare_parameter(
-        self,
-        name: str,
-        value: Any = None,
-        descriptor: ParameterDescriptor | None = None,
-        ignore_override: bool = False,
-    ) -> Parameter:
-        """Declare a parameter with a default; graph or spawn() overrides win.
-
-        The type comes from ``descriptor.type`` or else from the value.  Raises
-        ParameterError when already declared or when the value does not fit.
-        """
-        return self._core.params.declare(name, value, descriptor, ignore_override)
-
-    def declare_parameters(
-        self, namespace: str, parameters: Sequence[tuple[Any, ...]]
-    ) -> list[Parameter]:
-        """Declare several ``(name, value[, descriptor])`` under ``namespace.``, as rclpy."""
-        prefix = f"{namespace}." if namespace else ""
-        return [self.declare_parameter(prefix + p[0], *p[1:]) for p in parameters]
-
-    def undeclare_parameter(self, name: str) -> None:
-        """Forget a parameter (not a read-only one)."""
-        self._core.params.undeclare(name)
-
-    def has_parameter(self, name: str) -> bool:
-        """Whether ``name`` is declared."""
-        return self._core.params.has(name)
-
-    def get_parameter(self, name: str) -> Parameter:
-        """The parameter ``name`` (``.value``); ParameterError if undeclared."""
-        return self._core.params.get(name)
-
-    def get_parameters(self, names: Sequence[str]) -> list[Parameter]:
-        """Several parameters by name."""
-        return [self._core.params.get(n) for n in names]
-
-    def get_parameter_or(self, name: str, alternative_value: Parameter | None = None) -> Parameter | None:
-        """The parameter ``name``, or ``alternative_value`` if undeclared."""
-        params = self._core.params
-        return params.get(name) if params.has(name) else alternative_value
-
-    def describe_parameter(self, name: str) -> ParameterDescriptor:
-        """The descriptor of ``name``."""
-        return self._core.params.describe(name)
-
-    def set_parameters(self, parameter_list: Sequence[Parameter]) -> list[SetParametersResult]:
-        """Set each parameter; a result per parameter says whether and why not."""
-        return self._core.params.set(parameter_list)
-
-    def set_parameters_atomically(self, parameter_list: Sequence[Parameter]) -> SetParametersResult:
-        """Set all parameters or none."""
-        return self._core.params.set_atomically(parameter_list)
-
-    def add_on_set_parameters_callback(self, callback: OnSet) -> OnSet:
-        """Call ``callback(parameters)`` before each set; a result with ``successful=False`` refuses it."""
-        return self._core.params.add_callback(callback)
-
-    def remove_on_set_parameters_callback(self, callback: OnSet) -> None:
-        """Stop calling ``callback``."""
-        self._core.params.remove_callback(callback)
-
     # -- time -----------------------------------------------------------------
 
     def create_timer(self, timer_period_sec: float, callback: Callable[[], Any]) -> Timer:
@@ -536,12 +493,23 @@ class Node:
         self._core.destroy_timer(timer)
         return True
 
-    def create_rate(self, frequency: float) -> Rate:
-        """A Rate for ``await rate.sleep()`` loops in ``async`` callbacks."""
+    def create_rate(self, frequency: float, clock: Clock | None = None) -> Rate:
+        """A Rate for ``await rate.sleep()`` loops in ``async`` callbacks, on the node's clock.
+
+        Raises ValueError for a frequency that is not > 0, or a ``clock`` other
+        than the node's (a rate runs on the graph's time).
+        """
+        if clock is not None and clock is not self._core.clock:
+            raise ValueError(f"a rate runs on the node's clock, not on {clock!r}")
         return Rate(frequency, self._core.loop)
 
-    def get_clock(self) -> Clock:
-        """The runtime's clock (virtual under virtual time)."""
+    def destroy_rate(self, rate: Rate) -> bool:
+        """Destroy ``rate``: its sleepers wake, and sleeping on it again raises RuntimeError."""
+        rate.destroy()
+        return True
+
+    def get_clock(self) -> ROSClock:
+        """The runtime's clock, a ROSClock (virtual time under virtual time)."""
         return self._core.clock
 
     # -- logging and lifecycle --------------------------------------------------

@@ -1,16 +1,25 @@
 """Parameters as in rclpy: declared, typed, described, range-checked, overridable, observable.
 
 Each node has a :class:`ParameterStore`.  Values are bool, int, float, str,
-bytes, or lists of bool/int/float/str; the type is inferred from the value or
-taken from the descriptor.  A set is checked in this order: declared, not
-read-only, right type, in range, accepted by every on-set callback; a refused
-set leaves the old value and says why.  Accepted changes are published once on
-``/parameter_events``.  One difference from rclpy, on purpose: an int is
-accepted for a double parameter (``param set /node speed 1`` just works).
+bytes, or lists of bool/int/float/str; a parameter's type is fixed when it is
+declared (from its default, or given as ``Parameter.Type.X``) unless its
+descriptor asks for ``dynamic_typing``.  A set runs, as rclpy's does: the
+pre-set callbacks (which may change the list), then for each parameter the
+checks (declared, not read-only, right type, in range) and the on-set callbacks,
+which may refuse it; a refused set leaves the old values and says why; an
+accepted one is published once on ``/parameter_events`` and then seen by the
+post-set callbacks.  Declaring runs the on-set callbacks too, which may refuse
+the default.  Setting a dynamically typed parameter to NOT_SET undeclares it.
+
+One difference from rclpy, on purpose: an int is accepted wherever a double is
+declared (and int lists for double arrays), and stored as a float, so that
+``param set /node speed 1`` and a graph's ``speed = 1`` just work; rclpy refuses
+them as the wrong type.
 
 The store also answers the node's parameter services (``~/get_parameters``,
-``~/set_parameters``, ``~/list_parameters``, ``~/describe_parameters``) with the
-``rcl_interfaces`` types, for the command line.
+``~/set_parameters``, ``~/set_parameters_atomically``, ``~/list_parameters``,
+``~/describe_parameters``, ``~/get_parameter_types``) with the
+``rcl_interfaces`` types, for the command line and parameter clients.
 """
 
 from __future__ import annotations
@@ -20,8 +29,19 @@ from collections.abc import Callable, Mapping, Sequence
 from enum import IntEnum
 from typing import Any, Protocol
 
-from actors.clock import Clock
-from actors.errors import ParameterError
+import msgspec
+
+from actors.clock import ROSClock
+from actors.errors import (
+    InvalidParameterException,
+    InvalidParameterTypeException,
+    InvalidParameterValueException,
+    ParameterAlreadyDeclaredException,
+    ParameterError,
+    ParameterImmutableException,
+    ParameterNotDeclaredException,
+    ParameterUninitializedException,
+)
 from interfaces.rcl_interfaces.msg import (
     ListParametersResult,
     ParameterDescriptor,
@@ -36,13 +56,16 @@ __all__ = [
     "ParameterType",
     "ParameterHost",
     "ParameterStore",
+    "PARAMETER_SEPARATOR_STRING",
     "value_to_msg",
     "value_from_msg",
 ]
 
+PARAMETER_SEPARATOR_STRING = "."
+
 
 class ParameterType(IntEnum):
-    """Parameter types, numbered as ``rcl_interfaces/msg/ParameterType``."""
+    """Parameter types, numbered as ``rcl_interfaces/msg/ParameterType`` (rclpy's ``Parameter.Type``)."""
 
     NOT_SET = 0
     BOOL = 1
@@ -55,7 +78,65 @@ class ParameterType(IntEnum):
     DOUBLE_ARRAY = 8
     STRING_ARRAY = 9
 
+    @classmethod
+    def from_parameter_value(cls, value: Any) -> ParameterType:
+        """The type of ``value``; TypeError for a value no parameter can hold.
 
+        As in rclpy an empty list is a BYTE_ARRAY (declare ``Parameter.Type.X``
+        to say which kind of empty list is meant), and a list mixing ints and
+        floats is a DOUBLE_ARRAY.
+        """
+        if value is None:
+            return cls.NOT_SET
+        if isinstance(value, bool):
+            return cls.BOOL
+        if isinstance(value, int):
+            return cls.INTEGER
+        if isinstance(value, float):
+            return cls.DOUBLE
+        if isinstance(value, str):
+            return cls.STRING
+        if isinstance(value, (bytes, bytearray)):
+            return cls.BYTE_ARRAY
+        if isinstance(value, (list, tuple)):
+            kinds = {type(v) for v in value}
+            if kinds <= {bytes}:
+                return cls.BYTE_ARRAY
+            if kinds <= {int, float} and float in kinds:
+                return cls.DOUBLE_ARRAY
+            if len(kinds) == 1 and (kind := kinds.pop()) in _ELEMENT:
+                return _ELEMENT[kind]
+        raise TypeError(
+            f"a parameter holds bool, int, float, str, bytes or a list of one of "
+            f"bool/int/float/str; got {value!r}"
+        )
+
+    def check(self, value: Any) -> bool:
+        """Whether ``value`` fits this type (an int fits DOUBLE, int lists fit DOUBLE_ARRAY)."""
+        if self is ParameterType.NOT_SET:
+            return value is None
+        try:
+            actual = ParameterType.from_parameter_value(value)
+        except TypeError:
+            return False
+        return actual is self or (actual, self) in _WIDENED or (
+            # An empty list fits every array type.
+            self >= ParameterType.BYTE_ARRAY and isinstance(value, (list, tuple)) and not value
+        )
+
+
+_TYPES = tuple(ParameterType)  # by number: a tuple lookup costs far less than ParameterType(n)
+_ELEMENT = {
+    bool: ParameterType.BOOL_ARRAY,
+    int: ParameterType.INTEGER_ARRAY,
+    float: ParameterType.DOUBLE_ARRAY,
+    str: ParameterType.STRING_ARRAY,
+}
+# (given, declared) pairs accepted by widening ints to floats.
+_WIDENED = {
+    (ParameterType.INTEGER, ParameterType.DOUBLE),
+    (ParameterType.INTEGER_ARRAY, ParameterType.DOUBLE_ARRAY),
+}
 # ParameterValue's field for each type.
 _FIELDS = {
     ParameterType.BOOL: "bool_value",
@@ -68,54 +149,27 @@ _FIELDS = {
     ParameterType.DOUBLE_ARRAY: "double_array_value",
     ParameterType.STRING_ARRAY: "string_array_value",
 }
-_ELEMENT = {bool: ParameterType.BOOL_ARRAY, int: ParameterType.INTEGER_ARRAY, float: ParameterType.DOUBLE_ARRAY, str: ParameterType.STRING_ARRAY}
+_REL_TOL = 1e-6  # how close a double must be to a range's bound or step, as rclpy
 
 
-def infer_type(value: Any) -> ParameterType:
-    """The parameter type of ``value``; ValueError for a value no parameter can hold."""
-    if value is None:
-        return ParameterType.NOT_SET
-    if isinstance(value, bool):
-        return ParameterType.BOOL
-    if isinstance(value, int):
-        return ParameterType.INTEGER
-    if isinstance(value, float):
-        return ParameterType.DOUBLE
-    if isinstance(value, str):
-        return ParameterType.STRING
-    if isinstance(value, (bytes, bytearray)):
-        return ParameterType.BYTE_ARRAY
-    if isinstance(value, (list, tuple)) and value:
-        kinds = {type(v) for v in value}
-        if kinds <= {int, float} and float in kinds:
-            return ParameterType.DOUBLE_ARRAY
-        if len(kinds) == 1 and (kind := kinds.pop()) in _ELEMENT:
-            return _ELEMENT[kind]
-    raise ValueError(
-        f"a parameter holds bool, int, float, str, bytes or a non-empty list of one of "
-        f"bool/int/float/str; got {value!r}"
-    )
-
-
-def _coerce(value: Any, type_: ParameterType) -> Any:
-    """``value`` as stored for ``type_`` (ints widen to floats; sequences become lists)."""
+def _widen(value: Any, type_: ParameterType) -> Any:
+    """``value`` as stored for ``type_``: ints become floats for DOUBLE and DOUBLE_ARRAY."""
     if type_ is ParameterType.DOUBLE and isinstance(value, int) and not isinstance(value, bool):
         return float(value)
-    if type_ is ParameterType.DOUBLE_ARRAY:
+    if type_ is ParameterType.DOUBLE_ARRAY and any(isinstance(v, int) for v in value):
         return [float(v) for v in value]
-    if type_ is ParameterType.BYTE_ARRAY:
-        return bytes(value)
-    if isinstance(value, tuple):
-        return list(value)
     return value
 
 
 def value_to_msg(value: Any, type_: ParameterType | None = None) -> ParameterValue:
-    """A Python value as ``rcl_interfaces/msg/ParameterValue``."""
-    type_ = infer_type(value) if type_ is None else type_
+    """A Python value as ``rcl_interfaces/msg/ParameterValue``; TypeError for a value no parameter holds."""
+    type_ = ParameterType.from_parameter_value(value) if type_ is None else type_
     msg = ParameterValue(type=int(type_))
-    if type_ is not ParameterType.NOT_SET:
-        setattr(msg, _FIELDS[type_], _coerce(value, type_))
+    if type_ is ParameterType.BYTE_ARRAY:
+        msg.byte_array_value = value if isinstance(value, bytes) else b"".join(value)
+    elif type_ is not ParameterType.NOT_SET:
+        value = _widen(value, type_)
+        setattr(msg, _FIELDS[type_], list(value) if isinstance(value, tuple) else value)
     return msg
 
 
@@ -130,28 +184,53 @@ def value_from_msg(msg: ParameterValue) -> Any:
 
 
 class Parameter:
-    """A named parameter value, as ``rclpy.parameter.Parameter``: ``Parameter(name, type_, value)``."""
+    """A named parameter value, as ``rclpy.parameter.Parameter``: ``Parameter(name, type_, value)``.
+
+    The type is inferred from the value when not given.  Raises TypeError when
+    ``type_`` is not a ``Parameter.Type`` or the value fits no type, ValueError
+    when the value does not fit ``type_`` (an int fits DOUBLE and is stored as a
+    float).  A Parameter does not change once made.
+    """
 
     Type = ParameterType
-    __slots__ = ("name", "type_", "value")
+    __slots__ = ("_name", "_type", "_value")
 
     def __init__(self, name: str, type_: ParameterType | None = None, value: Any = None) -> None:
         if type_ is None:
-            type_ = infer_type(value)
-        self.name = name
-        self.type_ = ParameterType(type_)
-        self.value = value
+            type_ = ParameterType.from_parameter_value(value)
+        elif not isinstance(type_, ParameterType):
+            raise TypeError(f"type_ must be a Parameter.Type, got {type_!r}")
+        elif not type_.check(value):
+            raise ValueError(f"parameter {name!r}: type {type_.name} and value {value!r} do not agree")
+        self._name = name
+        self._type = type_
+        self._value = _widen(value, type_)
+
+    @property
+    def name(self) -> str:
+        """The parameter's name."""
+        return self._name
+
+    @property
+    def type_(self) -> ParameterType:
+        """The parameter's type."""
+        return self._type
+
+    @property
+    def value(self) -> Any:
+        """The parameter's value (None when NOT_SET)."""
+        return self._value
 
     def __repr__(self) -> str:
-        return f"Parameter({self.name!r}, {self.type_.name}, {self.value!r})"
+        return f"Parameter({self._name!r}, {self._type.name}, {self._value!r})"
 
     def get_parameter_value(self) -> ParameterValue:
         """The value as ``rcl_interfaces/msg/ParameterValue`` (``.string_value`` etc.)."""
-        return value_to_msg(self.value, self.type_)
+        return value_to_msg(self._value, self._type)
 
     def to_parameter_msg(self) -> ParameterMsg:
         """This parameter as ``rcl_interfaces/msg/Parameter``."""
-        return ParameterMsg(name=self.name, value=self.get_parameter_value())
+        return ParameterMsg(name=self._name, value=self.get_parameter_value())
 
     @classmethod
     def from_parameter_msg(cls, msg: ParameterMsg) -> Parameter:
@@ -160,13 +239,15 @@ class Parameter:
 
 
 OnSet = Callable[[list[Parameter]], SetParametersResult]
+PreSet = Callable[[list[Parameter]], list[Parameter]]
+PostSet = Callable[[list[Parameter]], None]
 
 
 class ParameterHost(Protocol):
     """What a parameter store needs from its node: a name, a clock, services, the events topic."""
 
     fqn: str
-    clock: Clock
+    clock: ROSClock
 
     @property
     def parameter_events(self) -> Any: ...
@@ -175,56 +256,146 @@ class ParameterHost(Protocol):
 
 
 class ParameterStore:
-    """One node's parameters, descriptors and on-set callbacks."""
+    """One node's parameters, descriptors and set callbacks (rclpy's parameter half of a Node).
 
-    __slots__ = ("_core", "_values", "_descriptors", "_callbacks", "_overrides")
+    ``overrides`` are the values given from outside (graph, ``spawn(params=)``,
+    the node's ``parameter_overrides``): a declaration takes its value from them
+    before its default.  With ``allow_undeclared``, setting or reading an
+    undeclared name is allowed, as rclpy's ``allow_undeclared_parameters``.
+    """
 
-    def __init__(self, core: ParameterHost, overrides: Mapping[str, Any]) -> None:
+    __slots__ = ("_core", "_values", "_descriptors", "_pre", "_on_set", "_post", "_overrides", "allow_undeclared")
+
+    def __init__(self, core: ParameterHost, overrides: Mapping[str, Any], *, allow_undeclared: bool = False) -> None:
         self._core = core
         self._values: dict[str, Parameter] = {}
         self._descriptors: dict[str, ParameterDescriptor] = {}
-        self._callbacks: list[OnSet] = []
+        # Newest first, as rclpy calls them.
+        self._pre: list[PreSet] = []
+        self._on_set: list[OnSet] = []
+        self._post: list[PostSet] = []
         self._overrides = dict(overrides)
+        self.allow_undeclared = allow_undeclared
 
-    # -- declaring and reading ------------------------------------------------
+    @property
+    def overrides(self) -> dict[str, Any]:
+        """The values given from outside, by name."""
+        return self._overrides
+
+    # -- declaring --------------------------------------------------------------
 
     def declare(self, name: str, value: Any = None, descriptor: ParameterDescriptor | None = None,
                 ignore_override: bool = False) -> Parameter:
-        """Declare ``name`` with a default, overridden by the graph or spawn().
-
-        Raises ParameterError if already declared, or if the value (default or
-        override) does not fit the declared type or range.
-        """
-        if name in self._values:
-            raise ParameterError(f"parameter {name!r} of {self._core.fqn} is already declared")
-        descriptor = ParameterDescriptor() if descriptor is None else descriptor
+        """Declare ``name``: see :meth:`actors.node.Node.declare_parameter`."""
+        if not isinstance(name, str):
+            raise TypeError(f"a parameter name is a str, got {name!r}")
+        if not name:
+            raise InvalidParameterException(f"a parameter name must not be empty (node {self._core.fqn})")
+        if descriptor is None:
+            # A name alone declares a dynamically typed parameter, as rclpy does.
+            descriptor = ParameterDescriptor(dynamic_typing=value is None)
+        elif not isinstance(descriptor, ParameterDescriptor):
+            raise TypeError(f"parameter {name!r}: the descriptor must be a ParameterDescriptor, got {descriptor!r}")
+        else:
+            descriptor = _copy(descriptor)
         descriptor.name = name
-        overridden = not ignore_override and name in self._overrides
+        if isinstance(value, ParameterType):
+            if value is ParameterType.NOT_SET:
+                raise ValueError(f"parameter {name!r} cannot be declared with the type NOT_SET")
+            if descriptor.dynamic_typing:
+                raise ValueError(f"parameter {name!r}: give a type or dynamic_typing=True, not both")
+            descriptor.type = int(value)
+            value = None
+        else:
+            if isinstance(value, ParameterValue):
+                descriptor.type, value = (0 if descriptor.dynamic_typing else value.type), value_from_msg(value)
+            elif not descriptor.dynamic_typing:
+                descriptor.type = int(ParameterType.from_parameter_value(value))
+            if not descriptor.dynamic_typing and descriptor.type == ParameterType.NOT_SET:
+                raise ValueError(
+                    f"parameter {name!r} needs a default value, a type (Parameter.Type.X) "
+                    f"or a descriptor with dynamic_typing=True"
+                )
+        if not ignore_override and name in self._overrides:
+            value = self._overrides[name]
+        if name in self._values:
+            raise ParameterAlreadyDeclaredException(f"parameter {name!r} of {self._core.fqn} is already declared")
         try:
-            # The default (or the descriptor) fixes the type; an override must match it.
-            if not descriptor.type and (value is not None or overridden):
-                descriptor.type = int(infer_type(value if value is not None else self._overrides[name]))
-            if overridden:
-                value = self._overrides[name]
-            type_ = infer_type(value) if value is not None else ParameterType(descriptor.type)
-        except ValueError as exc:
-            raise ParameterError(f"parameter {name!r} of {self._core.fqn}: {exc}") from None
-        problem = self._check(descriptor, value, type_)
-        if problem is not None:
-            raise ParameterError(f"parameter {name!r} of {self._core.fqn}: {problem}")
-        declared = ParameterType(descriptor.type)
-        param = Parameter(name, declared, _coerce(value, declared) if value is not None else None)
-        self._values[name] = param
-        self._descriptors[name] = descriptor
-        self._publish_event(new=[param])
-        return param
+            param = Parameter(name, value=value)
+        except TypeError as exc:
+            raise InvalidParameterTypeException(f"parameter {name!r} of {self._core.fqn}: {exc}") from None
+        result = self._set_common([param], {name: descriptor}, allow_not_set=True)
+        if not result.successful:
+            error = InvalidParameterTypeException if result.reason.startswith("wrong type") else InvalidParameterValueException
+            raise error(f"parameter {name!r} of {self._core.fqn}: {result.reason}")
+        return self._values[name]
 
-    def get(self, name: str) -> Parameter:
-        """The parameter ``name``; ParameterError if it is not declared."""
+    def declare_many(self, namespace: str, parameters: Sequence[tuple[Any, ...]],
+                     ignore_override: bool = False) -> list[Parameter]:
+        """Declare ``(name[, value[, descriptor]])`` tuples under ``namespace.``, each in turn."""
+        for index, entry in enumerate(parameters):
+            if not isinstance(entry, tuple) or not 1 <= len(entry) <= 3:
+                raise TypeError(f"parameters[{index}] must be (name[, value[, descriptor]]), got {entry!r}")
+        names = [(f"{namespace}.{e[0]}" if namespace else e[0]) for e in parameters]
+        already = [n for n in names if n in self._values]
+        if already:
+            raise ParameterAlreadyDeclaredException(f"parameters {already} of {self._core.fqn} are already declared")
+        return [
+            self.declare(name, *entry[1:2], *entry[2:3], ignore_override=ignore_override)
+            for name, entry in zip(names, parameters)
+        ]
+
+    def undeclare(self, name: str) -> None:
+        """Forget ``name``; ParameterNotDeclaredException, ParameterImmutableException if read-only."""
+        param = self._declared(name)
+        if self._descriptors[name].read_only:
+            raise ParameterImmutableException(f"parameter {name!r} of {self._core.fqn} is read-only")
+        del self._values[name], self._descriptors[name]
+        self._publish_event(deleted=[param])
+
+    # -- reading ----------------------------------------------------------------
+
+    def _declared(self, name: str) -> Parameter:
         try:
             return self._values[name]
         except KeyError:
-            raise ParameterError(f"parameter {name!r} is not declared on {self._core.fqn}") from None
+            raise ParameterNotDeclaredException(f"parameter {name!r} is not declared on {self._core.fqn}") from None
+
+    def get(self, name: str) -> Parameter:
+        """The parameter ``name``.
+
+        Raises ParameterNotDeclaredException (unless undeclared parameters are
+        allowed: then an unset Parameter), ParameterUninitializedException for a
+        parameter declared with only a type and never given a value.
+        """
+        if name not in self._values and self.allow_undeclared:
+            return Parameter(name)
+        param = self._declared(name)
+        if param.type_ is ParameterType.NOT_SET and not self._descriptors[name].dynamic_typing:
+            raise ParameterUninitializedException(
+                f"parameter {name!r} of {self._core.fqn} was declared as "
+                f"{ParameterType(self._descriptors[name].type).name} but has no value yet"
+            )
+        return param
+
+    def get_or(self, name: str, alternative: Parameter | None = None) -> Parameter:
+        """The parameter ``name`` if declared and set, else ``alternative`` (an unset Parameter if None)."""
+        param = self._values.get(name)
+        if param is None or param.type_ is ParameterType.NOT_SET:
+            return Parameter(name) if alternative is None else alternative
+        return param
+
+    def get_type(self, name: str) -> ParameterType:
+        """The current type of ``name`` (NOT_SET when unset or, if allowed, undeclared)."""
+        if name not in self._values and self.allow_undeclared:
+            return ParameterType.NOT_SET
+        return self._declared(name).type_
+
+    def by_prefix(self, prefix: str) -> dict[str, Parameter]:
+        """Parameters named ``prefix.<rest>`` keyed by ``<rest>`` (every parameter for ``""``)."""
+        if prefix:
+            prefix += PARAMETER_SEPARATOR_STRING
+        return {n[len(prefix):]: p for n, p in self._values.items() if n.startswith(prefix)}
 
     def has(self, name: str) -> bool:
         """Whether ``name`` is declared."""
@@ -234,102 +405,183 @@ class ParameterStore:
         """Every declared name, sorted."""
         return sorted(self._values)
 
+    def list_parameters(self, prefixes: Sequence[str] = (), depth: int = 0) -> ListParametersResult:
+        """Names under ``prefixes`` (all when empty) at most ``depth`` dots deep (0: any), and their prefixes."""
+        if depth < 0:
+            raise ValueError(f"depth must be >= 0, got {depth}")
+        sep = PARAMETER_SEPARATOR_STRING
+
+        def shallow(rest: str) -> bool:
+            return depth == 0 or rest.count(sep) < depth
+
+        names = [
+            n for n in self.names()
+            if (not prefixes and shallow(n))
+            or any(n == p or (n.startswith(p + sep) and shallow(n[len(p) + 1:])) for p in prefixes)
+        ]
+        found = []
+        for n in names:
+            if sep in n and (prefix := n.rsplit(sep, 1)[0]) not in found:
+                found.append(prefix)
+        return ListParametersResult(names=names, prefixes=found)
+
     def describe(self, name: str) -> ParameterDescriptor:
-        """The descriptor of ``name``; ParameterError if it is not declared."""
-        self.get(name)
+        """The descriptor of ``name`` (a blank one if undeclared and allowed); ParameterNotDeclaredException."""
+        if name not in self._descriptors and self.allow_undeclared:
+            return ParameterDescriptor()
+        self._declared(name)
         return self._descriptors[name]
 
-    def undeclare(self, name: str) -> None:
-        """Forget ``name``; ParameterError if undeclared or read-only."""
-        param = self.get(name)
+    def set_descriptor(self, name: str, descriptor: ParameterDescriptor,
+                       alternative_value: ParameterValue | None = None) -> ParameterValue:
+        """Give ``name`` a new descriptor, keeping its value if it fits, else ``alternative_value``.
+
+        Raises ParameterNotDeclaredException, ParameterImmutableException for a
+        read-only parameter, InvalidParameterValueException when neither value fits.
+        """
+        if name not in self._values and self.allow_undeclared:
+            return ParameterValue()
+        current = self._declared(name)
         if self._descriptors[name].read_only:
-            raise ParameterError(f"parameter {name!r} of {self._core.fqn} is read-only")
-        del self._values[name], self._descriptors[name]
-        self._publish_event(deleted=[param])
+            raise ParameterImmutableException(f"parameter {name!r} of {self._core.fqn} is read-only")
+        descriptor = _copy(descriptor)
+        descriptor.name = name
+        if not descriptor.type and not descriptor.dynamic_typing:
+            descriptor.type = self._descriptors[name].type  # keep the declared type (rclpy would refuse)
+        candidates = [current]
+        if alternative_value is not None:
+            candidates.append(Parameter(name, ParameterType(alternative_value.type), value_from_msg(alternative_value)))
+        reason = ""
+        for candidate in candidates:
+            problem = self._check(candidate, descriptor, check_read_only=False)
+            if problem is None:
+                self._values[name] = _stored(candidate, descriptor)
+                if descriptor.dynamic_typing:
+                    descriptor.type = int(candidate.type_)
+                self._descriptors[name] = descriptor
+                return self._values[name].get_parameter_value()
+            reason = problem
+        raise InvalidParameterValueException(
+            f"parameter {name!r} of {self._core.fqn}: {candidates[-1].value!r} does not fit the new descriptor: {reason}"
+        )
 
-    # -- setting --------------------------------------------------------------
+    # -- callbacks --------------------------------------------------------------
 
-    def add_callback(self, callback: OnSet) -> OnSet:
-        """Call ``callback(parameters)`` before each set; it returns a SetParametersResult."""
-        self._callbacks.append(callback)
+    def add_pre_set_callback(self, callback: PreSet) -> None:
+        """Call ``callback(parameters)`` first on each set; it returns the list to set instead."""
+        self._pre.insert(0, _callable(callback))
+
+    def add_on_set_callback(self, callback: OnSet) -> OnSet:
+        """Call ``callback(parameters)`` to accept or refuse each set and declaration."""
+        self._on_set.insert(0, _callable(callback))
         return callback
 
-    def remove_callback(self, callback: OnSet) -> None:
-        """Stop calling ``callback``."""
-        self._callbacks.remove(callback)
+    def add_post_set_callback(self, callback: PostSet) -> None:
+        """Call ``callback(parameters)`` after each accepted set and declaration."""
+        self._post.insert(0, _callable(callback))
+
+    def remove_pre_set_callback(self, callback: PreSet) -> None:
+        """Stop calling ``callback``; ValueError if it was not added."""
+        self._pre.remove(callback)
+
+    def remove_on_set_callback(self, callback: OnSet) -> None:
+        """Stop calling ``callback``; ValueError if it was not added."""
+        self._on_set.remove(callback)
+
+    def remove_post_set_callback(self, callback: PostSet) -> None:
+        """Stop calling ``callback``; ValueError if it was not added."""
+        self._post.remove(callback)
+
+    # -- setting ----------------------------------------------------------------
 
     def set(self, parameters: Sequence[Parameter]) -> list[SetParametersResult]:
-        """Set each parameter on its own; one result per parameter, with the reason if refused."""
-        results = []
-        for param in parameters:
-            result = self._validate(param)
-            if result.successful:
-                self._apply([param])
-            results.append(result)
-        return results
+        """Set each parameter on its own (each atomically); one result per parameter.
+
+        Raises ParameterNotDeclaredException at the first undeclared name
+        (unless allowed); the parameters before it stay set.
+        """
+        return [self.set_atomically([param]) for param in parameters]
 
     def set_atomically(self, parameters: Sequence[Parameter]) -> SetParametersResult:
-        """Set all parameters or none; the first refusal's reason is returned."""
-        for param in parameters:
-            result = self._validate(param, run_callbacks=False)
-            if not result.successful:
-                return result
-        result = self._run_callbacks(list(parameters))
-        if result.successful:
-            self._apply(parameters)
-        return result
+        """Set all parameters or none; the refusal's reason is returned.
 
-    def _validate(self, param: Parameter, *, run_callbacks: bool = True) -> SetParametersResult:
-        if param.name not in self._values:
-            return SetParametersResult(successful=False, reason=f"parameter {param.name!r} is not declared")
-        descriptor = self._descriptors[param.name]
-        if descriptor.read_only:
-            return SetParametersResult(successful=False, reason=f"parameter {param.name!r} is read-only")
-        problem = self._check(descriptor, param.value, param.type_)
-        if problem is not None:
-            return SetParametersResult(successful=False, reason=problem)
-        return self._run_callbacks([param]) if run_callbacks else SetParametersResult(successful=True)
+        Raises ParameterNotDeclaredException when a name is undeclared (unless
+        allowed), TypeError for something that is not a Parameter.
+        """
+        params = list(parameters)
+        if self._pre:
+            params = [p for callback in self._pre for p in callback(params)]
+            if not params:
+                return SetParametersResult(
+                    successful=False, reason="a pre-set parameters callback left nothing to set"
+                )
+        for param in params:
+            if not isinstance(param, Parameter):
+                raise TypeError(f"set_parameters takes Parameters, got {param!r}")
+        undeclared = [p.name for p in params if p.name not in self._values]
+        if undeclared and not self.allow_undeclared:
+            raise ParameterNotDeclaredException(f"parameters {undeclared} are not declared on {self._core.fqn}")
+        return self._set_common(params)
 
-    def _run_callbacks(self, params: list[Parameter]) -> SetParametersResult:
-        for callback in self._callbacks:
-            result = callback(params)
+    def _set_common(self, params: list[Parameter], descriptors: dict[str, ParameterDescriptor] | None = None,
+                    *, allow_not_set: bool = False) -> SetParametersResult:
+        # Check each parameter against its descriptor (the given ones when declaring).
+        for param in params:
+            descriptor = (descriptors or self._descriptors).get(param.name)
+            if descriptor is not None:
+                problem = self._check(param, descriptor, check_read_only=descriptors is None)
+                if problem is not None:
+                    return SetParametersResult(successful=False, reason=problem)
+        stored = [
+            _stored(p, (descriptors or self._descriptors).get(p.name)) for p in params
+        ]
+        for callback in self._on_set:
+            result = callback(stored)
             if not isinstance(result, SetParametersResult):
                 raise TypeError(f"on-set parameters callback {callback!r} must return a SetParametersResult")
             if not result.successful:
                 return result
+        new, changed, deleted = [], [], []
+        for param in stored:
+            name = param.name
+            if param.type_ is ParameterType.NOT_SET and not allow_not_set:
+                deleted.append(param)
+                self._values.pop(name, None)
+                self._descriptors.pop(name, None)
+                continue
+            if descriptors is not None:
+                self._descriptors[name] = descriptors[name]
+            elif name not in self._descriptors:  # an undeclared name, allowed: dynamically typed
+                self._descriptors[name] = ParameterDescriptor(name=name, dynamic_typing=True)
+            if self._descriptors[name].dynamic_typing:
+                self._descriptors[name].type = int(param.type_)
+            previous = self._values.get(name)
+            (new if previous is None or previous.type_ is ParameterType.NOT_SET else changed).append(param)
+            self._values[name] = param
+        self._publish_event(new=new, changed=changed, deleted=deleted)
+        for callback in self._post:
+            callback(stored)
         return SetParametersResult(successful=True)
 
-    def _check(self, descriptor: ParameterDescriptor, value: Any, type_: ParameterType) -> str | None:
-        declared = ParameterType(descriptor.type) if descriptor.type else type_
-        if value is None or type_ is ParameterType.NOT_SET:
-            return None
-        widened = declared is ParameterType.DOUBLE and type_ is ParameterType.INTEGER
-        widened |= declared is ParameterType.DOUBLE_ARRAY and type_ is ParameterType.INTEGER_ARRAY
-        if type_ is not declared and not widened and not descriptor.dynamic_typing:
-            return f"wrong type: expected {declared.name}, got {type_.name} ({value!r})"
-        for bounds in descriptor.integer_range:
-            if not bounds.from_value <= value <= bounds.to_value or (
-                bounds.step and (value - bounds.from_value) % bounds.step
-            ):
-                return f"{value} is out of range [{bounds.from_value}, {bounds.to_value}] step {bounds.step}"
-        for bounds in descriptor.floating_point_range:
-            low, high = bounds.from_value, bounds.to_value
-            if not low - 1e-9 <= value <= high + 1e-9:
-                return f"{value} is out of range [{low}, {high}]"
-            if bounds.step and not math.isclose(
-                round((value - low) / bounds.step) * bounds.step, value - low, abs_tol=1e-9
-            ):
-                return f"{value} is not on a step of {bounds.step} from {low}"
+    def _check(self, param: Parameter, descriptor: ParameterDescriptor, *, check_read_only: bool) -> str | None:
+        """Why ``param`` does not fit ``descriptor``, or None."""
+        if check_read_only and descriptor.read_only:
+            return f"parameter {param.name!r} is read-only"
+        given = param.type_
+        if descriptor.dynamic_typing:
+            pass  # any type goes, NOT_SET too (it undeclares)
+        elif given is ParameterType.NOT_SET:
+            if param.name in self._values:
+                return f"parameter {param.name!r} is statically typed: it cannot be unset"
+        elif given is not (declared := _TYPES[descriptor.type]) and not declared.check(param.value):
+            return f"wrong type: expected {declared.name}, got {given.name} ({param.value!r})"
+        value = _widen(param.value, _TYPES[descriptor.type] if descriptor.type else given)
+        # Ranges apply to numbers only: a range on a string parameter is ignored, as in rclpy.
+        if isinstance(value, int) and not isinstance(value, bool) and descriptor.integer_range:
+            return _outside_integer_range(value, descriptor.integer_range[0])
+        if isinstance(value, float) and descriptor.floating_point_range:
+            return _outside_floating_point_range(value, descriptor.floating_point_range[0])
         return None
-
-    def _apply(self, params: Sequence[Parameter]) -> None:
-        changed = []
-        for param in params:
-            declared = ParameterType(self._descriptors[param.name].type)
-            stored = Parameter(param.name, declared, _coerce(param.value, declared))
-            self._values[param.name] = stored
-            changed.append(stored)
-        self._publish_event(changed=changed)
 
     def _publish_event(self, new: Sequence[Parameter] = (), changed: Sequence[Parameter] = (),
                        deleted: Sequence[Parameter] = ()) -> None:
@@ -345,40 +597,55 @@ class ParameterStore:
         )
         publisher.publish(event)
 
-    # -- the parameter services --------------------------------------------------
+    # -- the parameter services ----------------------------------------------------
 
     def serve(self) -> None:
-        """Create the node's get/set/list/describe parameter services."""
+        """Create the node's parameter services, as every rclpy node has them."""
         from interfaces.rcl_interfaces.srv import (
             DescribeParameters,
             GetParameters,
+            GetParameterTypes,
             ListParameters,
             SetParameters,
+            SetParametersAtomically,
         )
 
         core = self._core
-        core.create_service(GetParameters, "~/get_parameters", self._on_get)
-        core.create_service(SetParameters, "~/set_parameters", self._on_set)
-        core.create_service(ListParameters, "~/list_parameters", self._on_list)
         core.create_service(DescribeParameters, "~/describe_parameters", self._on_describe)
+        core.create_service(GetParameters, "~/get_parameters", self._on_get)
+        core.create_service(GetParameterTypes, "~/get_parameter_types", self._on_get_types)
+        core.create_service(ListParameters, "~/list_parameters", self._on_list)
+        core.create_service(SetParameters, "~/set_parameters", self._on_set_service)
+        core.create_service(SetParametersAtomically, "~/set_parameters_atomically", self._on_set_atomically)
 
     def _on_get(self, request: Any, response: Any) -> Any:
+        # An unknown or unset name gets a NOT_SET value in its place (rclpy answers nothing at all).
         response.values = [
             self._values[n].get_parameter_value() if n in self._values else ParameterValue()
             for n in request.names
         ]
         return response
 
-    def _on_set(self, request: Any, response: Any) -> Any:
-        response.results = self.set([Parameter.from_parameter_msg(p) for p in request.parameters])
+    def _on_get_types(self, request: Any, response: Any) -> Any:
+        response.types = [int(self._values[n].type_) if n in self._values else 0 for n in request.names]
         return response
 
+    def _on_set_service(self, request: Any, response: Any) -> Any:
+        response.results = [self._set_from_msgs([p]) for p in request.parameters]
+        return response
+
+    def _on_set_atomically(self, request: Any, response: Any) -> Any:
+        response.result = self._set_from_msgs(request.parameters)
+        return response
+
+    def _set_from_msgs(self, msgs: Sequence[ParameterMsg]) -> SetParametersResult:
+        try:
+            return self.set_atomically([Parameter.from_parameter_msg(m) for m in msgs])
+        except (ParameterNotDeclaredException, ValueError, TypeError) as exc:
+            return SetParametersResult(successful=False, reason=str(exc))
+
     def _on_list(self, request: Any, response: Any) -> Any:
-        prefixes = list(request.prefixes)
-        names = [n for n in self.names() if not prefixes or any(n == p or n.startswith(p + ".") for p in prefixes)]
-        response.result = ListParametersResult(
-            names=names, prefixes=sorted({n.rsplit(".", 1)[0] for n in names if "." in n})
-        )
+        response.result = self.list_parameters(request.prefixes, request.depth)
         return response
 
     def _on_describe(self, request: Any, response: Any) -> Any:
@@ -386,3 +653,46 @@ class ParameterStore:
             self._descriptors.get(n) or ParameterDescriptor(name=n) for n in request.names
         ]
         return response
+
+
+def _copy(descriptor: ParameterDescriptor) -> ParameterDescriptor:
+    # The store fills in name and type: never in the caller's object.
+    return msgspec.structs.replace(descriptor)
+
+
+def _stored(param: Parameter, descriptor: ParameterDescriptor | None) -> Parameter:
+    """``param`` as stored under ``descriptor``: an int given for a DOUBLE becomes a float."""
+    if descriptor is None or descriptor.dynamic_typing:
+        return param
+    declared = _TYPES[descriptor.type]
+    if param.type_ is declared or param.type_ is ParameterType.NOT_SET:
+        return param
+    return Parameter(param.name, declared, param.value)  # an int for a DOUBLE, [] for a typed array
+
+
+def _callable(callback: Any) -> Any:
+    if not callable(callback):
+        raise TypeError(f"a parameters callback must be callable, got {callback!r}")
+    return callback
+
+
+def _outside_integer_range(value: int, bounds: Any) -> str | None:
+    low, high = sorted((bounds.from_value, bounds.to_value))
+    if value in (low, high):
+        return None
+    if not low < value < high:
+        return f"{value} is out of range [{low}, {high}]"
+    if bounds.step and (value - low) % bounds.step:
+        return f"{value} is not on a step of {bounds.step} from {low}"
+    return None
+
+
+def _outside_floating_point_range(value: float, bounds: Any) -> str | None:
+    low, high = sorted((bounds.from_value, bounds.to_value))
+    if math.isclose(value, low, rel_tol=_REL_TOL) or math.isclose(value, high, rel_tol=_REL_TOL):
+        return None
+    if not low < value < high:
+        return f"{value} is out of range [{low}, {high}]"
+    if bounds.step and not math.isclose(low + round((value - low) / bounds.step) * bounds.step, value, rel_tol=_REL_TOL):
+        return f"{value} is not on a step of {bounds.step} from {low}"
+    return None

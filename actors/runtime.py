@@ -20,7 +20,7 @@ from typing import Any, Protocol, TypeVar
 import anyio
 import anyio.abc
 
-from actors.clock import Clock
+from actors.clock import ROSClock
 from actors.errors import InvalidNameError
 from actors.introspection import GraphView
 from actors.log import NodeLogger
@@ -78,6 +78,7 @@ class Runtime:
         self._state = "unopened"
         self._failure: BaseException | None = None
         self._rosout: Publisher | None = None
+        self._reported_pairs: set[tuple[str, str, str]] = set()
         self._stopped: anyio.Event | None = None
 
     # -- lifecycle ------------------------------------------------------------
@@ -86,7 +87,7 @@ class Runtime:
         if self._state != "unopened":
             raise RuntimeError(f"runtime {self.name!r} is {self._state}; a Runtime is entered once")
         self.loop: asyncio.AbstractEventLoop = asyncio.get_running_loop()
-        self.clock = Clock(self.loop)
+        self.clock = ROSClock(self.loop)
         self.deadlines = Deadlines(self.loop)
         self._rosout = self._runtime_publisher("/rosout", "Log")
         self.parameter_events = self._runtime_publisher("/parameter_events", "ParameterEvent")
@@ -160,26 +161,29 @@ class Runtime:
     def spawn(
         self,
         cls: type[N],
-        *,
+        *args: Any,
         name: str | None = None,
         namespace: str | None = None,
         params: Mapping[str, Any] | None = None,
         remap: Mapping[str, str] | None = None,
         restart: RestartType | str = RestartType.TRANSIENT,
+        **kwargs: Any,
     ) -> N:
-        """Construct ``cls()`` as a node of this runtime and start its actor.
+        """Construct ``cls(*args, **kwargs)`` as a node of this runtime and start its actor.
 
         ``name``, ``namespace``, ``params`` and ``remap`` override what the class
-        gives ``super().__init__``, as ROS launch does.  Returns the instance (a
-        restart makes a new one: see :meth:`node`).  Raises what the constructor
-        raises, InvalidNameError for a bad or duplicate name, and RuntimeError
-        outside ``async with``.
+        gives ``super().__init__``, as ROS launch does; these and ``restart`` are
+        spawn's own, every other argument goes to the constructor (again, to each
+        restarted instance).  Returns the instance (a restart makes a new one: see
+        :meth:`node`).  Raises what the constructor raises, InvalidNameError for a
+        bad or duplicate name, and RuntimeError outside ``async with``.
         """
         self._require_running()
         if not (isinstance(cls, type) and issubclass(cls, Node)):
             raise TypeError(f"spawn() takes a Node subclass, got {cls!r}")
         child = Child(
-            cls, name=name, namespace=namespace, params=params, remap=remap, restart=RestartType(restart)
+            cls, name=name, namespace=namespace, params=params, remap=remap, restart=RestartType(restart),
+            args=args, kwargs=kwargs,
         )
         try:
             core = self.supervisor.start(child)
@@ -212,7 +216,7 @@ class Runtime:
     def _instantiate(self, child: Child) -> NodeCore:
         token = _spawning.set(SpawnRequest(self, child))
         try:
-            node = child.cls()
+            node = child.cls(*child.args, **child.kwargs)
         except BaseException:
             # A constructor that raised half-way: unregister what it built, and keep its
             # mailboxes (and those it inherited) for the next attempt.
@@ -262,10 +266,13 @@ class Runtime:
         return pub
 
     def _incompatible_qos(self, pub: Publisher, sub: Subscription, reason: str) -> None:
+        pair = (pub.node.fqn, sub.node.fqn, sub.topic_name)
+        if pair in self._reported_pairs:  # once per pair of nodes, not at every restart
+            return
+        self._reported_pairs.add(pair)
         self.logger.warning(
             f"{sub.node.fqn} subscribes to {sub.topic_name} ({type_name(sub.msg_type)}) but "
-            f"{pub.node.fqn} publishes with incompatible QoS ({reason}): not connected",
-            once=True,
+            f"{pub.node.fqn} publishes with incompatible QoS ({reason}): not connected"
         )
 
 

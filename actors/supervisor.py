@@ -39,7 +39,7 @@ import anyio
 import msgspec
 
 from actors.actor import CallbackFailed, OneShot
-from actors.clock import Clock
+from actors.clock import ROSClock
 from actors.errors import Escalation
 from actors.log import NodeLogger
 from actors.node import NodeCore
@@ -93,8 +93,13 @@ class Child:
         params: Mapping[str, Any] | None,
         remap: Mapping[str, str] | None,
         restart: RestartType,
+        args: tuple[Any, ...] = (),
+        kwargs: Mapping[str, Any] | None = None,
     ) -> None:
         self.cls = cls
+        # The constructor's own arguments, given again to every restarted instance.
+        self.args = args
+        self.kwargs = dict(kwargs or {})
         self.name = name
         self.namespace = namespace
         self.params = dict(params or {})
@@ -130,7 +135,7 @@ class _Exit(msgspec.Struct):
 class Supervised(Protocol):
     """What the supervisor needs from the runtime it serves."""
 
-    clock: Clock
+    clock: ROSClock
     logger: NodeLogger
     loop: asyncio.AbstractEventLoop
 

@@ -1,4 +1,4 @@
-"""Virtual time: the loop jumps to the next timer, waits for threads, and reports deadlocks."""
+"""Virtual time (the loop jumps to the next timer, waits for threads, reports deadlocks), Time, Duration, Clock."""
 
 from __future__ import annotations
 
@@ -9,8 +9,14 @@ import time
 import anyio
 import pytest
 
-from actors.clock import Clock, Duration, Rate, Time, VirtualTimeLoop
+from actors import Node, Runtime
+from actors.clock import Clock, ClockType, Duration, Infinite, Rate, ROSClock, Time, VirtualTimeLoop
 from actors.errors import VirtualTimeDeadlock
+
+
+class Idle(Node):
+    def __init__(self) -> None:
+        super().__init__("idle")
 
 
 @pytest.mark.virtual_time
@@ -34,7 +40,7 @@ def test_anyio_run_with_the_virtual_loop_factory():
 
 def test_the_clock_starts_at_the_epoch_offset():
     async def main() -> tuple[int, int]:
-        clock = Clock(asyncio.get_running_loop())
+        clock = ROSClock(asyncio.get_running_loop())
         first = clock.now_ns()
         await asyncio.sleep(2.5)
         return first, clock.now().nanoseconds
@@ -82,13 +88,146 @@ async def test_rate_sleeps_to_absolute_deadlines():
     assert stamps == [0.25, 0.5, 0.75, 1.0]
 
 
-def test_time_and_duration_arithmetic():
-    t = Time(seconds=1.5)
+# -- Time and Duration: rclpy's semantics (checked against rclpy Kilted) ---------------
+
+
+def test_time_and_duration_are_built_from_seconds_and_nanoseconds():
+    t = Time(seconds=1, nanoseconds=5e8)
+    assert (t.nanoseconds, t.clock_type) == (1_500_000_000, ClockType.SYSTEM_TIME)
     assert t.seconds_nanoseconds() == (1, 500_000_000)
-    assert (t + Duration(seconds=0.5)).nanoseconds == 2_000_000_000
-    assert t - Time(seconds=1) == Duration(nanoseconds=500_000_000)
+    assert Time(nanoseconds=15e8).seconds_nanoseconds() == (1, 500_000_000)
+    assert Time(nanoseconds=2**63 - 1).nanoseconds == 2**63 - 1
+    assert Duration(seconds=-1).nanoseconds == -1_000_000_000  # a duration may be negative
+    assert Duration(nanoseconds=-(2**63)).nanoseconds == -(2**63)
+    assert Duration(seconds=1.001).nanoseconds == 1_001_000_000  # rounded (rclpy truncates: 1000999999)
+
+
+@pytest.mark.parametrize(
+    ("make", "error"),
+    [
+        (lambda: Time(seconds=-1), ValueError),
+        (lambda: Time(nanoseconds=-1), ValueError),
+        (lambda: Time(nanoseconds=2**63), OverflowError),
+        (lambda: Time(clock_type="STEADY_TIME"), TypeError),
+        (lambda: Duration(nanoseconds=2**63), OverflowError),
+        (lambda: Duration(nanoseconds=-(2**63) - 1), OverflowError),
+    ],
+)
+def test_out_of_range_times_and_durations_are_refused(make, error):
+    with pytest.raises(error):
+        make()
+
+
+def test_duration_arithmetic():
+    one, two = Duration(seconds=1), Duration(seconds=2)
+    assert (one + two).nanoseconds == 3_000_000_000
+    assert (two - one) == one and (one - two).nanoseconds == -1_000_000_000
+    assert one * 2 == two and two * 0.5 == one
+    assert one * float("inf") == Infinite and str(Infinite) == "Infinite"
+    assert str(one) == "1000000000 nanoseconds"
+    with pytest.raises(ValueError):
+        one * float("nan")
+    with pytest.raises(TypeError):
+        one + 1
+    with pytest.raises(TypeError):
+        one * "2"
+
+
+def test_time_arithmetic_keeps_the_clock_type():
+    t = Time(nanoseconds=1, clock_type=ClockType.STEADY_TIME)
+    one_ns = Duration(nanoseconds=1)
+    for later in (t + one_ns, one_ns + t):
+        assert isinstance(later, Time)
+        assert (later.nanoseconds, later.clock_type) == (2, ClockType.STEADY_TIME)
+    assert (t - one_ns).nanoseconds == 0 and (t - one_ns).clock_type == ClockType.STEADY_TIME
+    diff = Time(nanoseconds=3) - Time(nanoseconds=1)
+    assert isinstance(diff, Duration) and diff.nanoseconds == 2
+    assert (Time(nanoseconds=1) - Time(nanoseconds=2)).nanoseconds == -1
+    with pytest.raises(ValueError):
+        t - Duration(nanoseconds=2)  # before the epoch
+    with pytest.raises(OverflowError):
+        Time(nanoseconds=2**63 - 1) + one_ns
+    with pytest.raises(TypeError):
+        Time() + Time()
+    with pytest.raises(TypeError):
+        Time(clock_type=ClockType.ROS_TIME) - Time(clock_type=ClockType.SYSTEM_TIME)
+    with pytest.raises(TypeError):
+        Duration() - Time()
+
+
+def test_times_compare_only_with_times_of_the_same_clock():
+    early, late = Time(nanoseconds=1), Time(nanoseconds=2)
+    assert early < late and early <= late and late > early and late >= early
+    assert early != late and early == Time(nanoseconds=1)
+    steady = Time(nanoseconds=1, clock_type=ClockType.STEADY_TIME)
+    for compare in (lambda: early == steady, lambda: early < steady, lambda: early >= steady):
+        with pytest.raises(TypeError):
+            compare()
+    duration = Duration(nanoseconds=1)
+    assert not (early == 1) and not (early == duration) and early != duration
+    for compare in (lambda: early < duration, lambda: early >= duration, lambda: duration > early):
+        with pytest.raises(TypeError):
+            compare()
+    assert Duration(seconds=1) < Duration(seconds=2) and Duration(seconds=1) == Duration(nanoseconds=10**9)
+
+
+def test_message_conversions():
+    t = Time(seconds=3, nanoseconds=5, clock_type=ClockType.ROS_TIME)
     msg = t.to_msg()
-    assert (msg.sec, msg.nanosec) == (1, 500_000_000)
+    assert (type(msg).__ros_type__, msg.sec, msg.nanosec) == ("builtin_interfaces/msg/Time", 3, 5)
+    back = Time.from_msg(msg)
+    assert back == t and back.clock_type == ClockType.ROS_TIME  # from_msg means ROS time
+    assert Time.from_msg(msg, clock_type=ClockType.SYSTEM_TIME).clock_type == ClockType.SYSTEM_TIME
+    big = Time(nanoseconds=2**63 - 1, clock_type=ClockType.ROS_TIME)
+    assert Time.from_msg(big.to_msg()) == big
+    d = Duration(seconds=-1, nanoseconds=1)
+    assert Duration.from_msg(d.to_msg()) == d
+    with pytest.raises(TypeError):
+        Time.from_msg(d.to_msg())
+    with pytest.raises(TypeError):
+        Duration.from_msg(msg)
+
+
+def test_clocks_of_each_type():
+    assert type(Clock()) is Clock and Clock().clock_type == ClockType.SYSTEM_TIME
+    assert Clock(clock_type=ClockType.STEADY_TIME).clock_type == ClockType.STEADY_TIME
+    ros = Clock(clock_type=ClockType.ROS_TIME)
+    assert isinstance(ros, ROSClock) and ros.clock_type == ClockType.ROS_TIME
+    assert ROSClock().clock_type == ClockType.ROS_TIME
+    with pytest.raises(TypeError):
+        Clock(clock_type="STEADY_TIME")
+    now = Clock().now()
+    assert now.clock_type == ClockType.SYSTEM_TIME
+    assert abs(now.nanoseconds / 1e9 - time.time()) < 5  # the system clock, as in ROS
+    steady = Clock(clock_type=ClockType.STEADY_TIME)
+    first = steady.now()
+    assert steady.now() >= first
+
+
+def test_an_unbound_ros_clock_can_be_driven_by_hand():
+    clock = ROSClock()
+    assert not clock.ros_time_is_active
+    clock._set_ros_time_is_active(True)
+    clock.set_ros_time_override(Time(seconds=42, clock_type=ClockType.ROS_TIME))
+    assert clock.ros_time_is_active and clock.now() == Time(seconds=42, clock_type=ClockType.ROS_TIME)
+    with pytest.raises(TypeError):
+        clock.set_ros_time_override(42)
+
+
+@pytest.mark.virtual_time
+async def test_the_runtime_clock_is_ros_time_on_the_loop():
+    async with Runtime() as rt:
+        node = rt.spawn(Idle)
+        clock = node.get_clock()
+        assert isinstance(clock, ROSClock) and clock.ros_time_is_active  # virtual = simulated time
+        await anyio.sleep(1.5)
+        now = clock.now()
+        assert now == Time(seconds=1.5, clock_type=ClockType.ROS_TIME)
+        assert await clock.sleep_for(Duration(seconds=0.5))
+        assert await clock.sleep_until(now + Duration(seconds=1))
+        assert clock.now() - now == Duration(seconds=1)
+        with pytest.raises(ValueError):
+            await clock.sleep_until(Time(seconds=9))  # a SYSTEM_TIME Time
 
 
 def test_precise_loop_waits_in_select():
@@ -126,3 +265,29 @@ async def test_advance_moves_virtual_time_at_once():
     assert loop.time() == 10.0  # without the advance, the loop would have jumped to 5.0
     with pytest.raises(ValueError, match="backwards"):
         loop.advance(-1)
+
+
+@pytest.mark.virtual_time
+async def test_a_nodes_rate_and_destroying_it():
+    async with Runtime() as rt:
+        node = rt.spawn(Idle)
+        rate = node.create_rate(2.0)
+        await rate.sleep()
+        assert node.get_clock().now() == Time(seconds=0.5, clock_type=ClockType.ROS_TIME)
+        woke_at = []
+
+        async def sleeper() -> None:
+            await rate.sleep()
+            woke_at.append(asyncio.get_running_loop().time())
+
+        async with anyio.create_task_group() as tg:
+            tg.start_soon(sleeper)
+            await anyio.sleep(0.1)
+            assert node.destroy_rate(rate)  # wakes the sleeper before its deadline at 1.0
+        assert woke_at == [0.6]
+        with pytest.raises(RuntimeError, match="destroyed"):
+            await rate.sleep()
+        with pytest.raises(ValueError):
+            node.create_rate(0)
+        with pytest.raises(ValueError):
+            node.create_rate(1.0, clock=Clock())

@@ -17,8 +17,8 @@ ROOT = Path(actors.__file__).resolve().parent
 LAYERS: list[set[str]] = [
     {"errors", "log", "names", "clock", "actor", "config", "idl", "idl_gen", "codec", "rosargs", "layout", "cdr",
      "typehash"},
-    {"topics", "services", "timers", "params", "actions"},
-    {"node"},
+    {"topics", "services", "timers", "params", "actions", "endpoint_info"},
+    {"node", "node_params", "node_graph", "param_client"},
     {"supervisor", "runtime", "introspection", "graph"},
     {"control", "doctor"},
     {"run", "testing", "cli", "__main__", "__init__"},

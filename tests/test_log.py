@@ -1,15 +1,26 @@
-"""Logging: ROS's console form, the runtime clock's stamps, /rosout, level filtering."""
+"""Logging: ROS's console form, the runtime clock's stamps, /rosout, levels, rclpy's once/throttle/skip_first."""
 
 from __future__ import annotations
 
 import io
 import logging
+import time
 
 import anyio
 import pytest
 
 from actors import Node, Runtime
-from actors.log import RosFormatter, configure_console
+from actors.clock import ClockType, ROSClock, Time
+from actors.log import (
+    LoggingSeverity,
+    RosFormatter,
+    configure_console,
+    get_logger,
+    get_logger_effective_level,
+    get_logger_level,
+    get_logging_severity_from_string,
+    set_logger_level,
+)
 from interfaces.rcl_interfaces.msg import Log
 
 
@@ -80,3 +91,100 @@ def test_log_level_option_filters_the_demo(run_module):
     result = run_module("actors.run", "graph.toml", "--clock", "virtual", "--duration", "3", "--log-level", "warn")
     assert result.returncode == 0
     assert "[INFO]" not in result.stdout
+
+
+# -- rclpy's logging filters and levels ----------------------------------------------
+
+
+def test_once_is_per_call_site_not_per_text():
+    logger = get_logger("filters")
+    first_site = [logger.warning(f"tick {i}", once=True) for i in range(4)]
+    assert first_site == [True, False, False, False]  # a changing text is still the same call site
+    assert logger.warning("tick 0", once=True)  # another line: its own once
+    assert [logger.warning("again", once=False) for _ in range(2)] == [True, True]
+
+
+def test_two_calls_on_one_line_are_two_call_sites():
+    logger = get_logger("filters")
+    assert [logger.warning("a", once=True), logger.warning("b", once=True)] == [True, True]
+
+
+def test_skip_first_and_its_order_with_once():
+    logger = get_logger("filters")
+    assert [logger.warning("m", skip_first=True) for _ in range(3)] == [False, True, True]
+    assert [logger.warning("m", skip_first=True, once=True) for _ in range(4)] == [False, True, False, False]
+
+
+def test_throttle_on_a_clock_given_and_skip_first_after_it():
+    clock = ROSClock()
+    clock._set_ros_time_is_active(True)
+    logger = get_logger("filters")
+    logged, skipped = [], []
+    for tenths in range(0, 17, 4):  # 0, 0.4, 0.8, 1.2, 1.6 s
+        clock.set_ros_time_override(Time(nanoseconds=tenths * 100_000_000, clock_type=ClockType.ROS_TIME))
+        logged.append(logger.warning("t", throttle_duration_sec=1, throttle_time_source_type=clock))
+        skipped.append(logger.warning("t", throttle_duration_sec=1, throttle_time_source_type=clock, skip_first=True))
+    assert logged == [True, False, False, True, False]  # the first call logs, even at time 0
+    assert skipped == [False, False, False, True, False]  # throttled first, then the first one skipped
+
+
+@pytest.mark.virtual_time
+async def test_throttle_follows_the_nodes_clock(console):
+    class Busy(Node):
+        def __init__(self) -> None:
+            super().__init__("busy")
+            self.create_timer(0.1, lambda: self.get_logger().info("busy", throttle_duration_sec=1.0))
+
+    async with Runtime() as rt:
+        rt.spawn(Busy)
+        await anyio.sleep(3.05)
+    stamps = [line.split("] [")[1] for line in console.getvalue().splitlines()]
+    assert stamps == ["0.100000000", "1.100000000", "2.100000000"]
+
+
+def test_a_call_site_cannot_change_its_filters():
+    logger = get_logger("filters")
+    with pytest.raises(ValueError, match="cannot change"):
+        for duration in (1, 2):
+            logger.warning("m", throttle_duration_sec=duration)
+    with pytest.raises(ValueError, match="cannot change"):
+        for level in (LoggingSeverity.WARN, LoggingSeverity.ERROR):
+            logger.log("m", level, once=True)
+
+
+def test_filters_are_not_consulted_below_the_level():
+    logger = get_logger("quiet_filters")
+    logger.set_level(LoggingSeverity.ERROR)
+    assert [logger.warning("m", once=True) for _ in range(2)] == [False, False]
+    logger.set_level(LoggingSeverity.WARN)
+    assert logger.warning("m", once=True)  # a different line; the one above never logged
+    logger.set_level(LoggingSeverity.UNSET)
+
+
+def test_levels_by_name_and_number():
+    logger = get_logger("levels.child")
+    set_logger_level("levels", "debug")
+    assert get_logger_level("levels.child") is LoggingSeverity.UNSET
+    assert logger.get_effective_level() is LoggingSeverity.DEBUG  # inherited from its parent
+    assert get_logger_effective_level("levels.child") is LoggingSeverity.DEBUG
+    logger.set_level(LoggingSeverity.ERROR)
+    assert not logger.is_enabled_for(LoggingSeverity.WARN) and logger.is_enabled_for(40)
+    assert get_logging_severity_from_string("Warn") is LoggingSeverity.WARN
+    with pytest.raises(ValueError):
+        logger.set_level("loud")
+    with pytest.raises(ValueError):
+        get_logger("")
+    with pytest.raises(ValueError):
+        logger.get_child("")
+    assert logger.get_child("leaf").name == "levels.child.leaf"
+    set_logger_level("levels", LoggingSeverity.UNSET)
+    logger.set_level(0)
+
+
+def test_a_free_logger_prints_in_the_ros_form_with_the_system_clock(console):
+    before = time.time()
+    assert get_logger("free").info("hi")
+    (line,) = console.getvalue().splitlines()
+    level, stamp, rest = line.split(" ", 2)
+    assert (level, rest) == ("[INFO]", "[free]: hi")
+    assert abs(float(stamp.strip("[]")) - before) < 60

@@ -1,4 +1,4 @@
-"""Parameters: declaring, overrides, refused sets that keep the old value, events, services."""
+"""Parameters: rclpy's semantics for declaring, reading, setting, callbacks and events; the services."""
 
 from __future__ import annotations
 
@@ -8,6 +8,16 @@ import anyio
 import pytest
 
 from actors import Node, Parameter, ParameterError, Runtime
+from actors.errors import (
+    InvalidParameterException,
+    InvalidParameterTypeException,
+    InvalidParameterValueException,
+    ParameterAlreadyDeclaredException,
+    ParameterException,
+    ParameterImmutableException,
+    ParameterNotDeclaredException,
+    ParameterUninitializedException,
+)
 from actors.params import ParameterType, value_from_msg, value_to_msg
 from interfaces.rcl_interfaces.msg import (
     FloatingPointRange,
@@ -17,7 +27,14 @@ from interfaces.rcl_interfaces.msg import (
     SetParametersResult,
 )
 from interfaces.rcl_interfaces.msg import Parameter as ParameterMsg
-from interfaces.rcl_interfaces.srv import DescribeParameters, GetParameters, ListParameters, SetParameters
+from interfaces.rcl_interfaces.srv import (
+    DescribeParameters,
+    GetParameters,
+    GetParameterTypes,
+    ListParameters,
+    SetParameters,
+    SetParametersAtomically,
+)
 from nodes.param_talker import MinimalParam
 
 pytestmark = pytest.mark.virtual_time
@@ -42,6 +59,13 @@ class Tuned(Node):
         return SetParametersResult(successful=True)
 
 
+class Bare(Node):
+    """A node that declares nothing itself: each test declares what it needs."""
+
+    def __init__(self, **options: object) -> None:
+        super().__init__("bare", **options)
+
+
 class EventLog(Node):
     def __init__(self) -> None:
         super().__init__("event_log")
@@ -60,10 +84,21 @@ async def test_declared_values_and_types():
         assert node.get_parameter("names").type_ is ParameterType.STRING_ARRAY
         assert node.get_parameter("flag").type_ is ParameterType.BOOL
         assert node.describe_parameter("speed").description == "m/s"
-        with pytest.raises(ParameterError, match="not declared"):
+        assert node.describe_parameter("speed").type == ParameterType.DOUBLE  # filled in from the default
+        with pytest.raises(ParameterNotDeclaredException, match="not declared"):
             node.get_parameter("nope")
-        with pytest.raises(ParameterError, match="already declared"):
+        with pytest.raises(ParameterAlreadyDeclaredException, match="already declared"):
             node.declare_parameter("speed", 1.0)
+        with pytest.raises(InvalidParameterException):
+            node.declare_parameter("", 1)
+
+
+def test_the_exceptions_are_rclpys_under_parameter_error():
+    for error in (ParameterNotDeclaredException, ParameterAlreadyDeclaredException, InvalidParameterException,
+                  InvalidParameterTypeException, InvalidParameterValueException, ParameterImmutableException,
+                  ParameterUninitializedException):
+        assert issubclass(error, ParameterError)
+    assert ParameterException is ParameterError
 
 
 @pytest.mark.parametrize(
@@ -74,7 +109,7 @@ async def test_declared_values_and_types():
         (Parameter("speed", value=1.5), "out of range [0.0, 1.0]"),
         (Parameter("count", value=11), "out of range [0, 10]"),
         (Parameter("count", value=7), "7 is unlucky"),
-        (Parameter("ghost", value=1), "not declared"),
+        (Parameter("count"), "statically typed: it cannot be unset"),
     ],
 )
 async def test_refused_sets_keep_the_old_value_and_say_why(param, reason):
@@ -89,6 +124,29 @@ async def test_refused_sets_keep_the_old_value_and_say_why(param, reason):
         assert changed(log.events) == []
 
 
+async def test_setting_an_undeclared_name_raises_and_keeps_what_came_before():
+    async with Runtime() as rt:
+        node = rt.spawn(Tuned)
+        with pytest.raises(ParameterNotDeclaredException, match="ghost"):
+            node.set_parameters([Parameter("count", value=4), Parameter("ghost", value=1), Parameter("count", value=5)])
+        assert node.get_parameter("count").value == 4  # set before the undeclared one; the last one never ran
+        with pytest.raises(ParameterNotDeclaredException):
+            node.set_parameters_atomically([Parameter("count", value=6), Parameter("ghost", value=1)])
+        assert node.get_parameter("count").value == 4
+
+
+async def test_undeclared_parameters_when_allowed():
+    async with Runtime() as rt:
+        node = rt.spawn(Bare, allow_undeclared_parameters=True)
+        assert node.get_parameter("ghost").type_ is ParameterType.NOT_SET  # no error
+        assert node.get_parameter_type("ghost") is ParameterType.NOT_SET
+        (result,) = node.set_parameters([Parameter("fresh", value=3)])
+        assert result.successful and node.get_parameter("fresh").value == 3
+        assert node.describe_parameter("fresh").dynamic_typing  # implicitly declared, any type
+        (result,) = node.set_parameters([Parameter("fresh", value="now a string")])
+        assert result.successful
+
+
 async def test_each_accepted_change_appears_once_on_parameter_events():
     async with Runtime() as rt:
         log = rt.spawn(EventLog)
@@ -101,7 +159,20 @@ async def test_each_accepted_change_appears_once_on_parameter_events():
         assert changed(log.events) == [("speed", 0.75), ("count", 4), ("speed", 1.0)]
         assert all(e.node == "/tuned" for e in log.events)
         declared = [p.name for e in log.events for p in e.new_parameters]
-        assert declared == ["speed", "count", "model", "names", "flag"]
+        assert declared == ["use_sim_time", "speed", "count", "model", "names", "flag"]
+
+
+async def test_an_int_is_accepted_for_a_double_everywhere():
+    # Our documented difference: rclpy refuses all three as the wrong type.
+    async with Runtime() as rt:
+        node = rt.spawn(Bare, params={"gain": 2})
+        assert node.declare_parameter("gain", 0.5).value == 2.0
+        assert isinstance(node.get_parameter("gain").value, float)
+        node.declare_parameter("gains", [0.5, 1.5])
+        assert node.set_parameters([Parameter("gains", value=[1, 2])])[0].successful
+        assert node.get_parameter("gains").value == [1.0, 2.0]
+        assert Parameter("g", Parameter.Type.DOUBLE, 3).value == 3.0
+        assert not node.set_parameters([Parameter("gain", value=True)])[0].successful  # a bool is no number here
 
 
 async def test_set_atomically_is_all_or_nothing():
@@ -117,8 +188,234 @@ async def test_overrides_from_spawn_win_and_are_type_checked():
         node = rt.spawn(Tuned, params={"speed": 0.9, "model": "waffle"})
         assert node.get_parameter("speed").value == 0.9
         assert node.get_parameter("model").value == "waffle"  # read-only, but set at launch
-        with pytest.raises(ParameterError, match="wrong type: expected"):
+        with pytest.raises(InvalidParameterTypeException, match="wrong type: expected"):
             rt.spawn(Tuned, name="other", params={"count": "three"})
+
+
+async def test_declaring_with_a_type_leaves_the_parameter_unset():
+    async with Runtime() as rt:
+        node = rt.spawn(Bare, params={"given": 5, "wrong": "five"})
+        unset = node.declare_parameter("port", Parameter.Type.INTEGER)
+        assert (unset.type_, unset.value) == (ParameterType.NOT_SET, None)
+        assert node.describe_parameter("port").type == ParameterType.INTEGER
+        with pytest.raises(ParameterUninitializedException):
+            node.get_parameter("port")
+        assert node.get_parameter_or("port", Parameter("alt", value=1)).value == 1
+        assert node.get_parameter_or("port").type_ is ParameterType.NOT_SET
+        assert node.declare_parameter("given", Parameter.Type.INTEGER).value == 5  # the override fills it
+        with pytest.raises(InvalidParameterTypeException):
+            node.declare_parameter("wrong", Parameter.Type.INTEGER)
+        assert not node.has_parameter("wrong")
+        (refused,) = node.set_parameters([Parameter("port", value="eighty")])
+        assert not refused.successful and "expected INTEGER" in refused.reason
+        (accepted,) = node.set_parameters([Parameter("port", value=80)])
+        assert accepted.successful and node.get_parameter("port").value == 80
+        with pytest.raises(ValueError):
+            node.declare_parameter("nothing", Parameter.Type.NOT_SET)
+        with pytest.raises(ValueError):
+            node.declare_parameter("both", Parameter.Type.DOUBLE, ParameterDescriptor(dynamic_typing=True))
+        with pytest.raises(ValueError):
+            node.declare_parameter("untyped", None, ParameterDescriptor())  # neither default nor type
+
+
+async def test_a_name_alone_declares_a_dynamically_typed_parameter():
+    async with Runtime() as rt:
+        node = rt.spawn(Bare, params={"from_graph": [1, 2]})
+        assert node.declare_parameter("anything").value is None
+        assert node.get_parameter("anything").type_ is ParameterType.NOT_SET  # dynamic: reading it is fine
+        assert node.declare_parameter("from_graph").value == [1, 2]
+        assert node.set_parameters([Parameter("anything", value="text")])[0].successful
+        assert node.set_parameters([Parameter("anything", value=3.5)])[0].successful
+        assert node.describe_parameter("anything").type == ParameterType.DOUBLE
+
+
+async def test_ranges_apply_to_numbers_only():
+    ranged = ParameterDescriptor(integer_range=[IntegerRange(from_value=0, to_value=1)],
+                                 floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0)])
+    async with Runtime() as rt:
+        node = rt.spawn(Bare)
+        assert node.declare_parameter("label", "far out of any range", ranged).value == "far out of any range"
+        assert node.set_parameters([Parameter("label", value="still fine")])[0].successful
+        node.declare_parameter("ratio", 0.5, ParameterDescriptor(
+            floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0, step=0.25)]))
+        assert node.set_parameters([Parameter("ratio", value=1.0 + 1e-9)])[0].successful  # a bound, within tolerance
+        (off_step,) = node.set_parameters([Parameter("ratio", value=0.3)])
+        assert not off_step.successful and "step of 0.25" in off_step.reason
+        reversed_bounds = ParameterDescriptor(integer_range=[IntegerRange(from_value=10, to_value=0)])
+        with pytest.raises(InvalidParameterValueException, match="out of range"):
+            node.declare_parameter("level", 50, reversed_bounds)
+        assert node.declare_parameter("level", 5, reversed_bounds).value == 5  # bounds in either order
+
+
+async def test_on_set_callbacks_run_at_declaration_and_may_refuse_it():
+    seen: list[list[str]] = []
+
+    def no_rejects(params: list[Parameter]) -> SetParametersResult:
+        seen.append([p.name for p in params])
+        ok = not any(p.name.startswith("reject") for p in params)
+        return SetParametersResult(successful=ok, reason="" if ok else "rejects are refused")
+
+    async with Runtime() as rt:
+        node = rt.spawn(Bare)
+        node.add_on_set_parameters_callback(no_rejects)
+        node.declare_parameter("kept", 1)
+        with pytest.raises(InvalidParameterValueException, match="rejects are refused"):
+            node.declare_parameter("reject_me", 1)
+        assert not node.has_parameter("reject_me")
+        assert seen == [["kept"], ["reject_me"]]
+
+
+async def test_set_callbacks_pre_on_post_in_rclpys_order():
+    calls: list[str] = []
+
+    def first(params):
+        calls.append("first")
+        return SetParametersResult(successful=True)
+
+    def second(params):
+        calls.append("second")
+        return SetParametersResult(successful=params[0].value != 13, reason="13 is refused")
+
+    def also_set_mirror(params):
+        calls.append("pre")
+        return [*params, Parameter("mirror", value=params[0].value)] if params[0].name == "x" else params
+
+    post: list[list[tuple[str, object]]] = []
+    async with Runtime() as rt:
+        node = rt.spawn(Bare)
+        node.add_on_set_parameters_callback(first)
+        node.add_on_set_parameters_callback(second)  # the newest runs first, as in rclpy
+        node.add_post_set_parameters_callback(lambda params: post.append([(p.name, p.value) for p in params]))
+        node.declare_parameter("x", 1)
+        node.declare_parameter("mirror", 0)
+        assert calls == ["second", "first", "second", "first"]  # declarations run on-set callbacks...
+        node.add_pre_set_parameters_callback(also_set_mirror)
+        calls.clear()
+        assert node.set_parameters([Parameter("x", value=2)])[0].successful
+        assert calls == ["pre", "second", "first"]  # ...but not pre-set ones
+        assert node.get_parameter("mirror").value == 2
+        assert post == [[("x", 1)], [("mirror", 0)], [("x", 2), ("mirror", 2)]]
+        (refused,) = node.set_parameters([Parameter("x", value=13)])
+        assert not refused.successful and refused.reason == "13 is refused"
+        assert len(post) == 3  # no post-set call for a refused set
+        node.remove_pre_set_parameters_callback(also_set_mirror)
+        node.remove_on_set_parameters_callback(second)
+        assert node.set_parameters([Parameter("x", value=13)])[0].successful
+        assert node.get_parameter("mirror").value == 2
+        with pytest.raises(ValueError):
+            node.remove_on_set_parameters_callback(second)
+        node.add_pre_set_parameters_callback(lambda params: [])
+        (emptied,) = node.set_parameters([Parameter("x", value=4)])
+        assert not emptied.successful and "nothing to set" in emptied.reason
+
+
+async def test_setting_not_set_undeclares_a_dynamically_typed_parameter():
+    async with Runtime() as rt:
+        log = rt.spawn(EventLog)
+        node = rt.spawn(Bare)
+        node.declare_parameter("loose", 1, ParameterDescriptor(dynamic_typing=True))
+        node.declare_parameter("strict", 1)
+        (result,) = node.set_parameters([Parameter("loose")])
+        assert result.successful and not node.has_parameter("loose")
+        (result,) = node.set_parameters([Parameter("strict")])
+        assert not result.successful and node.has_parameter("strict")
+        await anyio.sleep(0.1)
+        assert [p.name for e in log.events for p in e.deleted_parameters] == ["loose"]
+
+
+async def test_undeclare_and_read_only():
+    async with Runtime() as rt:
+        node = rt.spawn(Tuned)
+        node.undeclare_parameter("flag")
+        assert not node.has_parameter("flag")
+        with pytest.raises(ParameterNotDeclaredException):
+            node.undeclare_parameter("flag")
+        with pytest.raises(ParameterImmutableException):
+            node.undeclare_parameter("model")
+        assert node.get_parameter("model").value == "burger"
+
+
+async def test_reading_by_prefix_describing_and_listing():
+    async with Runtime() as rt:
+        node = rt.spawn(Bare)
+        node.declare_parameters("arm", [("speed", 0.5), ("joint.limit", 2), ("name", "left")])
+        node.declare_parameter("armrest", True)
+        by_prefix = node.get_parameters_by_prefix("arm")
+        assert {k: p.value for k, p in by_prefix.items()} == {"speed": 0.5, "joint.limit": 2, "name": "left"}
+        assert set(node.get_parameters_by_prefix("")) == {"arm.speed", "arm.joint.limit", "arm.name", "armrest",
+                                                          "use_sim_time"}
+        assert [d.type for d in node.describe_parameters(["arm.speed", "armrest"])] == [
+            ParameterType.DOUBLE, ParameterType.BOOL]
+        with pytest.raises(ParameterNotDeclaredException):
+            node.describe_parameters(["arm.speed", "nope"])
+        assert node.get_parameter_types(["arm.name", "armrest"]) == [ParameterType.STRING, ParameterType.BOOL]
+        one_deep = node.list_parameters(["arm"], 1)
+        assert (one_deep.names, one_deep.prefixes) == (["arm.name", "arm.speed"], ["arm"])
+        assert node.list_parameters(["arm"], 0).names == ["arm.joint.limit", "arm.name", "arm.speed"]
+        assert node.list_parameters([], 1).names == ["armrest", "use_sim_time"]
+        with pytest.raises(ParameterAlreadyDeclaredException):
+            node.declare_parameters("arm", [("fresh", 1), ("speed", 1.0)])
+        assert not node.has_parameter("arm.fresh")  # none declared when one is taken
+
+
+async def test_set_descriptor_keeps_a_fitting_value_or_takes_the_alternative():
+    async with Runtime() as rt:
+        node = rt.spawn(Bare)
+        node.declare_parameter("level", 4, ParameterDescriptor(integer_range=[IntegerRange(from_value=0, to_value=10)]))
+        narrower = ParameterDescriptor(integer_range=[IntegerRange(from_value=0, to_value=5)])
+        assert value_from_msg(node.set_descriptor("level", narrower)) == 4
+        tighter = ParameterDescriptor(integer_range=[IntegerRange(from_value=0, to_value=3)])
+        assert value_from_msg(node.set_descriptor("level", tighter, value_to_msg(2))) == 2
+        assert node.describe_parameter("level").integer_range[0].to_value == 3
+        assert node.describe_parameter("level").type == ParameterType.INTEGER
+        with pytest.raises(InvalidParameterValueException):
+            node.set_descriptor("level", ParameterDescriptor(integer_range=[IntegerRange(from_value=20, to_value=30)]))
+        assert node.get_parameter("level").value == 2
+        node.declare_parameter("fixed", 1, ParameterDescriptor(read_only=True))
+        with pytest.raises(ParameterImmutableException):
+            node.set_descriptor("fixed", ParameterDescriptor())
+        with pytest.raises(ParameterNotDeclaredException):
+            node.set_descriptor("ghost", ParameterDescriptor())
+
+
+async def test_automatically_declare_parameters_from_overrides():
+    class Blackboard(Node):
+        def __init__(self) -> None:
+            super().__init__("blackboard", parameter_overrides=[Parameter("mine", value="constructor")],
+                             automatically_declare_parameters_from_overrides=True)
+
+    async with Runtime() as rt:
+        node = rt.spawn(Blackboard, params={"from_graph": 3, "use_sim_time": True})
+        assert node.get_parameter("mine").value == "constructor"
+        assert node.get_parameter("from_graph").value == 3
+        assert node.get_parameter("use_sim_time").value is True
+        with pytest.raises(ParameterAlreadyDeclaredException):
+            node.declare_parameter("from_graph", 0)
+
+
+async def test_every_node_has_use_sim_time():
+    async with Runtime() as rt:
+        node = rt.spawn(Bare)
+        assert node.get_parameter("use_sim_time").value is False
+        assert node.describe_parameter("use_sim_time").type == ParameterType.BOOL
+        assert node.set_parameters([Parameter("use_sim_time", value=True)])[0].successful
+        assert not node.set_parameters([Parameter("use_sim_time", value="yes")])[0].successful
+        with pytest.raises(ParameterAlreadyDeclaredException):
+            node.declare_parameter("use_sim_time", False)
+
+
+def test_a_parameter_checks_its_value_against_its_type():
+    with pytest.raises(ValueError):
+        Parameter("p", Parameter.Type.INTEGER, "not a number")
+    with pytest.raises(TypeError):
+        Parameter("p", 2, 1)  # a plain number is not a Parameter.Type
+    with pytest.raises(TypeError):
+        Parameter("p", value=object())
+    param = Parameter("p", value=[True, False])
+    assert param.type_ is Parameter.Type.BOOL_ARRAY
+    with pytest.raises(AttributeError):
+        param.value = [False]  # type: ignore[misc]
+    assert Parameter("p", value=[]).type_ is Parameter.Type.BYTE_ARRAY  # rclpy's reading of an empty list
 
 
 async def test_the_parameter_services():
@@ -132,19 +429,35 @@ async def test_the_parameter_services():
         core = asker._core
         listed = await core.create_client(ListParameters, "/tuned/list_parameters").call(
             ListParameters.Request(), timeout=1)
-        assert listed.result.names == ["count", "flag", "model", "names", "speed"]
+        assert listed.result.names == ["count", "flag", "model", "names", "speed", "use_sim_time"]
         got = await core.create_client(GetParameters, "/tuned/get_parameters").call(
-            GetParameters.Request(names=["speed", "names"]), timeout=1)
-        assert [value_from_msg(v) for v in got.values] == [0.5, ["a", "b"]]
+            GetParameters.Request(names=["speed", "names", "ghost"]), timeout=1)
+        assert [value_from_msg(v) for v in got.values] == [0.5, ["a", "b"], None]
+        types = await core.create_client(GetParameterTypes, "/tuned/get_parameter_types").call(
+            GetParameterTypes.Request(names=["speed", "ghost"]), timeout=1)
+        assert types.types == [ParameterType.DOUBLE, ParameterType.NOT_SET]
         setter = core.create_client(SetParameters, "/tuned/set_parameters")
         response = await setter.call(SetParameters.Request(parameters=[
             ParameterMsg(name="speed", value=value_to_msg(0.25)),
-            ParameterMsg(name="model", value=value_to_msg("x"))]), timeout=1)
-        assert [r.successful for r in response.results] == [True, False]
+            ParameterMsg(name="model", value=value_to_msg("x")),
+            ParameterMsg(name="ghost", value=value_to_msg(1))]), timeout=1)
+        assert [r.successful for r in response.results] == [True, False, False]
+        assert "not declared" in response.results[2].reason  # an answer, not an exception
+        atomic = await core.create_client(SetParametersAtomically, "/tuned/set_parameters_atomically").call(
+            SetParametersAtomically.Request(parameters=[
+                ParameterMsg(name="count", value=value_to_msg(5)),
+                ParameterMsg(name="count", value=value_to_msg(70))]), timeout=1)
+        assert not atomic.result.successful and rt.node("tuned").get_parameter("count").value == 3
         described = await core.create_client(DescribeParameters, "/tuned/describe_parameters").call(
             DescribeParameters.Request(names=["count"]), timeout=1)
         assert described.descriptors[0].integer_range[0].to_value == 10
         assert rt.node("tuned").get_parameter("speed").value == 0.25
+
+
+async def test_a_node_can_do_without_parameter_services():
+    async with Runtime() as rt:
+        rt.spawn(Bare, start_parameter_services=False)
+        assert not [name for name in rt.services.servers if name.startswith("/bare/")]
 
 
 async def test_param_talker_says_hello_to_the_override_first(caplog):
@@ -159,5 +472,6 @@ async def test_param_talker_says_hello_to_the_override_first(caplog):
 def test_parameter_values_round_trip_through_messages():
     for value in [True, 3, 2.5, "s", b"\x01\x02", [True, False], [1, 2], [1.5, 2.0], ["x"]]:
         assert value_from_msg(value_to_msg(value)) == value
-    with pytest.raises(ValueError):
+    assert value_to_msg([b"\x01", b"\x02"]).byte_array_value == b"\x01\x02"  # rclpy's list of bytes
+    with pytest.raises(TypeError):
         value_to_msg([1, "mixed"])

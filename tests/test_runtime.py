@@ -44,6 +44,35 @@ async def test_names_are_overridden_and_must_be_unique():
             rt.spawn(Collector, name="no way")
 
 
+class Greeter(Node):
+    """A node whose constructor takes arguments of its own, as many rclpy nodes' do."""
+
+    instances = 0
+
+    def __init__(self, greeting: str, *, times: int = 1, crash: bool = False) -> None:
+        super().__init__("greeter")
+        Greeter.instances += 1
+        self.said = [greeting] * times
+        if crash:
+            self.create_timer(0.5, self.explode)
+
+    def explode(self) -> None:
+        raise RuntimeError("boom")
+
+
+@pytest.mark.virtual_time
+async def test_spawn_passes_constructor_arguments_also_to_a_restarted_instance():
+    Greeter.instances = 0
+    async with Runtime() as rt:
+        node = rt.spawn(Greeter, "hello", times=2, crash=True, name="g1")
+        assert node.said == ["hello", "hello"] and node.get_name() == "g1"
+        await anyio.sleep(0.8)  # it crashed at 0.5 s and was restarted after the 0.1 s backoff
+        again = rt.node("g1")
+        assert again is not node and again.said == ["hello", "hello"] and Greeter.instances == 2
+        with pytest.raises(TypeError):
+            rt.spawn(Greeter, name="g2")  # the constructor's own error: a missing argument
+
+
 @pytest.mark.virtual_time
 async def test_embedding_beside_other_tasks_of_an_anyio_application():
     app_ticks = []

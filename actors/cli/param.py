@@ -96,7 +96,7 @@ def set_parameter(args: argparse.Namespace) -> int:
     value = parse_yaml(args.value, "parameter value")
     try:
         parameter = Parameter(name=args.name, value=value_to_msg(value))
-    except ValueError as exc:
+    except (TypeError, ValueError) as exc:
         raise ControlError(f"cannot set {args.name}: {exc}") from None
     with connect(args.graph) as conn:
         (node,) = _nodes(conn, args.node)

@@ -16,6 +16,9 @@ __all__ = [
     "DescribeParameters",
     "DescribeParameters_Request",
     "DescribeParameters_Response",
+    "GetParameterTypes",
+    "GetParameterTypes_Request",
+    "GetParameterTypes_Response",
     "GetParameters",
     "GetParameters_Request",
     "GetParameters_Response",
@@ -23,6 +26,9 @@ __all__ = [
     "ListParameters_Request",
     "ListParameters_Response",
     "SetParameters",
+    "SetParametersAtomically",
+    "SetParametersAtomically_Request",
+    "SetParametersAtomically_Response",
     "SetParameters_Request",
     "SetParameters_Response",
 ]
@@ -73,6 +79,47 @@ class DescribeParameters:
     )
     Request = DescribeParameters_Request
     Response = DescribeParameters_Response
+
+
+class GetParameterTypes_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/GetParameterTypes_Request``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameterTypes_Request"
+    __ros_definition__: ClassVar[str] = (
+        "# Names of the parameters whose types are wanted.\n"
+        "string[] names\n"
+        "\n"
+    )
+
+    names: list[str] = msgspec.field(default_factory=list)
+
+
+class GetParameterTypes_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/GetParameterTypes_Response``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameterTypes_Response"
+    __ros_definition__: ClassVar[str] = (
+        "# The type of each (rcl_interfaces/msg/ParameterType); PARAMETER_NOT_SET when unknown.\n"
+        "uint8[] types\n"
+    )
+
+    types: bytes = b""
+
+
+class GetParameterTypes:
+    """``rcl_interfaces/srv/GetParameterTypes``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameterTypes"
+    __ros_definition__: ClassVar[str] = (
+        "# Names of the parameters whose types are wanted.\n"
+        "string[] names\n"
+        "\n"
+        "---\n"
+        "# The type of each (rcl_interfaces/msg/ParameterType); PARAMETER_NOT_SET when unknown.\n"
+        "uint8[] types\n"
+    )
+    Request = GetParameterTypes_Request
+    Response = GetParameterTypes_Response
 
 
 class GetParameters_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -232,3 +279,44 @@ class SetParameters:
     )
     Request = SetParameters_Request
     Response = SetParameters_Response
+
+
+class SetParametersAtomically_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/SetParametersAtomically_Request``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParametersAtomically_Request"
+    __ros_definition__: ClassVar[str] = (
+        "# Parameters to set all together: either every one is set, or none is.\n"
+        "Parameter[] parameters\n"
+        "\n"
+    )
+
+    parameters: list[Parameter] = msgspec.field(default_factory=list)
+
+
+class SetParametersAtomically_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/SetParametersAtomically_Response``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParametersAtomically_Response"
+    __ros_definition__: ClassVar[str] = (
+        "# Whether they were set and, if not, why.\n"
+        "SetParametersResult result\n"
+    )
+
+    result: SetParametersResult = msgspec.field(default_factory=SetParametersResult)
+
+
+class SetParametersAtomically:
+    """``rcl_interfaces/srv/SetParametersAtomically``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParametersAtomically"
+    __ros_definition__: ClassVar[str] = (
+        "# Parameters to set all together: either every one is set, or none is.\n"
+        "Parameter[] parameters\n"
+        "\n"
+        "---\n"
+        "# Whether they were set and, if not, why.\n"
+        "SetParametersResult result\n"
+    )
+    Request = SetParametersAtomically_Request
+    Response = SetParametersAtomically_Response
