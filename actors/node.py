@@ -14,7 +14,8 @@ subclasses may use any attribute name rclpy users are used to (``self.timer``,
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from contextvars import ContextVar
 from typing import Any, Protocol
 
@@ -33,7 +34,7 @@ from actors.timers import Deadlines, Timer
 from actors.topics import Publisher, QoSProfile, Subscription, TopicTable, as_qos
 from interfaces.rcl_interfaces.msg import ParameterDescriptor
 
-__all__ = ["Node", "NodeCore", "Host", "ChildSpec", "SpawnRequest"]
+__all__ = ["Node", "NodeCore", "Host", "ChildSpec", "SpawnRequest", "spawning"]
 
 
 class Host(Protocol):
@@ -68,16 +69,32 @@ class ChildSpec(Protocol):
 
 
 class SpawnRequest:
-    """What the runtime hands to the node being constructed."""
+    """What the runtime hands to the node being constructed.
 
-    __slots__ = ("runtime", "child")
+    ``actor`` runs the node's callbacks; by default a new :class:`Actor` on the
+    runtime's loop.  Another actor (the rclpy layer's, which hands ready
+    callbacks to a script's executor) changes who runs them, not what they are.
+    """
 
-    def __init__(self, runtime: Host, child: ChildSpec) -> None:
+    __slots__ = ("runtime", "child", "actor")
+
+    def __init__(self, runtime: Host, child: ChildSpec, actor: Actor | None = None) -> None:
         self.runtime = runtime
         self.child = child
+        self.actor = actor
 
 
 _spawning: ContextVar[SpawnRequest | None] = ContextVar("actors_spawning", default=None)
+
+
+@contextmanager
+def spawning(request: SpawnRequest) -> Iterator[None]:
+    """Nodes constructed inside the block are built for ``request``, as ``Runtime.spawn`` builds them."""
+    token = _spawning.set(request)
+    try:
+        yield
+    finally:
+        _spawning.reset(token)
 
 
 class NodeCore:
@@ -106,7 +123,7 @@ class NodeCore:
         self.loop: asyncio.AbstractEventLoop = self.runtime.loop
         self.clock: ROSClock = self.runtime.clock
         self.parameter_events = self.runtime.parameter_events
-        self.actor = Actor(self.loop)
+        self.actor = request.actor if request.actor is not None else Actor(self.loop)
         self._logger: NodeLogger | None = None
         # Insertion-ordered sets ({entity: None}): creation order, O(1) removal.
         self.publishers: dict[Publisher, None] = {}

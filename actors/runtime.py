@@ -24,7 +24,7 @@ from actors.clock import ROSClock
 from actors.errors import InvalidNameError
 from actors.introspection import GraphView
 from actors.log import NodeLogger
-from actors.node import Node, NodeCore, SpawnRequest, _spawning
+from actors.node import Node, NodeCore, SpawnRequest, spawning
 from actors.services import ServiceTable
 from actors.supervisor import Child, RestartType, Supervisor, SupervisorPolicy
 from actors.timers import Deadlines
@@ -214,17 +214,15 @@ class Runtime:
         return core
 
     def _instantiate(self, child: Child) -> NodeCore:
-        token = _spawning.set(SpawnRequest(self, child))
         try:
-            node = child.cls(*child.args, **child.kwargs)
+            with spawning(SpawnRequest(self, child)):
+                node = child.cls(*child.args, **child.kwargs)
         except BaseException:
             # A constructor that raised half-way: unregister what it built, and keep its
             # mailboxes (and those it inherited) for the next attempt.
             for core in [c for c in self.nodes.values() if c.child is child]:
                 child.give_back(core.abandon())
             raise
-        finally:
-            _spawning.reset(token)
         core = getattr(node, "_core", None)
         if not isinstance(core, NodeCore):
             raise TypeError(f"{child.cls.__name__}.__init__ must call super().__init__(node_name)")

@@ -120,3 +120,22 @@ async def test_a_runtime_failed_from_outside_the_supervisor_still_stops_its_node
             rt._fail(ValueError("given up"))  # cancels the block; the nodes still stop gracefully
             await anyio.sleep(1)
     assert stopped == ["hooked"]
+
+
+@pytest.mark.virtual_time
+async def test_a_node_built_under_spawning_runs_on_the_actor_it_is_given():
+    # The seam the rclpy layer builds a script's nodes with, outside the supervisor.
+    from actors.actor import Actor
+    from actors.node import SpawnRequest, spawning
+    from actors.supervisor import Child, RestartType
+
+    async with Runtime() as rt:
+        actor = Actor(rt.loop)
+        child = Child(Collector, name="scripted", namespace=None, params=None, remap=None,
+                      restart=RestartType.TEMPORARY)
+        with spawning(SpawnRequest(rt, child, actor=actor)):
+            node = Collector()
+        assert node._core.actor is actor and rt.node("scripted") is node
+        with pytest.raises(RuntimeError, match="must be started by a runtime"):
+            Collector()  # outside the block again
+        node.destroy_node()
