@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import functools
 import importlib
+import re
 import sys
 from collections.abc import Callable
 from pathlib import Path
@@ -30,8 +31,9 @@ from typing import Any, TypeVar
 import msgspec
 import msgspec.inspect as mi
 
-from actors import cdr
+from actors import cdr, typehash
 from actors.errors import InterfaceError, MessageValidationError, UnknownInterfaceError
+from actors.idl import PRIMITIVES
 
 __all__ = [
     "convert",
@@ -50,6 +52,7 @@ __all__ = [
     "register_root",
     "ros_name",
     "to_builtins",
+    "type_hash",
     "to_yaml",
     "load_yaml",
     "dump_yaml",
@@ -255,6 +258,15 @@ def decode_cdr(data: bytes | bytearray | memoryview, type_: type[T] | str) -> T:
     return cdr.decode(data, _resolve(type_))
 
 
+def type_hash(type_: type | str) -> str:
+    """``RIHS01_<64 hex>``: the hash ROS 2 names a message, service or action type by (REP 2016).
+
+    Raises UnknownInterfaceError for an unknown name, TypeError for a class
+    that is not an interface type.
+    """
+    return typehash.type_hash(_resolve(type_))
+
+
 def _decode(decoders: dict[Any, Any], factory: Callable[[type], Any], data: Any, type_: Any) -> Any:
     decoder = decoders.get(type_)
     if decoder is None:
@@ -391,17 +403,42 @@ def json_schema(type_: type | str) -> dict[str, Any]:
 
 
 def definition_text(type_: type | str) -> str:
-    """The MCAP ``ros2msg`` schema text of a message type.
+    """The MCAP ``ros2msg`` schema text of a message type, exactly as rosbag2 writes it.
 
-    Its own definition, then for each message it uses (transitively, each
-    once, depth first) a line of 80 ``=``, ``MSG: pkg/msg/Type`` and that
-    type's definition.  Raises UnknownInterfaceError for an unknown name.
+    Its own definition, then for each message type it names (in the order of
+    a sorted set of the names *as written*, ``std_msgs/Header`` or
+    ``pkg/msg/Name``, a bare ``Name`` taken as the same package's), depth
+    first and each once: a newline, a line of 80 ``=``, ``MSG: `` and the
+    name as written, and that type's text.  Raises UnknownInterfaceError for
+    an unknown name.
     """
     cls = _resolve(type_)
-    parts = [cls.__ros_definition__.rstrip("\n")]
-    for dependency in _dependencies(cls):
-        parts += ["=" * 80, f"MSG: {dependency.__ros_type__}", dependency.__ros_definition__.rstrip("\n")]
-    return "\n".join(parts) + "\n"
+    seen: set[str] = set()
+
+    def text_of(cls: type) -> str:
+        text = cls.__ros_definition__
+        for name in sorted(_named_types(text, cls.__ros_type__.split("/")[0])):
+            if name not in seen:
+                seen.add(name)
+                text += "\n" + "=" * 80 + f"\nMSG: {name}\n" + text_of(get_type(name))
+        return text
+
+    return text_of(cls)
+
+
+# rosbag2 finds a definition's types with this pattern: the first word of a line, less any [..].
+_FIELD_TYPE = re.compile(r"(?:^|\n)\s*([a-zA-Z0-9_/]+)(?:\[[^\]]*\])?\s+")
+_PRIMITIVE_NAMES = frozenset(PRIMITIVES) | {"byte", "char"}
+
+
+def _named_types(text: str, package: str) -> set[str]:
+    """The message types a definition names, as written (``Name`` becomes ``package/Name``)."""
+    found = set()
+    for match in _FIELD_TYPE.finditer(text):
+        name = match.group(1)
+        if name not in _PRIMITIVE_NAMES:
+            found.add(name if "/" in name else f"{package}/{name}")
+    return found
 
 
 def _dependencies(cls: type) -> list[type]:

@@ -128,3 +128,13 @@ def test_python_dash_m_actors_interface_show(run_module):
     ]
     missing = run_module("actors", "interface", "show", "std_msgs/msg/Nope")
     assert missing.returncode == 2 and missing.stderr.count("\n") == 1
+
+
+def test_show_hash_prints_the_rihs01_hash(capsys):
+    # ROS 2 Kilted's hashes (std_msgs/msg/String.json, and rosidl's generator for AddTwoInts)
+    code, out, _ = run(capsys, "show", "std_msgs/msg/String", "--hash")
+    assert (code, out) == (0, "RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18\n")
+    code, out, _ = run(capsys, "show", "example_interfaces/srv/AddTwoInts", "--hash")
+    assert (code, out) == (0, "RIHS01_e118de6bf5eeb66a2491b5bda11202e7b68f198d6f67922cf30364858239c81a\n")
+    code, _, err = run(capsys, "show", "nope_msgs/msg/Nope", "--hash")
+    assert code == 2 and "unknown interface type" in err

@@ -14,7 +14,7 @@ from actors.errors import MessageValidationError, UnknownInterfaceError
 from interfaces.builtin_interfaces.msg import Time
 from interfaces.example_interfaces.action import Fibonacci
 from interfaces.example_interfaces.srv import AddTwoInts
-from interfaces.geometry_msgs.msg import PoseStamped, Quaternion, Twist, Vector3
+from interfaces.geometry_msgs.msg import Point, Pose, PoseStamped, Quaternion, Twist, Vector3
 from interfaces.rcl_interfaces.msg import Log, ParameterDescriptor, ParameterValue
 from interfaces.sensor_msgs.msg import Imu
 from interfaces.std_msgs.msg import Bool, Header, String, UInt8
@@ -294,21 +294,20 @@ def test_json_schema_titles_types_with_ros_names():
     assert (imu["minItems"], imu["maxItems"]) == (9, 9)
 
 
-def test_definition_text_is_mcap_ros2msg():
-    text = codec.definition_text(PoseStamped)
-    sections = text.split("=" * 80 + "\n")
-    assert sections[0] == PoseStamped.__ros_definition__
-    names = [section.split("\n", 1)[0] for section in sections[1:]]
-    assert names == [
-        "MSG: std_msgs/msg/Header",
-        "MSG: builtin_interfaces/msg/Time",
-        "MSG: geometry_msgs/msg/Pose",
-        "MSG: geometry_msgs/msg/Point",
-        "MSG: geometry_msgs/msg/Quaternion",
-    ]
-    assert sections[2] == "MSG: builtin_interfaces/msg/Time\n" + Time.__ros_definition__
+def test_definition_text_is_what_rosbag2_writes():
+    # rosbag2's LocalMessageDefinitionSource: names as written, sorted per definition, depth first, once.
+    rule = "\n" + "=" * 80 + "\nMSG: "
+    expected = (
+        PoseStamped.__ros_definition__
+        + rule + "geometry_msgs/Pose\n" + Pose.__ros_definition__
+        + rule + "geometry_msgs/Point\n" + Point.__ros_definition__
+        + rule + "geometry_msgs/Quaternion\n" + Quaternion.__ros_definition__
+        + rule + "std_msgs/Header\n" + Header.__ros_definition__
+        + rule + "builtin_interfaces/Time\n" + Time.__ros_definition__
+    )
+    assert codec.definition_text(PoseStamped) == expected
     odometry = codec.definition_text("nav_msgs/msg/Odometry")
-    assert odometry.count("MSG: geometry_msgs/msg/Vector3\n") == 1
+    assert odometry.count("MSG: geometry_msgs/Vector3\n") == 1
     assert codec.definition_text(String) == "string data\n"
 
 

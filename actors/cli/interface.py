@@ -22,6 +22,7 @@ def register(subparsers: Any) -> None:
     show = verbs.add_parser("show", help="print a type's definition, nested types expanded")
     show.add_argument("type", metavar="TYPE", help="pkg/msg/Name, pkg/srv/Name, pkg/action/Name or pkg/Name")
     show.add_argument("--no-comments", action="store_true", help="leave out comments and blank lines")
+    show.add_argument("--hash", action="store_true", help="print the type's RIHS01 hash (REP 2016) instead")
     show.add_argument("--root", action="append", default=[], type=Path, help=root_help)
     show.set_defaults(func=show_type)
 
@@ -53,6 +54,9 @@ def show_type(args: argparse.Namespace) -> None:
 
     _register_roots(args.root)
     cls = codec.get_type(args.type)
+    if args.hash:
+        print(codec.type_hash(cls))
+        return
     comments = not args.no_comments
     if hasattr(cls, "Goal"):
         parts = [cls.Goal, cls.Result, cls.Feedback]

@@ -1,0 +1,1 @@
+"""The service_msgs interface package: ``interfaces.service_msgs.msg``, ``.srv`` and ``.action``."""
