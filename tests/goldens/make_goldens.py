@@ -33,7 +33,7 @@ sys.path[:0] = [str(HERE.parent.parent), str(HERE.parent)]
 from actors import codec  # noqa: E402
 from actors.idl import shipped_root  # noqa: E402
 from goldens.ros import rclpy_class, same_wire, to_rclpy  # noqa: E402
-from goldens.values import RandomPick, message, shipped_messages  # noqa: E402
+from goldens.values import RandomPick, message, shipped_messages, shipped_types  # noqa: E402
 
 SEEDS = (1, 2, 3)
 ROS_PACKAGES = (
@@ -103,7 +103,7 @@ def hash_goldens() -> dict[str, str]:
     """ROS's hash of every shipped type and of every type their descriptions reference."""
     hashes: dict[str, str] = {}
     generated: set[str] = set()
-    for name in codec.list_types():
+    for name in shipped_types():
         found = installed_hashes(name)
         if found is None:
             package = name.split("/")[0]

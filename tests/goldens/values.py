@@ -15,10 +15,10 @@ import struct
 from typing import Any, Protocol
 
 from actors import codec
-from actors.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType
+from actors.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType, shipped_root
 from actors.layout import MessageLayout, layout
 
-__all__ = ["Pick", "RandomPick", "DrawPick", "message", "shipped_messages", "float32"]
+__all__ = ["Pick", "RandomPick", "DrawPick", "message", "shipped_types", "shipped_messages", "float32"]
 
 MAX_ITEMS = 4  # items in an unbounded sequence: enough for alignment, small goldens
 ALPHABET = "abcXYZ019 _-/:é✓😀"  # ASCII, 2-, 3- and 4-byte UTF-8
@@ -122,10 +122,17 @@ def _item(type_: FieldType, nested: MessageLayout | None, pick: Pick) -> Any:
     return pick.integer(*INTEGER_RANGES[type_.base])
 
 
+def shipped_types() -> list[str]:
+    """Every message, service and action type of the shipped root (not of roots tests register)."""
+    root = shipped_root()
+    return sorted(f"{p.parent.parent.name}/{p.parent.name}/{p.stem}" for p in root.glob("*/*/*.*")
+                  if p.suffix.lstrip(".") == p.parent.name)
+
+
 def shipped_messages() -> list[str]:
     """Every shipped message type with a CDR form: messages, services' parts, actions' wire types."""
     names = []
-    for name in codec.list_types():
+    for name in shipped_types():
         cls = codec.get_type(name)
         if "/srv/" in name:
             names += [cls.Request.__ros_type__, cls.Response.__ros_type__]
