@@ -80,12 +80,12 @@ def encode(msg: Any, *, padding: int = 0) -> bytes:
     encoder = _encoders.get((cls, padding))
     if encoder is None:
         encoder = _encoders[cls, padding] = _compile_encoder(layout(cls), padding, top=True)
-    buf = bytearray(HEADER)
+    buf = _Buffer(HEADER)
     try:
         encoder(buf, msg)
     except Exception as exc:  # anything a bad value makes struct, array or str raise
         raise _encode_error(layout(cls), msg, exc) from None
-    return bytes(buf)
+    return buf.result()
 
 
 def decode(data: bytes | bytearray | memoryview, cls: type[T]) -> T:
@@ -128,6 +128,37 @@ def min_size(lay: MessageLayout) -> int:
     return total
 
 
+class _Buffer(bytearray):
+    """The bytes being encoded; large arrays are kept aside as chunks instead of copied in.
+
+    Growing a bytearray by a megabyte and copying it into ``bytes`` costs
+    milliseconds (fresh pages each time); ``b"".join`` of the pieces costs
+    one copy.  After a spill the buffer restarts with ``skip`` dummy bytes so
+    that its length stays congruent to the true offset modulo 8, which is all
+    alignment reads from it.
+    """
+
+    __slots__ = ("chunks", "skip")
+
+    def __init__(self, head: bytes) -> None:
+        super().__init__(head)
+        self.chunks: list[bytes] = []
+        self.skip = 0
+
+    def spill(self, data: Any) -> None:
+        """Append ``data`` (a large bytes-like object) without copying it into the buffer."""
+        self.chunks += (bytes(self[self.skip :]), data)
+        self.skip = (len(self) + len(data)) & 7
+        self[:] = bytes(self.skip)
+
+    def result(self) -> bytes:
+        """Everything written, as one bytes object."""
+        if not self.chunks:
+            return bytes(self)
+        return b"".join([*self.chunks, self[self.skip :]])
+
+
+_SPILL = 1 << 16  # arrays longer than this many bytes are spilled rather than copied into the buffer
 _encoders: dict[tuple[type, int], Callable[[bytearray, Any], None]] = {}
 _decoders: dict[type, tuple[Callable[..., Any], Callable[..., Any]]] = {}
 _element_encoders: dict[tuple[type, int], Callable[[bytearray, Any], None]] = {}
@@ -235,6 +266,7 @@ def _compile_encoder(lay: MessageLayout, padding: int, *, top: bool) -> Callable
     src.namespace.update(
         PAD=tuple(bytes([padding]) * n for n in range(8)),
         U32=struct.Struct("<I").pack,
+        pack=struct.pack,
         padding=padding,
     )
     _encode_fields(src, lay, "m", "$")
@@ -333,7 +365,8 @@ def _encode_array(src: _Source, type_: FieldType, value: str, nested: MessageLay
         src.phase = None  # each item moves it
         _encode_string(src, type_, "e", 2)
     elif type_.base in OCTETS:
-        src.emit("buf += v")
+        src.emit(f"if len(v) > {_SPILL}: buf.spill(v)")
+        src.emit("else: buf += v")
     elif type_.base == "bool":
         src.emit("buf += bytes(map(bool, v))")
     else:  # a sequence of numbers (fixed arrays of them are part of runs)
@@ -341,8 +374,9 @@ def _encode_array(src: _Source, type_: FieldType, value: str, nested: MessageLay
         src.emit("if v:")
         src.phase = None
         src.align(size, 2)
-        swap = "" if _LITTLE_HOST else "; a.byteswap()"
-        src.emit(f"a = array({code!r}, v){swap}; buf += a.tobytes()", 2)
+        src.emit(f"a = pack(f'<{{len(v)}}{code}', *v)", 2)
+        src.emit(f"if len(a) > {_SPILL}: buf.spill(a)", 2)
+        src.emit("else: buf += a", 2)
     src.phase = None
 
 
@@ -480,9 +514,11 @@ def _decode_array(src: _Source, type_: FieldType, target: str, nested: MessageLa
     elif type_.base == "bool":
         src.emit(f"{target} = list(map(bool, d[pos:end])); pos = end", 2)
     else:
-        src.emit(f"a = array({code!r}); a.frombytes(d[pos:end]); pos = end", 2)
-        src.emit("if swap: a.byteswap()", 2)
-        src.emit(f"{target} = a.tolist()", 2)
+        if src.namespace["swap"]:
+            src.emit(f"a = array({code!r}); a.frombytes(d[pos:end]); a.byteswap()", 2)
+            src.emit(f"{target} = a.tolist(); pos = end", 2)
+        else:  # the host's byte order: read the bytes in place
+            src.emit(f"{target} = memoryview(d)[pos:end].cast({code!r}).tolist(); pos = end", 2)
     src.emit("else:")
     src.emit(f"{target} = {'b' + chr(34) * 2 if type_.base in OCTETS else '[]'}", 2)
     src.phase = None

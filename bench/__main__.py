@@ -12,7 +12,7 @@ import time
 from collections.abc import Callable, Sequence
 from typing import NamedTuple
 
-from bench import memory, services, sim, startup, throughput, timer, topics_scale
+from bench import cdr, memory, services, sim, startup, throughput, timer, topics_scale
 from bench.harness import Result, table
 from bench.report import write
 from bench.targets import check
@@ -35,6 +35,7 @@ SCENARIOS = (
     Scenario("f", "memory", memory.run),
     Scenario("g", "sim", sim.run),
     Scenario("h", "topics", topics_scale.run),
+    Scenario("i", "cdr", cdr.run),
 )
 
 

@@ -69,6 +69,19 @@ def _memory(get: Lookup) -> tuple[bool, str] | None:
     return small and linear, f"{figures} KiB/node at 100 / 1,000 / 10,000{'' if linear else ', not linear'}"
 
 
+def _cdr(baseline: str, at_least: float) -> Callable[[Lookup], tuple[bool, str] | None]:
+    """Every CDR sample and verb at least ``at_least`` times ``baseline``; shows the worst."""
+    from bench.cdr import worst_ratio
+
+    def measure(get: Lookup) -> tuple[bool, str] | None:
+        found = worst_ratio(get, baseline)
+        if found is None:
+            return None
+        return found[0] >= at_least, f"worst {found[0]:.2f}× ({found[1]})"
+
+    return measure
+
+
 SEQ, CONC = "c. service sequential", "c. service 100 callers"
 TARGETS = (
     Target("a", "one-way ≥ 1.5× the bare queue", _ratio("a. one-way", "actors", "a. one-way", "asyncio.Queue", 1.5)),
@@ -89,10 +102,13 @@ TARGETS = (
            _at_most("e. first message, graph.toml", "actors, less the first period", 0.5, "s")),
     Target("e", "1,000 nodes spawned ≤ 1 s", _at_most("e. spawn 1,000 nodes", "actors", 1.0, "s")),
     Target("f", "≤ 20 KB per idle node, linear", _memory),
+    Target("i", "CDR encode and decode ≥ rclpy's serialize/deserialize (Twist, LaserScan, Odometry, Image)",
+           _cdr("rclpy", 1)),
+    Target("i", "CDR encode and decode ≥ 2× rosbags' serializer (the same four)", _cdr("rosbags", 2)),
 )
 
 
-def check(results: Sequence[Result], scenarios: str = "abcdefgh") -> str:
+def check(results: Sequence[Result], scenarios: str = "abcdefghi") -> str:
     """A Markdown table of the targets of ``scenarios`` (letters): what was measured, whether it is met."""
     by_case = {(r.scenario, r.case): r for r in results}
     lines = ["| scenario | target | measured | met |", "|---|---|---|---|"]

@@ -1,0 +1,172 @@
+"""CDR speed: encode and decode Twist, a 360-beam LaserScan, an Odometry and a 640×480 rgb8 Image.
+
+Run: ``python -m bench.cdr [--quick]`` (or scenario ``i`` of ``python -m bench``).
+Three codecs side by side, in one run: actors' generated CDR
+(``codec.encode_cdr``/``decode_cdr``), rosbags' serializer
+(``Typestore.serialize_cdr``/``deserialize_cdr``, ``pip install rosbags``)
+and rclpy's ``serialize_message``/``deserialize_message`` (its C typesupport
+called from Python; measured in a child process, see :mod:`bench.ros`).
+Each side's message is built by decoding actors' bytes, so all three handle
+the same values.  Each sample times a loop; the table shows the median µs
+per message and the ratios to rclpy and rosbags (higher is better).
+"""
+
+from __future__ import annotations
+
+import importlib
+import json
+import sys
+import time
+from collections.abc import Callable
+from typing import Any
+
+from actors import codec
+from bench import codec as codec_bench
+from bench import ros
+from bench.harness import Result, repeat, run_child, standalone
+from interfaces.geometry_msgs.msg import Point, Pose, PoseWithCovariance, Quaternion, TwistWithCovariance
+from interfaces.nav_msgs.msg import Odometry
+from interfaces.sensor_msgs.msg import Image
+from interfaces.std_msgs.msg import Header
+
+__all__ = ["samples", "run"]
+
+SCENARIO = "i. CDR"
+ROSBAGS_HINT = "rosbags: not installed — pip install -e '.[bench-ros]'"
+
+
+def samples() -> dict[str, Any]:
+    """The messages measured, by name (the codec benchmark's Twist and LaserScan, and two more)."""
+    base = codec_bench.samples()
+    header = Header(frame_id="odom")
+    odometry = Odometry(
+        header=header,
+        child_frame_id="base_footprint",
+        pose=PoseWithCovariance(
+            pose=Pose(position=Point(x=1.0, y=2.0), orientation=Quaternion(z=0.38, w=0.92)),
+            covariance=[0.01 * i for i in range(36)],
+        ),
+        twist=TwistWithCovariance(twist=base["Twist"], covariance=[0.02 * i for i in range(36)]),
+    )
+    width, height = 640, 480
+    image = Image(
+        header=Header(frame_id="camera"), height=height, width=width, encoding="rgb8", step=3 * width,
+        data=bytes(range(256)) * (3 * width * height // 256),
+    )
+    return {**base, "Odometry": odometry, "Image 640×480 rgb8": image}
+
+
+def loops_for(name: str, quick: bool) -> int:
+    """Calls per sample: fewer for the 0.9 MB image."""
+    loops = 50 if name.startswith("Image") else 2000
+    return max(1, loops // 20) if quick else loops
+
+
+def _micros(fn: Callable[[], object], loops: int) -> float:
+    start = time.perf_counter()
+    for _ in range(loops):
+        fn()
+    return (time.perf_counter() - start) / loops * 1e6
+
+
+def _measure(encode: Callable[[], bytes], decode: Callable[[], object], loops: int, reps: int) -> dict[str, list[float]]:
+    return {verb: repeat(lambda: _micros(fn, loops), reps) for verb, fn in (("encode", encode), ("decode", decode))}
+
+
+def _same(data: bytes, msg: Any) -> bool:
+    """Whether ``data`` holds ``msg``'s values (float32 fields rounded as CDR carries them)."""
+    return codec.encode_cdr(codec.decode_cdr(data, type(msg))) == codec.encode_cdr(msg)
+
+
+def measure_actors(name: str, msg: Any, loops: int, reps: int) -> dict[str, list[float]]:
+    """actors' CDR encode and decode of ``msg``."""
+    data, cls = codec.encode_cdr(msg), type(msg)
+    assert _same(data, msg)
+    return _measure(lambda: codec.encode_cdr(msg), lambda: codec.decode_cdr(data, cls), loops, reps)
+
+
+def measure_rosbags(name: str, msg: Any, loops: int, reps: int) -> dict[str, list[float]] | str:
+    """rosbags' CDR serializer on the same message, or why it cannot run."""
+    try:
+        from rosbags.typesys import Stores, get_typestore
+    except ImportError:
+        return ROSBAGS_HINT
+    store = get_typestore(Stores.ROS2_KILTED)
+    ros_type = msg.__ros_type__
+    theirs = store.deserialize_cdr(codec.encode_cdr(msg), ros_type)
+    data = store.serialize_cdr(theirs, ros_type)
+    assert _same(data, msg)
+    return _measure(lambda: store.serialize_cdr(theirs, ros_type), lambda: store.deserialize_cdr(data, ros_type), loops, reps)
+
+
+def measure_rclpy(quick: bool, reps: int) -> dict[str, dict[str, list[float]]] | str:
+    """rclpy's serialize/deserialize of every sample, measured in a child process, or why not."""
+    why = ros.unavailable()
+    if why is not None:
+        return why
+    try:
+        return run_child(["-m", "bench.cdr", "--rclpy", json.dumps({"quick": quick, "reps": reps})], ros.ros_env())
+    except Exception as exc:  # noqa: BLE001 - say why and go on with the other rows
+        return f"rclpy: failed — {exc}"
+
+
+def _rclpy_child(args: dict[str, Any]) -> None:
+    """In the child: rclpy's rows, printed as one JSON line."""
+    from rclpy.serialization import deserialize_message, serialize_message
+
+    out = {}
+    for name, msg in samples().items():
+        pkg, kind, type_name = msg.__ros_type__.split("/")
+        cls = getattr(importlib.import_module(f"{pkg}.{kind}"), type_name)
+        theirs = deserialize_message(codec.encode_cdr(msg), cls)
+        data = serialize_message(theirs)
+        assert _same(data, msg)
+        loops = loops_for(name, args["quick"])
+        out[name] = _measure(lambda: serialize_message(theirs), lambda: deserialize_message(data, cls), loops, args["reps"])
+    print(json.dumps(out))
+
+
+def run(quick: bool) -> list[Result]:
+    """The CDR rows of every sample: actors, rosbags and rclpy, encode and decode."""
+    reps = 3 if quick else 7
+    rclpy_rows = measure_rclpy(quick, reps)
+    results = []
+    for name, msg in samples().items():
+        loops = loops_for(name, quick)
+        sides: dict[str, dict[str, list[float]] | str] = {
+            "actors": measure_actors(name, msg, loops, reps),
+            "rosbags": measure_rosbags(name, msg, loops, reps),
+            "rclpy": rclpy_rows if isinstance(rclpy_rows, str) else rclpy_rows[name],
+        }
+        size = len(codec.encode_cdr(msg))
+        for verb in ("encode", "decode"):
+            for side, rows in sides.items():
+                result = Result(f"{SCENARIO} {name}", f"{side} {verb}", "µs/msg", [], higher_better=False)
+                if isinstance(rows, str):
+                    result.note = rows
+                else:
+                    result.samples = rows[verb]
+                    result.note = f"{1e6 / result.median:,.0f} msg/s, {size:,} B"
+                if side == "actors":
+                    result.baselines = {"rclpy": f"rclpy {verb}", "rosbags": f"rosbags {verb}"}
+                results.append(result)
+    return results
+
+
+def worst_ratio(get: Callable[[str, str], Result | None], baseline: str) -> tuple[float, str] | None:
+    """The smallest ratio of actors to ``baseline`` over every sample and verb, and where it is."""
+    found = []
+    for name in samples():
+        for verb in ("encode", "decode"):
+            ours, theirs = get(f"{SCENARIO} {name}", f"actors {verb}"), get(f"{SCENARIO} {name}", f"{baseline} {verb}")
+            if ours is None or theirs is None or not ours.samples or not theirs.samples:
+                return None
+            found.append((ours.ratio(theirs), f"{name} {verb}"))
+    return min(found) if found else None
+
+
+if __name__ == "__main__":
+    if len(sys.argv) == 3 and sys.argv[1] == "--rclpy":
+        _rclpy_child(json.loads(sys.argv[2]))
+    else:
+        standalone(run, __doc__, "fewer loops, for a smoke run")
