@@ -35,6 +35,7 @@ at no cost to the fast path.
 
 from __future__ import annotations
 
+import functools
 import struct
 import sys
 from array import array
@@ -158,6 +159,8 @@ class _Buffer(bytearray):
         return b"".join([*self.chunks, self[self.skip :]])
 
 
+# The Struct of a sequence of n numbers ("<360f"): compiled once for the lengths that recur.
+_sequence_struct = functools.lru_cache(maxsize=256)(struct.Struct)
 _SPILL = 1 << 16  # arrays longer than this many bytes are spilled rather than copied into the buffer
 _encoders: dict[tuple[type, int], Callable[[bytearray, Any], None]] = {}
 _decoders: dict[type, tuple[Callable[..., Any], Callable[..., Any]]] = {}
@@ -266,7 +269,7 @@ def _compile_encoder(lay: MessageLayout, padding: int, *, top: bool) -> Callable
     src.namespace.update(
         PAD=tuple(bytes([padding]) * n for n in range(8)),
         U32=struct.Struct("<I").pack,
-        pack=struct.pack,
+        ST=_sequence_struct,
         padding=padding,
     )
     _encode_fields(src, lay, "m", "$")
@@ -374,7 +377,7 @@ def _encode_array(src: _Source, type_: FieldType, value: str, nested: MessageLay
         src.emit("if v:")
         src.phase = None
         src.align(size, 2)
-        src.emit(f"a = pack(f'<{{len(v)}}{code}', *v)", 2)
+        src.emit(f"a = ST(f'<{{len(v)}}{code}').pack(*v)", 2)
         src.emit(f"if len(a) > {_SPILL}: buf.spill(a)", 2)
         src.emit("else: buf += a", 2)
     src.phase = None
@@ -385,7 +388,8 @@ def _encode_array(src: _Source, type_: FieldType, value: str, nested: MessageLay
 
 def _compile_decoder(lay: MessageLayout, endian: str, *, top: bool) -> Callable[..., Any]:
     src = _Source(lay, top, "pos += {}", "pos += (4 - pos) & {}")
-    src.namespace.update(U32=struct.Struct(endian + "I").unpack_from, endian=endian, swap=(endian == "<") != _LITTLE_HOST)
+    src.namespace.update(U32=struct.Struct(endian + "I").unpack_from, ST=_sequence_struct, endian=endian,
+                         swap=(endian == "<") != _LITTLE_HOST)
     constructor = _decode_fields(src, lay, "$")
     _flush_decode(src)
     for token, value in src.values.items():
@@ -514,11 +518,7 @@ def _decode_array(src: _Source, type_: FieldType, target: str, nested: MessageLa
     elif type_.base == "bool":
         src.emit(f"{target} = list(map(bool, d[pos:end])); pos = end", 2)
     else:
-        if src.namespace["swap"]:
-            src.emit(f"a = array({code!r}); a.frombytes(d[pos:end]); a.byteswap()", 2)
-            src.emit(f"{target} = a.tolist(); pos = end", 2)
-        else:  # the host's byte order: read the bytes in place
-            src.emit(f"{target} = memoryview(d)[pos:end].cast({code!r}).tolist(); pos = end", 2)
+        src.emit(f"{target} = list(ST(f'{src.namespace['endian']}{{n}}{code}').unpack_from(d, pos)); pos = end", 2)
     src.emit("else:")
     src.emit(f"{target} = {'b' + chr(34) * 2 if type_.base in OCTETS else '[]'}", 2)
     src.phase = None
