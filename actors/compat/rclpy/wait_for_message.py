@@ -1,0 +1,51 @@
+"""``rclpy.wait_for_message``: wait for one message on a topic without spinning."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from actors.compat.activity import Waiter
+from actors.compat.dispatch import ScriptNode
+from actors.compat.rclpy.subscription import Subscription
+from actors.node import Node as NativeNode
+
+__all__ = ["wait_for_message"]
+
+
+def wait_for_message(
+    msg_type: type, node: ScriptNode, topic: str, *, qos_profile: Any = 1, time_to_wait: float = -1
+) -> tuple[bool, Any]:
+    """``(True, msg)`` with the next message on ``topic``; ``(False, None)`` after ``time_to_wait``
+    seconds of runtime clock (negative: no limit) or when the context shuts down.
+
+    A subscription of its own, outside any executor, lives for the wait only.
+    """
+    session = node._rclpy.session
+    context = node.context
+    waiter = Waiter(session.activity)
+    timed_out = False
+
+    def time_up() -> None:
+        nonlocal timed_out
+        timed_out = True
+        waiter.wake()
+
+    subscription = Subscription(node, msg_type, lambda _msg: None, None)
+    subscription._notify = waiter.wake
+    node._create(subscription, NativeNode.create_subscription, msg_type, topic, subscription._catch, qos_profile)
+    context.add_waker(waiter)
+    timer = session.wake_after(time_to_wait, time_up) if time_to_wait >= 0 else None
+    try:
+        while True:
+            waiter.clear()
+            with session.lock:
+                if subscription._queue:
+                    return True, subscription._queue.popleft()[0]
+            if timed_out or not context.ok():
+                return False, None
+            waiter.wait()
+    finally:
+        if timer is not None:
+            session.cancel(timer)
+        if session.running:
+            session.call(NativeNode.destroy_subscription, node, subscription._native)
