@@ -89,6 +89,7 @@ def test_a_callback_that_raises_ends_the_script_with_its_traceback():
         (["nowhere.py"], "error: nowhere.py: no such script"),
         ([script("exits.py"), "--ros-args", "-r", "bad"], "error: --ros-args: -r 'bad': expected [node:]name:=value"),
         (["--graph", "nowhere.toml", script("exits.py")], "nowhere.toml"),
+        (["--duration", "-1", script("exits.py")], "error: --duration must be > 0 seconds, got -1.0"),
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(args, problem):

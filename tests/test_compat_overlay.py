@@ -53,7 +53,12 @@ def test_a_module_the_overlay_lacks_is_named_in_the_error():
         importlib.import_module("rclpy.lifecycle")
 
 
-def test_installs_nest_and_uninstall_removes_every_alias():
+def _shadowable() -> dict[str, object]:
+    return {n: m for n, m in sys.modules.items() if n.split(".")[0] in ("rclpy", "std_msgs")}
+
+
+def test_installs_nest_and_uninstall_puts_back_what_was_there():
+    before = _shadowable()  # a real rclpy or std_msgs, if another test imported them
     install()
     install()
     uninstall()
@@ -62,7 +67,7 @@ def test_installs_nest_and_uninstall_removes_every_alias():
     importlib.import_module("std_msgs.msg")
     uninstall()
     assert not installed()
-    assert not any(name == "rclpy" or name.startswith(("rclpy.", "std_msgs")) for name in sys.modules)
+    assert _shadowable() == before
     uninstall()  # one too many does nothing
 
 

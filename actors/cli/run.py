@@ -20,23 +20,13 @@ def register(groups: Any) -> None:
         ),
     )
     parser.add_argument("--clock", choices=("wall", "virtual"), help="the runtime clock (default: wall)")
-    parser.add_argument("--duration", type=_seconds, help="stop after this many seconds of runtime clock")
+    parser.add_argument("--duration", type=float, help="stop after this many seconds of runtime clock")
     parser.add_argument("--graph", metavar="GRAPH.toml", help="run the script beside this graph's nodes")
     parser.add_argument("--log-level", choices=("debug", "info", "warn", "error", "fatal"),
                         help="the console's level (default: info)")
     parser.add_argument("script", help="the rclpy program, e.g. talker.py")
     parser.add_argument("args", nargs=argparse.REMAINDER, help="the program's arguments")
     parser.set_defaults(func=_run)
-
-
-def _seconds(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a number of seconds: {text!r}") from None
-    if value <= 0:
-        raise argparse.ArgumentTypeError(f"duration must be > 0, got {value}")
-    return value
 
 
 def _run(args: argparse.Namespace) -> int:

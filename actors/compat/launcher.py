@@ -66,6 +66,9 @@ def run_script(
     if not path.is_file():
         print(f"error: {script}: no such script", file=sys.stderr)
         return 2
+    if duration is not None and not duration > 0:
+        print(f"error: --duration must be > 0 seconds, got {duration}", file=sys.stderr)
+        return 2
     try:
         parse(argv)
         loaded = load_graph(graph) if graph else None

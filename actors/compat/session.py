@@ -210,13 +210,35 @@ class Session:
 
     def sleep(self, seconds: float) -> None:
         """Wait ``seconds`` of runtime clock (virtual under virtual time), waiting, not busy."""
-        waiter = Waiter(self.activity)
-        handle = self.wake_after(seconds, waiter.wake)
+        self.wait_until(lambda: False, seconds)
+
+    def wait_until(self, done: Callable[[], Any], timeout: float | None, waiter: Waiter | None = None) -> Any:
+        """Wait until ``done()`` (checked with :attr:`lock` held) returns something true; return it.
+
+        ``waiter`` is the one whoever makes ``done()`` true wakes (made here if
+        None: then only the timeout wakes it).  After ``timeout`` seconds of
+        runtime clock (None: no limit), returns what ``done()`` returns then.
+        """
+        waiter = Waiter(self.activity) if waiter is None else waiter
+        expired = False
+
+        def time_up() -> None:
+            nonlocal expired
+            expired = True
+            waiter.wake()
+
+        timer = self.wake_after(timeout, time_up) if timeout is not None else None
         try:
-            waiter.wait()
-        except BaseException:
-            self.cancel(handle)
-            raise
+            while True:
+                waiter.clear()
+                with self.lock:
+                    result = done()
+                if result or expired:
+                    return result
+                waiter.wait()
+        finally:
+            if timer is not None and not expired:
+                self.cancel(timer)
 
 
 async def _as_coroutine(async_fn: Callable[..., Awaitable[T]], *args: Any) -> T:

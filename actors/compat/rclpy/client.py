@@ -88,15 +88,8 @@ class Client(WorkSource, NativeProxy):
         waiter = Waiter(self._session.activity)
         future = self.call_async(request)
         future._add_resumer(waiter.wake)
-        timer = None
-        if timeout_sec is not None and timeout_sec >= 0:
-            timer = self._session.wake_after(timeout_sec, waiter.wake)
-        try:
-            waiter.wait()
-        finally:
-            if timer is not None:
-                self._session.cancel(timer)
-        if not future.done():
+        timeout = timeout_sec if timeout_sec is not None and timeout_sec >= 0 else None
+        if not self._session.wait_until(lambda: not future._pending(), timeout, waiter):
             self.remove_pending_request(future)
             raise TimeoutError()
         return future.result()

@@ -177,6 +177,11 @@ class Executor:
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
         """Wait for one callback (``timeout_sec`` at most; None waits forever) and run it."""
+        self._spin_once_impl(timeout_sec)
+
+    def _spin_once_impl(
+        self, timeout_sec: float | TimeoutObject | None = None, condition: Callable[[], bool] = lambda: False
+    ) -> None:
         raise NotImplementedError()
 
     def spin_until_future_complete(self, future: Future[Any], timeout_sec: float | None = None) -> None:
@@ -207,7 +212,7 @@ class Executor:
     def _spin_once_until_future_complete(
         self, future: Future[Any], timeout_sec: float | TimeoutObject | None = None
     ) -> None:
-        raise NotImplementedError()
+        self._spin_once_impl(timeout_sec, future.done)
 
     # -- handing out work -------------------------------------------------------------
 
@@ -233,42 +238,28 @@ class Executor:
         ConditionReachedException when ``condition()`` becomes true.
         """
         session = self._session
-        timeout = _seconds(timeout_sec)
         waiter = Waiter(session.activity)
-        timed_out = False
-        timer = None
+        timeout = _seconds(timeout_sec)
 
-        def time_up() -> None:
-            nonlocal timed_out
-            with session.lock:
-                timed_out = True
-            waiter.wake()
+        def ready() -> tuple[Task[None], WorkSource | None, Node | None] | None:
+            if self._is_shutdown:
+                raise ShutdownException()
+            if not self._context.ok():
+                raise ExternalShutdownException()
+            if condition():
+                raise ConditionReachedException()
+            return self._next(nodes) if self._has_capacity() else None
 
         with session.lock:
             self._waiters.add(waiter)
         try:
-            while True:
-                waiter.clear()
-                with session.lock:
-                    if self._is_shutdown:
-                        raise ShutdownException()
-                    if not self._context.ok():
-                        raise ExternalShutdownException()
-                    if condition():
-                        raise ConditionReachedException()
-                    work = self._next(nodes) if self._has_capacity() else None
-                    if work is not None:
-                        return work
-                    if timeout == 0 or timed_out:
-                        raise TimeoutException()
-                if timeout is not None and timer is None:
-                    timer = session.wake_after(timeout, time_up)
-                waiter.wait()
+            work = session.wait_until(ready, timeout, waiter)
         finally:
             with session.lock:
                 self._waiters.discard(waiter)
-            if timer is not None:
-                session.cancel(timer)
+        if work is None:
+            raise TimeoutException()
+        return work
 
     def _next(self, nodes: list[Node] | None) -> tuple[Task[None], WorkSource | None, Node | None] | None:
         # With the session's lock held.
@@ -324,33 +315,16 @@ class Executor:
         return task, entity, node
 
     def _wait_until(self, done: Callable[[], bool], timeout: float | None) -> bool:
-        """Wait (as a waiter, woken by :meth:`wake`) until ``done()``; False after ``timeout``."""
+        """Wait (woken by :meth:`wake`) until ``done()``; False after ``timeout`` seconds."""
         session = self._session
         waiter = Waiter(session.activity)
-        timed_out = False
-
-        def time_up() -> None:
-            nonlocal timed_out
-            timed_out = True
-            waiter.wake()
-
-        timer = session.wake_after(timeout, time_up) if timeout is not None else None
         with session.lock:
             self._waiters.add(waiter)
         try:
-            while True:
-                waiter.clear()
-                with session.lock:
-                    if done():
-                        return True
-                    if timed_out:
-                        return False
-                waiter.wait()
+            return bool(session.wait_until(done, timeout, waiter))
         finally:
             with session.lock:
                 self._waiters.discard(waiter)
-            if timer is not None:
-                session.cancel(timer)
 
 
 class SingleThreadedExecutor(Executor):
@@ -367,14 +341,6 @@ class SingleThreadedExecutor(Executor):
         exception = handler.exception()
         if exception is not None:
             raise exception
-
-    def spin_once(self, timeout_sec: float | None = None) -> None:
-        self._spin_once_impl(timeout_sec)
-
-    def _spin_once_until_future_complete(
-        self, future: Future[Any], timeout_sec: float | TimeoutObject | None = None
-    ) -> None:
-        self._spin_once_impl(timeout_sec, future.done)
 
 
 class MultiThreadedExecutor(Executor):
@@ -423,14 +389,6 @@ class MultiThreadedExecutor(Executor):
             if future.done():
                 self._futures.remove(future)
                 future.result()  # raise what the callback raised
-
-    def spin_once(self, timeout_sec: float | None = None) -> None:
-        self._spin_once_impl(timeout_sec)
-
-    def _spin_once_until_future_complete(
-        self, future: Future[Any], timeout_sec: float | TimeoutObject | None = None
-    ) -> None:
-        self._spin_once_impl(timeout_sec, future.done)
 
     def shutdown(self, timeout_sec: float | None = None, *, wait_for_threads: bool = True) -> bool:
         """Stop handing out work; with ``wait_for_threads``, wait for the running callbacks (not

@@ -134,12 +134,9 @@ class Rate:
             start = self._ticks
             self._waiters.add(waiter)
         try:
-            while True:
-                waiter.clear()
-                with self._session.lock:
-                    if self._ticks != start or self._is_destroyed or not self._context.ok():
-                        break
-                waiter.wait()
+            self._session.wait_until(
+                lambda: self._ticks != start or self._is_destroyed or not self._context.ok(), None, waiter
+            )
         finally:
             with self._session.lock:
                 self._waiters.discard(waiter)

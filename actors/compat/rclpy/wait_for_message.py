@@ -23,29 +23,17 @@ def wait_for_message(
     session = node._rclpy.session
     context = node.context
     waiter = Waiter(session.activity)
-    timed_out = False
-
-    def time_up() -> None:
-        nonlocal timed_out
-        timed_out = True
-        waiter.wake()
-
     subscription = Subscription(node, msg_type, lambda _msg: None, None)
     subscription._notify = waiter.wake
     node._create(subscription, NativeNode.create_subscription, msg_type, topic, subscription._catch, qos_profile)
     context.add_waker(waiter)
-    timer = session.wake_after(time_to_wait, time_up) if time_to_wait >= 0 else None
+
+    def arrived() -> Any:
+        return subscription._queue.popleft() if subscription._queue else not context.ok()
+
     try:
-        while True:
-            waiter.clear()
-            with session.lock:
-                if subscription._queue:
-                    return True, subscription._queue.popleft()[0]
-            if timed_out or not context.ok():
-                return False, None
-            waiter.wait()
+        got = session.wait_until(arrived, time_to_wait if time_to_wait >= 0 else None, waiter)
     finally:
-        if timer is not None:
-            session.cancel(timer)
         if session.running:
             session.call(NativeNode.destroy_subscription, node, subscription._native)
+    return (True, got[0]) if isinstance(got, tuple) else (False, None)
