@@ -17,6 +17,11 @@ mailbox — so awaiting a call from inside a callback cannot deadlock.
   one at a time, so the request could never be handled while it waits.
 - A cancelled or timed-out caller does not disturb the server: the response is
   simply dropped.
+- Requests and responses go through the publish-time snapshot
+  (:mod:`actors.snapshot`): the server sees the request as it was when the
+  call was made, the caller the response as the handler returned it, and a
+  field of the wrong type fails the call naming the field (in ``call_async``
+  for a request, as ServiceError for a response).
 """
 
 from __future__ import annotations
@@ -29,6 +34,7 @@ from typing import Any
 
 from actors.actor import Mailbox, Owner
 from actors.errors import ServiceError
+from actors.snapshot import snapshotter
 from actors.topics import type_name
 
 __all__ = ["Service", "Client", "ServiceTable"]
@@ -50,7 +56,7 @@ def _check_srv_type(srv_type: Any, where: str) -> None:
 class Service(Mailbox):
     """A service server.  Create with ``Node.create_service``."""
 
-    __slots__ = ("node", "service_name", "srv_type", "handler", "handled")
+    __slots__ = ("node", "service_name", "srv_type", "handler", "handled", "_snapshot")
 
     def __init__(self, node: Owner, service_name: str, srv_type: type, handler: Callable[..., Any]) -> None:
         _check_srv_type(srv_type, "create_service")
@@ -61,6 +67,7 @@ class Service(Mailbox):
         self.srv_type = srv_type
         self.handler = handler
         self.handled = 0
+        self._snapshot = snapshotter(srv_type.Response)
         # The queue is made on the first call: most services (every node's parameter
         # services) are never called, and an empty deque costs 760 bytes.
         super().__init__(node.actor)
@@ -121,6 +128,7 @@ class Service(Mailbox):
         response_type = self.srv_type.Response
         if type(response) is not response_type:
             raise TypeError(f"handler returned {type_name(type(response))}, expected {type_name(response_type)}")
+        response = self._snapshot(response)
         self.handled += 1
         if not call.future.done():
             call.future.set_result(response)
@@ -138,7 +146,7 @@ class Service(Mailbox):
 class Client:
     """A service client.  Create with ``Node.create_client``."""
 
-    __slots__ = ("node", "service_name", "srv_type", "_table", "_loop")
+    __slots__ = ("node", "service_name", "srv_type", "_table", "_loop", "_snapshot")
 
     def __init__(self, node: Owner, service_name: str, srv_type: type, table: ServiceTable) -> None:
         _check_srv_type(srv_type, "create_client")
@@ -147,6 +155,7 @@ class Client:
         self.srv_type = srv_type
         self._table = table
         self._loop = node.loop
+        self._snapshot = snapshotter(srv_type.Request)
 
     def service_is_ready(self) -> bool:
         """Whether a server for this service exists now."""
@@ -170,15 +179,18 @@ class Client:
     def call_async(self, request: Any) -> asyncio.Future[Any]:
         """Send ``request``; return a future of the response.
 
-        Raises TypeError for a request of the wrong type and ServiceError when a
-        node calls its own service.  The future fails with ServiceError when the
-        server's handler raises.
+        Raises TypeError for a request of the wrong type,
+        MessageValidationError for a field that does not fit, and ServiceError
+        when a node calls its own service.  The server receives the request as
+        it is now (the caller may reuse the object).  The future fails with
+        ServiceError when the server's handler raises.
         """
         if type(request) is not self.srv_type.Request:
             raise TypeError(
                 f"client of {self.service_name} takes {type_name(self.srv_type.Request)}, "
                 f"got {type_name(type(request))}"
             )
+        request = self._snapshot(request)
         server = self._table.servers.get(self.service_name)
         if server is not None and server.node is self.node:
             raise ServiceError(

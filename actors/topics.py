@@ -1,8 +1,11 @@
 """Topics: QoS profiles, publishers, subscriptions with their mailboxes, and the topic table.
 
 ``Publisher.publish`` is synchronous and O(subscribers): it checks the type,
-appends the message object itself (never a copy, never serialised) to each
-matched subscription's queue and wakes the owning node once per batch.  Each
+takes a snapshot of the message (:mod:`actors.snapshot`: every field checked,
+what is mutable copied, never serialised), appends that one snapshot to each
+matched subscription's queue and wakes the owning node once per batch.  What
+subscribers receive is the message as it was when published, whatever the
+publisher does with its object afterwards, as in rclpy.  Each
 subscription keeps its own queue, bounded by its QoS depth as in ROS: a full
 KEEP_LAST queue drops its oldest message and counts the drop.
 
@@ -29,6 +32,7 @@ import msgspec
 
 from actors.actor import CallbackFailed, Mailbox, Owner
 from actors.errors import TopicTypeError
+from actors.snapshot import snapshotter
 
 __all__ = [
     "HistoryPolicy",
@@ -121,29 +125,34 @@ def type_name(msg_type: type) -> str:
 class Publisher:
     """Publishes messages of one type on one topic.  Create with ``Node.create_publisher``."""
 
-    __slots__ = ("topic_name", "msg_type", "qos", "node", "_subs", "_history", "__weakref__")
+    __slots__ = ("topic_name", "msg_type", "qos", "node", "_subs", "_history", "_snapshot", "__weakref__")
 
     def __init__(self, node: Owner, topic_name: str, msg_type: type, qos: QoSProfile) -> None:
         self.node = node
         self.topic_name = topic_name
         self.msg_type = msg_type
         self.qos = qos
+        self._snapshot = snapshotter(msg_type)
         self._subs: dict[Subscription, None] = {}  # matched subscriptions, in match order
         self._history: deque[Any] | None = (
             deque(maxlen=qos.depth) if qos.durability == DurabilityPolicy.TRANSIENT_LOCAL else None
         )
 
     def publish(self, msg: Any) -> None:
-        """Deliver ``msg`` to every matched subscription.  Never blocks.
+        """Deliver a snapshot of ``msg`` to every matched subscription.  Never blocks.
 
-        Raises TypeError if ``msg`` is not of this publisher's type.  The message
-        object itself is delivered: do not mutate it after publishing.
+        Raises TypeError if ``msg`` is not of this publisher's type, and
+        MessageValidationError (naming the field) if a field holds a value of
+        the wrong type or out of range.  Subscribers receive ``msg`` as it is
+        now: the publisher may change or reuse the object afterwards.  The
+        subscribers of one publish share one snapshot.
         """
         if type(msg) is not self.msg_type:
             raise TypeError(
                 f"publisher on {self.topic_name} takes {type_name(self.msg_type)}, "
                 f"got {type_name(type(msg))}"
             )
+        msg = self._snapshot(msg)
         if self._history is not None:
             self._history.append(msg)
         for sub in self._subs:

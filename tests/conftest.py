@@ -42,3 +42,16 @@ def run_module():
 def live_loop_timers() -> list[asyncio.TimerHandle]:
     """The running loop's timers that are still armed (asyncio keeps cancelled ones until they come up)."""
     return [h for h in asyncio.get_running_loop()._scheduled if not h.cancelled()]  # type: ignore[attr-defined]
+
+
+def generated_package(root: Path, package: str, messages: dict[str, str]) -> None:
+    """Write ``messages`` (name -> .msg text) as ``package`` under the interface root ``root``,
+    generate its module and register the root, so ``codec.get_type("package/msg/Name")`` finds them."""
+    from actors import codec, idl_gen
+
+    folder = root / package / "msg"
+    folder.mkdir(parents=True)
+    for name, text in messages.items():
+        (folder / f"{name}.msg").write_text(text)
+    idl_gen.generate([root])
+    codec.register_root(root)

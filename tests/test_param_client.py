@@ -52,7 +52,7 @@ async def test_set_list_get_describe_and_delete():
         got = await client.get_parameters(["int_parameter", "seeded", "ghost"])
         assert [value_from_msg(v) for v in got.values] == [10, "yes", None]
         types = await client.get_parameter_types(["string_parameter"])
-        assert types.types == [ParameterType.STRING]
+        assert list(types.types) == [ParameterType.STRING]  # uint8[]: bytes
         described = await client.describe_parameters(["fixed"])
         assert described.descriptors[0].read_only
         atomic = await client.set_parameters_atomically([Parameter("int_parameter", value=11), Parameter("fixed", value=3)])

@@ -435,7 +435,7 @@ async def test_the_parameter_services():
         assert [value_from_msg(v) for v in got.values] == [0.5, ["a", "b"], None]
         types = await core.create_client(GetParameterTypes, "/tuned/get_parameter_types").call(
             GetParameterTypes.Request(names=["speed", "ghost"]), timeout=1)
-        assert types.types == [ParameterType.DOUBLE, ParameterType.NOT_SET]
+        assert list(types.types) == [ParameterType.DOUBLE, ParameterType.NOT_SET]  # uint8[]: bytes
         setter = core.create_client(SetParameters, "/tuned/set_parameters")
         response = await setter.call(SetParameters.Request(parameters=[
             ParameterMsg(name="speed", value=value_to_msg(0.25)),

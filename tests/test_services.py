@@ -9,6 +9,7 @@ import anyio
 import pytest
 
 from actors import Node, Runtime, ServiceError, SupervisorPolicy
+from actors.errors import MessageValidationError
 from conftest import live_loop_timers
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.std_msgs.msg import Int64
@@ -282,3 +283,37 @@ async def test_request_and_response_types_are_checked():
         cli = caller._core.create_client(SetBool, "/set")
         with pytest.raises(ServiceError, match="expected std_srvs/srv/SetBool_Response"):
             await cli.call(SetBool.Request(data=True), timeout=1)
+
+
+async def test_the_server_sees_each_request_as_it_was_when_called():
+    async with Runtime() as rt:
+        rt.spawn(Adder)
+        caller = rt.spawn(Caller)
+        request = AddTwoInts.Request()
+        futures = []
+        for i in range(3):
+            request.a, request.b = i, 10  # one object reused, as rclpy allows
+            futures.append(caller.cli.call_async(request))
+        request.a = 1000
+        assert [r.sum for r in await asyncio.gather(*futures)] == [10, 11, 12]
+
+
+async def test_fields_that_do_not_fit_fail_the_call_naming_the_field(caplog):
+    class Sloppy(Node):
+        def __init__(self) -> None:
+            super().__init__("sloppy")
+            self.create_service(AddTwoInts, "add_two_ints", self.add)
+
+        def add(self, request: AddTwoInts.Request, response: AddTwoInts.Response) -> AddTwoInts.Response:
+            response.sum = str(request.a + request.b)
+            return response
+
+    caplog.set_level(logging.CRITICAL, logger="actors")
+    async with Runtime() as rt:
+        rt.spawn(Sloppy)
+        caller = rt.spawn(Caller)
+        with pytest.raises(MessageValidationError, match=r"^field 'a' of example_interfaces/srv/AddTwoInts_Request: "):
+            caller.cli.call_async(AddTwoInts.Request(a=2**63))
+        with pytest.raises(ServiceError, match=r"field 'sum' of example_interfaces/srv/AddTwoInts_Response: "
+                                               r"expected an int, got the str '3'"):
+            await caller.cli.call(AddTwoInts.Request(a=1, b=2), timeout=1)

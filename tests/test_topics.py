@@ -14,6 +14,10 @@ from actors import (
     Runtime,
     TopicTypeError,
 )
+from actors.errors import MessageValidationError
+from interfaces.geometry_msgs.msg import Point, PoseWithCovariance, Twist, Vector3
+from interfaces.nav_msgs.msg import Odometry
+from interfaces.sensor_msgs.msg import LaserScan
 from interfaces.std_msgs.msg import Int64, String
 
 pytestmark = pytest.mark.virtual_time
@@ -44,18 +48,110 @@ class Source(Node):
         self.pub = self.create_publisher(Int64, "numbers", self.qos)
 
 
-async def test_messages_arrive_in_order_and_are_the_same_objects():
+async def test_messages_arrive_in_order_as_they_were_when_published():
     async with Runtime() as rt:
         sink = rt.spawn(Sink)
         source = rt.spawn(Source)
-        sent = [Int64(data=i) for i in range(5)]
         received = []
         sink.sub.callback = received.append
-        for msg in sent:
+        msg = Int64()
+        for i in range(5):
+            msg.data = i  # one object, changed and published again (rclpy's publisher_local_function)
             source.pub.publish(msg)
+        msg.data = 99
         await anyio.sleep(0.01)
         assert [m.data for m in received] == [0, 1, 2, 3, 4]
-        assert all(a is b for a, b in zip(received, sent))  # in-process: no copy, no serialisation
+        assert all(m is not msg for m in received)
+
+
+async def test_a_nested_message_changed_after_publishing_is_delivered_as_published():
+    heard: list[Odometry] = []
+
+    class OdomSink(Node):
+        def __init__(self) -> None:
+            super().__init__("odom_sink")
+            self.create_subscription(Odometry, "odom", heard.append, 10)
+
+    async with Runtime() as rt:
+        rt.spawn(OdomSink)
+        pub = rt.spawn(Source).create_publisher(Odometry, "odom", 10)
+        odom = Odometry(child_frame_id="base")
+        odom.pose.pose.position.x = 1
+        odom.pose.covariance[0] = 0.5
+        pub.publish(odom)
+        odom.pose.pose.position.x = 2.0
+        odom.pose.covariance[0] = 9.0
+        odom.header.stamp.sec = 7
+        await anyio.sleep(0.01)
+        (got,) = heard
+        assert got.pose.pose.position.x == 1.0 and type(got.pose.pose.position.x) is float  # an int becomes a float
+        assert got.pose.covariance[0] == 0.5 and got.header.stamp.sec == 0
+        assert got.child_frame_id == "base"
+
+
+async def test_the_subscribers_of_one_publish_share_one_snapshot():
+    class Two(Node):
+        def __init__(self) -> None:
+            super().__init__("two")
+            self.heard: list[Int64] = []
+            for _ in range(2):
+                self.create_subscription(Int64, "numbers", self.heard.append, 10)
+
+    async with Runtime() as rt:
+        two = rt.spawn(Two)
+        msg = Int64(data=3)
+        rt.spawn(Source).pub.publish(msg)
+        await anyio.sleep(0.01)
+        first, second = two.heard
+        assert first is second and first is not msg and first.data == 3
+
+
+@pytest.mark.parametrize(
+    ("build", "error"),
+    [
+        (lambda: String(data=42), "field 'data' of std_msgs/msg/String: expected a str, got the int 42"),
+        (
+            lambda: Int64(data=2**70),
+            "field 'data' of std_msgs/msg/Int64: 1180591620717411303424 is out of range for int64 "
+            "(-9223372036854775808..9223372036854775807)",
+        ),
+        (lambda: Int64(data=1.5), "field 'data' of std_msgs/msg/Int64: expected an int, got the float 1.5"),
+        (
+            lambda: Twist(linear=Vector3(x="fast")),
+            "field 'linear.x' of geometry_msgs/msg/Twist: expected a float, got the str 'fast'",
+        ),
+        (
+            lambda: Twist(angular=Point()),
+            "field 'angular' of geometry_msgs/msg/Twist: expected a geometry_msgs/msg/Vector3, "
+            "got a geometry_msgs/msg/Point",
+        ),
+        (
+            lambda: LaserScan(ranges=[1.0, 1e39]),
+            "field 'ranges[1]' of sensor_msgs/msg/LaserScan: 1e+39 is out of range for float32 (±3.4028235e+38)",
+        ),
+        (
+            lambda: Odometry(pose=PoseWithCovariance(covariance=[0.0] * 35)),
+            "field 'pose.covariance' of nav_msgs/msg/Odometry: expected 36 items (float64[36]), got 35",
+        ),
+    ],
+)
+async def test_a_field_of_the_wrong_type_or_out_of_range_fails_at_publish(build, error):
+    heard: list[object] = []
+    msg = build()
+
+    class Anything(Node):
+        def __init__(self) -> None:
+            super().__init__("anything")
+            self.pub = self.create_publisher(type(msg), "anything", 10)
+            self.create_subscription(type(msg), "anything", heard.append, 10)
+
+    async with Runtime() as rt:
+        node = rt.spawn(Anything)
+        with pytest.raises(MessageValidationError) as raised:
+            node.pub.publish(msg)
+        assert str(raised.value) == error
+        await anyio.sleep(0.01)
+        assert heard == []  # nothing of it was delivered
 
 
 async def test_removing_a_subscription_keeps_the_others_in_order():

@@ -1,0 +1,147 @@
+"""The publish-time snapshot: every field checked, mutable parts copied, immutable leaves shared."""
+
+from __future__ import annotations
+
+import array
+
+import msgspec
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from actors import codec
+from actors.errors import MessageValidationError
+from actors.snapshot import FLOAT32_MAX, snapshot, snapshotter
+from conftest import generated_package
+from goldens.values import DrawPick, message, shipped_messages
+from interfaces.geometry_msgs.msg import Twist, Vector3
+from interfaces.rcl_interfaces.msg import ParameterValue
+from interfaces.sensor_msgs.msg import JointState, LaserScan
+from interfaces.std_msgs.msg import Bool, Int8, Int64, String
+
+SHIPPED = shipped_messages()
+
+
+def _shared_mutables(a: object, b: object) -> list[str]:
+    """Paths where ``a`` and ``b`` hold the very same list or struct (a snapshot must hold none)."""
+    found = []
+
+    def walk(x: object, y: object, path: str) -> None:
+        if isinstance(x, (list, msgspec.Struct)) and x is y:
+            found.append(path or "the message")
+        if isinstance(x, msgspec.Struct):
+            for name in x.__struct_fields__:
+                walk(getattr(x, name), getattr(y, name), f"{path}.{name}")
+        elif isinstance(x, list):
+            for i, (p, q) in enumerate(zip(x, y)):
+                walk(p, q, f"{path}[{i}]")
+
+    walk(a, b, "")
+    return found
+
+
+@settings(max_examples=150, deadline=None)
+@given(name=st.sampled_from(SHIPPED), data=st.data())
+def test_a_snapshot_equals_the_message_and_shares_nothing_mutable(name, data):
+    msg = message(codec.get_type(name), DrawPick(data))
+    copy = snapshot(msg)
+    assert copy == msg
+    assert type(copy) is type(msg)
+    assert _shared_mutables(copy, msg) == []
+
+
+def test_immutable_leaves_are_shared_not_copied():
+    text, blob = "x" * 1000, bytes(1000)
+    msg = ParameterValue(string_value=text, byte_array_value=blob)
+    copy = snapshot(msg)
+    assert copy.string_value is text and copy.byte_array_value is blob
+
+
+def test_the_function_is_generated_once_per_type():
+    assert snapshotter(Twist) is snapshotter(Twist)
+    assert snapshotter(Twist) is not snapshotter(Vector3)
+
+
+def test_a_class_that_is_not_an_interface_type_is_passed_as_it_is():
+    class Plain:
+        pass
+
+    value = Plain()
+    assert snapshot(value) is value
+
+
+def test_what_rclpy_accepts_beyond_the_exact_type_is_delivered_in_the_canonical_type():
+    copy = snapshot(Twist(linear=Vector3(x=1, y=np.float32(0.5), z=np.float64(2.0))))
+    assert [(v, type(v)) for v in (copy.linear.x, copy.linear.y, copy.linear.z)] == [
+        (1.0, float), (0.5, float), (2.0, float)
+    ]
+    assert (copy := snapshot(Int64(data=True))).data == 1 and type(copy.data) is int
+    scan = snapshot(LaserScan(ranges=(1, 2.5), intensities=np.array([0.25, 3.0], dtype=np.float32)))
+    assert scan.ranges == [1.0, 2.5] and all(type(v) is float for v in scan.ranges + scan.intensities)
+    assert scan.intensities == [0.25, 3.0]
+    value = snapshot(ParameterValue(byte_array_value=bytearray(b"ab"), integer_array_value=array.array("q", [7])))
+    assert value.byte_array_value == b"ab" and type(value.byte_array_value) is bytes
+    assert value.integer_array_value == [7] and type(value.integer_array_value) is list
+    assert snapshot(LaserScan(ranges=[float("inf"), float("nan"), -FLOAT32_MAX])).ranges[2] == -FLOAT32_MAX
+
+
+@pytest.mark.parametrize(
+    ("msg", "error"),
+    [
+        (Bool(data=1), "field 'data' of std_msgs/msg/Bool: expected a bool, got the int 1"),
+        (Int8(data=128), "field 'data' of std_msgs/msg/Int8: 128 is out of range for int8 (-128..127)"),
+        (Twist(linear=Vector3(x=True)), "field 'linear.x' of geometry_msgs/msg/Twist: expected a float, got the bool True"),
+        (String(data=b"abc"), "field 'data' of std_msgs/msg/String: expected a str, got the bytes b'abc'"),
+        (JointState(name="abc"), "field 'name' of sensor_msgs/msg/JointState: expected a list (string[]), got the str 'abc'"),
+        (JointState(name=["a", 2]), "field 'name[1]' of sensor_msgs/msg/JointState: expected a str, got the int 2"),
+        (ParameterValue(byte_array_value=[1, 300]),
+         "field 'byte_array_value' of rcl_interfaces/msg/ParameterValue: expected bytes (byte[]): "
+         "bytes must be in range(0, 256)"),
+        (ParameterValue(integer_array_value=[1, 2**64]),
+         "field 'integer_array_value[1]' of rcl_interfaces/msg/ParameterValue: 18446744073709551616 is out of range "
+         "for int64 (-9223372036854775808..9223372036854775807)"),
+    ],
+)
+def test_errors_name_the_type_the_field_and_the_value(msg, error):
+    with pytest.raises(MessageValidationError) as raised:
+        snapshot(msg)
+    assert str(raised.value) == error
+
+
+SHAPES = """\
+string<=4 name
+int32[<=2] few
+float32[3] xyz
+Part[] parts
+"""
+PART = "uint8 id\nstring<=2 tag\n"
+
+
+@pytest.fixture(scope="module")
+def shapes(tmp_path_factory):
+    generated_package(tmp_path_factory.mktemp("root") / "snapshot_shapes", "snapshot_shapes_pkg",
+                      {"Shapes": SHAPES, "Part": PART})
+    return codec.get_type("snapshot_shapes_pkg/msg/Shapes"), codec.get_type("snapshot_shapes_pkg/msg/Part")
+
+
+def test_bounds_and_sizes_are_checked(shapes):
+    shape, part = shapes
+    where = "snapshot_shapes_pkg/msg/Shapes"
+    cases = [
+        (shape(name="abcde"), f"field 'name' of {where}: expected at most 4 characters (string<=4), got 5"),
+        (shape(few=[1, 2, 3]), f"field 'few' of {where}: expected at most 2 items (int32[<=2]), got 3"),
+        (shape(xyz=[1.0, 2.0]), f"field 'xyz' of {where}: expected 3 items (float32[3]), got 2"),
+        (shape(parts=[part(), Vector3()]),
+         f"field 'parts[1]' of {where}: expected a snapshot_shapes_pkg/msg/Part, got a geometry_msgs/msg/Vector3"),
+        (shape(parts=[part(), part(tag="abc")]),
+         f"field 'parts[1].tag' of {where}: expected at most 2 characters (string<=2), got 3"),
+        (shape(parts=[part(id=-1)]), f"field 'parts[0].id' of {where}: -1 is out of range for uint8 (0..255)"),
+    ]
+    for msg, error in cases:
+        with pytest.raises(MessageValidationError) as raised:
+            snapshot(msg)
+        assert str(raised.value) == error
+    good = shape(name="abcd", few=[1, 2], xyz=[1.0, 2.0, 3.0], parts=[part(id=7, tag="ok")])
+    copy = snapshot(good)
+    assert copy == good and copy.parts[0] is not good.parts[0]
