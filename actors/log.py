@@ -114,6 +114,11 @@ class NodeLogger:
         self._sink = sink
         self._sites: dict[tuple[Any, int], _CallSite] | None = None
 
+    @property
+    def sink(self) -> Callable[[int, str, str, int], None] | None:
+        """What receives every emitted record besides Python logging (the runtime's ``/rosout``)."""
+        return self._sink
+
     def get_child(self, suffix: str) -> NodeLogger:
         """A logger named ``<name>.<suffix>``, as rclpy's ``get_child``; ValueError for an empty suffix."""
         if not suffix:

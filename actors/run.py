@@ -21,6 +21,7 @@ from types import FrameType
 from typing import Any
 
 import anyio
+import anyio.abc
 
 from actors.clock import VirtualTimeLoop, precise_loop
 from actors.control import ControlEndpoint
@@ -30,7 +31,7 @@ from actors.log import LEVELS, configure_console
 from actors.node import Node
 from actors.runtime import Runtime
 
-__all__ = ["main", "add_arguments", "launch", "run_graph", "NodeStartError"]
+__all__ = ["main", "add_arguments", "launch", "run_graph", "spawn_graph", "NodeStartError"]
 
 
 class NodeStartError(Exception):
@@ -78,18 +79,36 @@ async def run_graph(
     """
     policy = graph.supervisor.policy()
     async with Runtime(name=name, supervisor=policy, attach=[ControlEndpoint()]) as rt:
-        entries = list(enumerate(zip(graph.nodes, classes)))
-        for i, (entry, cls) in entries:
-            if not entry.delay:
-                _spawn(rt, i, entry, cls)
         async with anyio.create_task_group() as tg:
-            for i, (entry, cls) in entries:
-                if entry.delay:
-                    tg.start_soon(_spawn_later, rt, i, entry, cls)
+            await tg.start(spawn_graph, rt, graph, classes)
             if handle_signals:
                 tg.start_soon(_stop_on_signal, rt)
             await rt.wait(duration or None)
             tg.cancel_scope.cancel()
+
+
+async def spawn_graph(
+    rt: Runtime,
+    graph: GraphFile,
+    classes: Sequence[type[Node]],
+    *,
+    task_status: anyio.abc.TaskStatus[None] = anyio.TASK_STATUS_IGNORED,
+) -> None:
+    """Spawn the graph's nodes into ``rt`` in file order, the delayed ones when their delay ends.
+
+    Reports started (``await tg.start(spawn_graph, ...)``) once the nodes without
+    a delay run, and returns when every node has been spawned.  Raises as
+    :func:`run_graph` does.
+    """
+    entries = list(enumerate(zip(graph.nodes, classes)))
+    for i, (entry, cls) in entries:
+        if not entry.delay:
+            _spawn(rt, i, entry, cls)
+    task_status.started()
+    async with anyio.create_task_group() as tg:
+        for i, (entry, cls) in entries:
+            if entry.delay:
+                tg.start_soon(_spawn_later, rt, i, entry, cls)
 
 
 def _spawn(rt: Runtime, index: int, entry: NodeEntry, cls: type[Node]) -> None:

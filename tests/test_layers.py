@@ -21,7 +21,7 @@ LAYERS: list[set[str]] = [
     {"node", "node_params", "node_graph", "param_client"},
     {"supervisor", "runtime", "introspection", "graph"},
     {"control", "doctor"},
-    {"run", "testing", "cli", "__main__", "__init__"},
+    {"run", "testing", "cli", "__main__", "__init__", "compat"},
 ]
 
 

@@ -1,0 +1,38 @@
+"""``actors run SCRIPT.py [ARGS...] [--ros-args ...]``: run an rclpy program, unmodified, on actors."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+__all__ = ["register"]
+
+
+def register(groups: Any) -> None:
+    """Add the ``run`` command."""
+    parser = groups.add_parser(
+        "run",
+        help="run an rclpy program (SCRIPT.py) on actors, unmodified",
+        description=(
+            "Run an rclpy program as `python SCRIPT.py ARGS` would, with rclpy and the message "
+            "packages provided by actors. Options go before the script; everything after it is the "
+            "script's (its own arguments and --ros-args ...)."
+        ),
+    )
+    parser.add_argument("--clock", choices=("wall", "virtual"), help="the runtime clock (default: wall)")
+    parser.add_argument("--duration", type=float, help="stop after this many seconds of runtime clock")
+    parser.add_argument("--graph", metavar="GRAPH.toml", help="run the script beside this graph's nodes")
+    parser.add_argument("--log-level", choices=("debug", "info", "warn", "error", "fatal"),
+                        help="the console's level (default: info)")
+    parser.add_argument("script", help="the rclpy program, e.g. talker.py")
+    parser.add_argument("args", nargs=argparse.REMAINDER, help="the program's arguments")
+    parser.set_defaults(func=_run)
+
+
+def _run(args: argparse.Namespace) -> int:
+    from actors.compat.launcher import run_script
+
+    return run_script(
+        args.script, args.args, clock=args.clock, duration=args.duration, graph=args.graph,
+        log_level=args.log_level,
+    )

@@ -1,0 +1,221 @@
+"""``actors run SCRIPT.py [ARGS...]``: run an rclpy program, unmodified, on actors.
+
+The script runs on the main thread as ``python SCRIPT.py ARGS...`` would run it
+(``__main__``, ``sys.argv``, its exit code), with the overlay installed and a
+:class:`~actors.compat.session.Session` current, beside the nodes of
+``--graph`` if given.  Its log lines go to stderr in ROS's form, as rclpy's do.
+
+Stopping is graceful, as for graphs: Ctrl-C, and the end of ``--duration``,
+shut the context down and raise KeyboardInterrupt in the script (what rclpy's
+signal handler does); SIGTERM shuts the context down.  A script that lets that
+KeyboardInterrupt or ExternalShutdownException out still exits 0, without a
+traceback.  Exit codes: the script's own (``sys.exit``), 1 when it raises
+anything else (its traceback, without the launcher's frames) or when the
+graph fails, 2 for misuse (no such script, bad options, malformed
+``--ros-args`` or graph file), with one line on stderr.
+
+On the virtual clock, ``time.sleep`` in the script's threads sleeps virtual
+time: it waits on the runtime like any other wait.
+"""
+
+from __future__ import annotations
+
+import os
+import runpy
+import signal
+import sys
+import threading
+import time
+import traceback
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
+from pathlib import Path
+from types import FrameType
+from typing import Any
+
+from actors.compat.overlay import overlaid
+from actors.compat.rclpy.context import use_session
+from actors.compat.rclpy.executors import ExternalShutdownException
+from actors.compat.rclpy.utilities import get_default_context, try_shutdown
+from actors.compat.session import Session
+from actors.control import ControlEndpoint
+from actors.errors import ActorsError, GraphFileError, RosArgsError
+from actors.graph import load_graph
+from actors.log import INFO, LEVELS, configure_console
+from actors.rosargs import parse
+
+__all__ = ["run_script", "virtual_sleep"]
+
+
+def run_script(
+    script: str,
+    argv: Sequence[str] = (),
+    *,
+    clock: str | None = None,
+    duration: float | None = None,
+    graph: str | None = None,
+    log_level: str | None = None,
+) -> int:
+    """Run ``script`` with ``argv`` as its arguments; return the process's exit code.
+
+    ``clock``, ``duration`` and ``log_level`` default to the graph file's
+    ``[runtime]`` settings when ``graph`` is given, else to the wall clock, no
+    end, and info.  Call it on the main thread (it handles SIGINT and SIGTERM).
+    """
+    path = Path(script)
+    if not path.is_file():
+        print(f"error: {script}: no such script", file=sys.stderr)
+        return 2
+    if duration is not None and not duration > 0:
+        print(f"error: --duration must be > 0 seconds, got {duration}", file=sys.stderr)
+        return 2
+    try:
+        parse(argv)
+        loaded = load_graph(graph) if graph else None
+    except (RosArgsError, GraphFileError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    settings = loaded[0].runtime if loaded else None
+    clock = clock or (settings.clock if settings else "wall")
+    if duration is None and settings is not None:
+        duration = settings.duration or None
+    level = log_level or (settings.log_level if settings else None)
+    configure_console(LEVELS[level] if level else INFO, stream=sys.stderr)
+    stop = _Stop()
+    session = Session(
+        clock=clock,
+        name=path.stem,
+        graph=loaded,
+        duration=duration,
+        on_duration=stop.interrupt,
+        on_failure=lambda _error: stop.interrupt(),
+        attach=[ControlEndpoint()],
+    )
+    try:
+        session.start()
+    except BaseException as exc:  # noqa: BLE001 - a graph node that fails to start
+        print(f"[FATAL] {graph}: {_one_line(exc)}", file=sys.stderr)
+        return 1
+    try:
+        with use_session(session), overlaid(), stop.handling_signals(), _sleeping_on(session):
+            code = _run(path, argv, stop)
+    finally:
+        get_default_context().finish()
+        try_shutdown()
+        session.close()
+        sys.stdout.flush()
+    if session.failure is not None:
+        print(f"[FATAL] {_one_line(session.failure)}", file=sys.stderr)
+        return 1
+    return code
+
+
+class _Stop:
+    """Whether the launcher asked the script to stop, and the signal handlers that ask it."""
+
+    def __init__(self) -> None:
+        self.requested = False
+        self._main = threading.main_thread()
+
+    def interrupt(self) -> None:
+        """From any thread: stop the script as Ctrl-C would."""
+        self.requested = True
+        signal.pthread_kill(self._main.ident, signal.SIGINT)  # type: ignore[arg-type]
+
+    def _on_sigint(self, signum: int, frame: FrameType | None) -> None:
+        # As rclpy's handler: the context stops (spins raise ExternalShutdownException), then the
+        # previous handler's KeyboardInterrupt.
+        self.requested = True
+        get_default_context().interrupt()
+        raise KeyboardInterrupt
+
+    def _on_sigterm(self, signum: int, frame: FrameType | None) -> None:
+        self.requested = True
+        get_default_context().interrupt()
+
+    @contextmanager
+    def handling_signals(self) -> Iterator[None]:
+        previous = signal.signal(signal.SIGINT, self._on_sigint), signal.signal(signal.SIGTERM, self._on_sigterm)
+        try:
+            yield
+        finally:
+            signal.signal(signal.SIGINT, previous[0])
+            signal.signal(signal.SIGTERM, previous[1])
+
+
+def _run(path: Path, argv: Sequence[str], stop: _Stop) -> int:
+    saved_argv, saved_path = sys.argv, sys.path[:]
+    sys.argv = [str(path), *argv]
+    sys.path.insert(0, str(path.resolve().parent))
+    try:
+        runpy.run_path(str(path), run_name="__main__")
+    except SystemExit as exc:
+        return _exit_code(exc.code)
+    except (KeyboardInterrupt, ExternalShutdownException):
+        if stop.requested:
+            return 0
+        raise
+    except RosArgsError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    except BaseException as exc:  # noqa: BLE001 - the script's own error, shown as Python would
+        _print_script_traceback(exc, path)
+        return 1
+    finally:
+        sys.argv = saved_argv
+        sys.path[:] = saved_path
+    return 0
+
+
+def _exit_code(code: Any) -> int:
+    if code is None:
+        return 0
+    if isinstance(code, int):
+        return code
+    print(code, file=sys.stderr)
+    return 1
+
+
+def _print_script_traceback(exc: BaseException, path: Path) -> None:
+    # Leave out the launcher's and runpy's frames: the traceback starts in the script.
+    tb = exc.__traceback__
+    script = str(path.resolve())
+    while tb is not None and os.path.abspath(tb.tb_frame.f_code.co_filename) != script:
+        tb = tb.tb_next
+    traceback.print_exception(type(exc), exc, tb or exc.__traceback__, file=sys.stderr)
+
+
+def _one_line(exc: BaseException) -> str:
+    if isinstance(exc, BaseExceptionGroup) and exc.exceptions:
+        return _one_line(exc.exceptions[0])
+    if isinstance(exc, ActorsError):
+        return str(exc)
+    return f"{type(exc).__name__}: {exc}"
+
+
+@contextmanager
+def _sleeping_on(session: Session) -> Iterator[None]:
+    """On the virtual clock, ``time.sleep`` in script threads sleeps on the runtime clock."""
+    if not session.virtual:
+        yield
+        return
+    real = time.sleep
+    time.sleep = virtual_sleep(session, real)
+    try:
+        yield
+    finally:
+        time.sleep = real
+
+
+def virtual_sleep(session: Session, real: Any) -> Any:
+    """A ``time.sleep`` that waits ``seconds`` of the session's clock in the script's threads."""
+
+    def sleep(seconds: float) -> None:
+        if seconds < 0:
+            raise ValueError("sleep length must be non-negative")
+        if session.running and not session.in_loop_thread() and session.activity.has_token():
+            session.sleep(seconds)
+        else:
+            real(seconds)
+
+    return sleep

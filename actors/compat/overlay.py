@@ -1,0 +1,168 @@
+"""The import overlay: ``import rclpy`` and ``from std_msgs.msg import String`` resolve to actors.
+
+While installed, a finder first on ``sys.meta_path`` answers for ``rclpy``,
+``rclpy.<module>`` (the modules of :mod:`actors.compat.rclpy`) and every shipped
+interface package (``std_msgs``, ``std_msgs.msg``, ``example_interfaces.srv``...,
+the modules of ``interfaces.<pkg>``).  The names are aliases: ``rclpy.node`` *is*
+``actors.compat.rclpy.node``, so ``std_msgs.msg.String is
+interfaces.std_msgs.msg.String``.  Uninstalling removes the aliases and puts
+back whatever those names held before, so a real rclpy in the same environment
+keeps working outside the overlay.
+"""
+
+from __future__ import annotations
+
+import importlib
+import importlib.abc
+import importlib.machinery
+import importlib.util
+import sys
+import threading
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
+from pathlib import Path
+from types import ModuleType
+from typing import Any
+
+__all__ = ["install", "uninstall", "installed", "overlaid", "OverlayFinder"]
+
+_RCLPY = "actors.compat.rclpy"
+_INTERFACES = "interfaces"
+
+
+class OverlayFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    """Maps ``rclpy[.x]`` to ``actors.compat.rclpy[.x]`` and ``<pkg>[.x]`` to ``interfaces.<pkg>[.x]``."""
+
+    def __init__(self) -> None:
+        self.packages = _interface_packages()
+
+    def target(self, fullname: str) -> str | None:
+        """The actors module that ``fullname`` stands for, or None if the overlay leaves it alone."""
+        top, _, rest = fullname.partition(".")
+        if top == "rclpy":
+            return _RCLPY + (f".{rest}" if rest else "")
+        if top in self.packages:
+            return f"{_INTERFACES}.{fullname}"
+        return None
+
+    def find_spec(
+        self, fullname: str, path: Sequence[str] | None = None, target: ModuleType | None = None
+    ) -> importlib.machinery.ModuleSpec | None:
+        real = self.target(fullname)
+        if real is None:
+            return None
+        try:
+            module = importlib.import_module(real)
+        except ModuleNotFoundError as exc:
+            if exc.name != real:
+                raise  # the module exists but something it imports does not
+            if fullname.startswith("rclpy."):
+                raise ModuleNotFoundError(
+                    f"No module named {fullname!r}: actors' rclpy overlay does not provide it",
+                    name=fullname,
+                ) from None
+            return None
+        spec = importlib.machinery.ModuleSpec(
+            fullname, self, is_package=hasattr(module, "__path__")
+        )
+        spec.loader_state = module
+        return spec
+
+    def create_module(self, spec: importlib.machinery.ModuleSpec) -> ModuleType:
+        module: ModuleType = spec.loader_state
+        return _Alias(module, spec.name)  # type: ignore[return-value]
+
+    def exec_module(self, module: ModuleType) -> None:
+        sys.modules[object.__getattribute__(module, "_name")] = object.__getattribute__(module, "_target")
+
+
+class _Alias:
+    """Stands in for an aliased module while the import system sets attributes on it.
+
+    The import system writes ``__spec__``, ``__loader__`` and friends on the
+    module that ``create_module`` returns; writing them on the real module would
+    rename it.  This shell takes those writes, and ``exec_module`` then puts the
+    real module in ``sys.modules`` under the alias name.
+    """
+
+    def __init__(self, target: ModuleType, name: str) -> None:
+        object.__setattr__(self, "_target", target)
+        object.__setattr__(self, "_name", name)
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(object.__getattribute__(self, "_target"), name)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if not name.startswith("__"):
+            setattr(object.__getattribute__(self, "_target"), name, value)
+
+
+def _interface_packages() -> frozenset[str]:
+    """The shipped interface packages: the folders of ``interfaces`` that are packages."""
+    spec = importlib.util.find_spec(_INTERFACES)
+    folders = spec.submodule_search_locations if spec is not None else None
+    return frozenset(
+        entry.name
+        for folder in folders or ()
+        for entry in Path(folder).iterdir()
+        if entry.name.isidentifier() and (entry / "__init__.py").is_file()
+    )
+
+
+_lock = threading.Lock()
+_state: dict[str, Any] = {"finder": None, "depth": 0, "saved": {}}
+
+
+def installed() -> bool:
+    """Whether the overlay is installed now."""
+    return _state["finder"] is not None
+
+
+def install() -> None:
+    """Make ``rclpy`` and the interface packages resolve to actors, until :func:`uninstall`.
+
+    Calls nest: the overlay stays until every install has been undone.
+    Modules already imported under those names (a real rclpy) are set aside and
+    put back by :func:`uninstall`.
+    """
+    with _lock:
+        _state["depth"] += 1
+        if _state["finder"] is not None:
+            return
+        finder = OverlayFinder()
+        saved = {name: module for name, module in sys.modules.items() if finder.target(name) is not None}
+        for name in saved:
+            del sys.modules[name]
+        _state["saved"] = saved
+        _state["finder"] = finder
+        sys.meta_path.insert(0, finder)
+        importlib.invalidate_caches()
+
+
+def uninstall() -> None:
+    """Undo one :func:`install`; the last one removes the aliases and restores what they hid."""
+    with _lock:
+        if _state["depth"] == 0:
+            return
+        _state["depth"] -= 1
+        finder: OverlayFinder | None = _state["finder"]
+        if _state["depth"] or finder is None:
+            return
+        if finder in sys.meta_path:
+            sys.meta_path.remove(finder)
+        for name in [n for n in sys.modules if finder.target(n) is not None]:
+            del sys.modules[name]
+        sys.modules.update(_state["saved"])
+        _state["saved"] = {}
+        _state["finder"] = None
+        importlib.invalidate_caches()
+
+
+@contextmanager
+def overlaid() -> Iterator[None]:
+    """``with overlaid(): import rclpy`` gets actors' rclpy inside the block only."""
+    install()
+    try:
+        yield
+    finally:
+        uninstall()

@@ -1,0 +1,49 @@
+"""``rclpy.exceptions``: the errors rclpy code catches, most of them actors' own."""
+
+from __future__ import annotations
+
+from actors.errors import InvalidNameError, ParameterError, RosArgsError
+
+__all__ = [
+    "InvalidHandle",
+    "NotInitializedException",
+    "ROSInterruptException",
+    "NameValidationException",
+    "InvalidNodeNameException",
+    "InvalidNamespaceException",
+    "InvalidTopicNameException",
+    "InvalidServiceNameException",
+    "ParameterException",
+    "InvalidROSArgsException",
+    "TimerCancelledError",
+]
+
+NameValidationException = InvalidNameError
+InvalidNodeNameException = InvalidNameError
+InvalidNamespaceException = InvalidNameError
+InvalidTopicNameException = InvalidNameError
+InvalidServiceNameException = InvalidNameError
+ParameterException = ParameterError
+InvalidROSArgsException = RosArgsError
+
+
+class InvalidHandle(Exception):
+    """An entity was used after it was destroyed."""
+
+
+class NotInitializedException(Exception):
+    """``rclpy.init()`` was not called (or the context was shut down) before this call."""
+
+    def __init__(self, msg: str = "rclpy.init() has not been called", *args: object) -> None:
+        super().__init__(msg, *args)
+
+
+class ROSInterruptException(Exception):
+    """The context was shut down while the call waited (``Rate.sleep``)."""
+
+    def __init__(self, msg: str = "rclpy.shutdown() has been called", *args: object) -> None:
+        super().__init__(msg, *args)
+
+
+class TimerCancelledError(Exception):
+    """A canceled timer was called."""

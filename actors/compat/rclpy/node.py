@@ -1,0 +1,492 @@
+"""``rclpy.node``: the Node a script creates, a native node driven by the script's executors.
+
+``Node.__init__`` runs the native constructor on the runtime's thread with a
+:class:`~actors.compat.dispatch.ScriptActor`, so the node is registered like any
+other (the command line sees it, its parameter services answer) but nothing of
+it runs unless an executor of the script spins it.  The ROS arguments of the
+context (``--ros-args``) and the node's own ``cli_args`` rename it, move it,
+remap its names and give its parameters, as rcl does.
+
+The ``create_*`` methods build the native entity on the runtime's thread with
+the overlay's catcher as its callback, and return the overlay's entity (a
+:class:`~actors.compat.dispatch.WorkSource`).  Every other native method runs
+on the runtime's thread too, so the script's threads never touch the
+runtime's state while it runs.
+"""
+
+from __future__ import annotations
+
+import functools
+import weakref
+from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING, Any
+
+from actors.compat.dispatch import NativeWork, ScriptActor, SpinningExecutor, WorkSource
+from actors.compat.rclpy.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup
+from actors.compat.rclpy.client import Client
+from actors.compat.rclpy.context import Context
+from actors.compat.rclpy.exceptions import NotInitializedException
+from actors.compat.rclpy.guard_condition import GuardCondition
+from actors.compat.rclpy.publisher import Publisher
+from actors.compat.rclpy.service import Service
+from actors.compat.rclpy.subscription import Subscription
+from actors.compat.rclpy.timer import Rate, Timer
+from actors.compat.rclpy.utilities import get_default_context
+from actors.log import NodeLogger
+from actors.node import Node as NativeNode
+from actors.node import SpawnRequest, spawning
+from actors.rosargs import RosArgs, parse
+
+if TYPE_CHECKING:
+    from actors.compat.session import Session
+
+__all__ = ["Node"]
+
+
+class _ScriptChild:
+    """The name, namespace, parameters and remappings a script node starts with (a ChildSpec)."""
+
+    def __init__(self, name: str, namespace: str, params: dict[str, Any], remap: dict[str, str]) -> None:
+        self.name = name
+        self.namespace = namespace
+        self.params = params
+        self.remap = remap
+
+    def take_inheritance(self) -> dict[tuple[str, str], list[Any]]:
+        return {}
+
+
+class ScriptNodeState:
+    """The overlay's side of a script node: its session, executor, entities and native work."""
+
+    def __init__(self, node: Node, context: Context, session: Session) -> None:
+        self.node = node
+        self.context = context
+        self.session = session
+        self.lock = session.lock
+        self.executor_ref: weakref.ReferenceType[SpinningExecutor] | None = None
+        self.default_callback_group = MutuallyExclusiveCallbackGroup()
+        self.rate_group = MutuallyExclusiveCallbackGroup()
+        self.publishers: list[Publisher] = []
+        self.subscriptions: list[Subscription] = []
+        self.clients: list[Client] = []
+        self.services: list[Service] = []
+        self.timers: list[Timer] = []
+        self.guards: list[GuardCondition] = []
+        self.waitables: list[WorkSource] = []
+        self.native_work: dict[Any, NativeWork] = {}
+        self.actor: ScriptActor
+        self.clock: Any = None
+        self.logger: NodeLogger
+        self.destroyed = False
+
+    def notify(self) -> None:
+        """New work: wake the executor that spins the node (called with the lock held)."""
+        executor = self.executor_ref() if self.executor_ref is not None else None
+        if executor is not None:
+            executor.wake()
+
+    def gated(self, entity: Any) -> None:
+        # On the runtime's thread: a native entity (a parameter service) has work.
+        with self.lock:
+            work = self.native_work.get(entity)
+            if work is None:
+                work = self.native_work[entity] = NativeWork(
+                    entity, self.default_callback_group, self.session.block
+                )
+            work.scheduled = True
+            self.notify()
+
+    def work_sources(self) -> list[WorkSource]:
+        """Every work source, in the order rclpy's executors look at them."""
+        return [
+            *self.timers,
+            *self.subscriptions,
+            *self.guards,
+            *self.clients,
+            *self.services,
+            *self.waitables,
+            *self.native_work.values(),
+        ]
+
+
+class Node(NativeNode):
+    """A ROS node as rclpy has it: subclass it, or ``rclpy.create_node(name)``.
+
+    Raises NotInitializedException before ``rclpy.init()``, RosArgsError for
+    malformed ``cli_args``, InvalidNameError for a bad name, and what the
+    native node raises (a duplicate name in the runtime).
+    """
+
+    def __init__(
+        self,
+        node_name: str,
+        *,
+        context: Context | None = None,
+        cli_args: Sequence[str] | None = None,
+        namespace: str | None = None,
+        use_global_arguments: bool = True,
+        enable_rosout: bool = True,
+        rosout_qos_profile: Any = None,
+        start_parameter_services: bool = True,
+        parameter_overrides: Sequence[Any] | None = None,
+        allow_undeclared_parameters: bool = False,
+        automatically_declare_parameters_from_overrides: bool = False,
+        enable_logger_service: bool = False,
+    ) -> None:
+        context = get_default_context() if context is None else context
+        if not context.ok() or context.session is None:
+            raise NotInitializedException("cannot create a node: rclpy.init() has not been called")
+        session = context.session
+        args = context.ros_args if use_global_arguments else RosArgs()
+        if cli_args:
+            args = args + parse(["--ros-args", *cli_args])[0]
+        setup = args.for_node(node_name, namespace)
+        # rclpy: the constructor's parameter_overrides win over the command line's.
+        own = {p.name: p.value for p in parameter_overrides or ()}
+        child = _ScriptChild(setup.name, setup.namespace, own, setup.remap)
+        state = ScriptNodeState(self, context, session)
+        self._rclpy = state
+        options = {
+            key: value
+            for key, value, default in (
+                ("allow_undeclared_parameters", allow_undeclared_parameters, False),
+                ("automatically_declare_parameters_from_overrides",
+                 automatically_declare_parameters_from_overrides, False),
+                ("start_parameter_services", start_parameter_services, True),
+            )
+            if value != default
+        }
+
+        def build() -> None:
+            state.actor = ScriptActor(session.dispatcher, session.loop, state.gated, self._callback_failed)
+            with spawning(SpawnRequest(session.runtime, child, state.actor)):
+                NativeNode.__init__(
+                    self, setup.name, namespace=setup.namespace, parameter_overrides=setup.params, **options
+                )
+            native_logger = NativeNode.get_logger(self)
+            state.clock = NativeNode.get_clock(self)
+            state.logger = NodeLogger(native_logger.name, state.clock.now_ns, _threadsafe(native_logger.sink, session))
+
+        session.call(build)
+        context.track_node(self)
+
+    def _callback_failed(self, error: BaseException) -> None:
+        NativeNode.get_logger(self).error(f"the rclpy overlay failed: {error!r}", exc_info=error)
+
+    # -- what rclpy nodes have beside the native methods -------------------------------
+
+    @property
+    def context(self) -> Context:
+        """The context the node was created in."""
+        return self._rclpy.context
+
+    @property
+    def handle(self) -> Node:
+        """Not None while the node lives (rclpy's rcl handle)."""
+        return self
+
+    @property
+    def executor(self) -> SpinningExecutor | None:
+        """The executor that spins the node, if any; setting it moves the node there."""
+        ref = self._rclpy.executor_ref
+        return ref() if ref is not None else None
+
+    @executor.setter
+    def executor(self, new_executor: SpinningExecutor | None) -> None:
+        current = self.executor
+        if current is new_executor:
+            return
+        if current is not None:
+            current.remove_node(self)
+        if new_executor is None:
+            self._rclpy.executor_ref = None
+        else:
+            self._rclpy.executor_ref = weakref.ref(new_executor)
+            new_executor.add_node(self)
+
+    @property
+    def default_callback_group(self) -> CallbackGroup:
+        """The group of entities created without ``callback_group=`` (mutually exclusive)."""
+        return self._rclpy.default_callback_group
+
+    @property
+    def publishers(self) -> list[Publisher]:
+        """The node's publishers."""
+        return list(self._rclpy.publishers)
+
+    @property
+    def subscriptions(self) -> list[Subscription]:
+        """The node's subscriptions."""
+        return list(self._rclpy.subscriptions)
+
+    @property
+    def clients(self) -> list[Client]:
+        """The node's clients."""
+        return list(self._rclpy.clients)
+
+    @property
+    def services(self) -> list[Service]:
+        """The node's services."""
+        return list(self._rclpy.services)
+
+    @property
+    def timers(self) -> list[Timer]:
+        """The node's timers."""
+        return list(self._rclpy.timers)
+
+    @property
+    def guards(self) -> list[GuardCondition]:
+        """The node's guard conditions."""
+        return list(self._rclpy.guards)
+
+    @property
+    def waitables(self) -> list[WorkSource]:
+        """The node's other work sources (action clients and servers)."""
+        return list(self._rclpy.waitables)
+
+    def get_logger(self) -> NodeLogger:
+        """The node's logger (usable from any thread)."""
+        return self._rclpy.logger
+
+    # -- entities ---------------------------------------------------------------------
+
+    def _group(self, callback_group: CallbackGroup | None, entity: Any) -> CallbackGroup:
+        group = self._rclpy.default_callback_group if callback_group is None else callback_group
+        group.add_entity(entity)
+        return group
+
+    def _wake_executor(self) -> None:
+        with self._rclpy.lock:
+            self._rclpy.notify()
+
+    def create_publisher(
+        self,
+        msg_type: type,
+        topic: str,
+        qos_profile: Any,
+        *,
+        callback_group: CallbackGroup | None = None,
+        **options: Any,
+    ) -> Publisher:
+        """A publisher of ``msg_type`` on ``topic`` (a QoSProfile or a depth)."""
+        native = self._rclpy.session.call(NativeNode.create_publisher, self, msg_type, topic, qos_profile, **options)
+        publisher = Publisher(self, native)
+        self._rclpy.publishers.append(publisher)
+        return publisher
+
+    def create_subscription(
+        self,
+        msg_type: type,
+        topic: str,
+        callback: Callable[..., Any],
+        qos_profile: Any,
+        *,
+        callback_group: CallbackGroup | None = None,
+        raw: bool = False,
+        **options: Any,
+    ) -> Subscription:
+        """Call ``callback(msg)`` (or ``callback(msg, info)``) for each message, while spun."""
+        if raw:
+            raise NotImplementedError(
+                "raw=True subscriptions are not supported: messages travel as Python objects here"
+            )
+        subscription = Subscription(self, msg_type, callback, None)
+        subscription.callback_group = self._group(callback_group, subscription)
+        self._create(subscription, NativeNode.create_subscription, msg_type, topic, subscription._catch,
+                     qos_profile, **options)
+        self._rclpy.subscriptions.append(subscription)
+        self._wake_executor()
+        return subscription
+
+    def create_timer(
+        self,
+        timer_period_sec: float,
+        callback: Callable[..., Any] | None,
+        callback_group: CallbackGroup | None = None,
+        clock: Any = None,
+        **options: Any,
+    ) -> Timer:
+        """Call ``callback()`` every ``timer_period_sec`` seconds of the node's clock, while spun."""
+        timer = Timer(self, callback, None)
+        timer.callback_group = self._group(callback_group, timer)
+        if clock is not None:
+            options["clock"] = clock
+        self._create(timer, NativeNode.create_timer, timer_period_sec, timer._catcher(), **options)
+        self._rclpy.timers.append(timer)
+        self._wake_executor()
+        return timer
+
+    def create_service(
+        self,
+        srv_type: type,
+        srv_name: str,
+        callback: Callable[[Any, Any], Any],
+        *,
+        qos_profile: Any = None,
+        callback_group: CallbackGroup | None = None,
+    ) -> Service:
+        """Answer ``srv_name`` with ``callback(request, response)``, while spun."""
+        service = Service(self, srv_type, callback, None)
+        service.callback_group = self._group(callback_group, service)
+        self._create(service, NativeNode.create_service, srv_type, srv_name, service._catch)
+        self._rclpy.services.append(service)
+        self._wake_executor()
+        return service
+
+    def create_client(
+        self,
+        srv_type: type,
+        srv_name: str,
+        *,
+        qos_profile: Any = None,
+        callback_group: CallbackGroup | None = None,
+    ) -> Client:
+        """A client of ``srv_name``: ``call_async(req)`` (a Future), ``call(req)``, ``wait_for_service``."""
+        native = self._rclpy.session.call(NativeNode.create_client, self, srv_type, srv_name)
+        client = Client(self, native, None)
+        client.callback_group = self._group(callback_group, client)
+        self._rclpy.clients.append(client)
+        return client
+
+    def create_guard_condition(
+        self, callback: Callable[[], Any] | None, callback_group: CallbackGroup | None = None
+    ) -> GuardCondition:
+        """A guard condition: ``trigger()`` it from any thread and ``callback`` runs at the next spin."""
+        guard = GuardCondition(self, callback, None)
+        guard.callback_group = self._group(callback_group, guard)
+        with self._rclpy.lock:
+            self._rclpy.guards.append(guard)
+        return guard
+
+    def create_rate(self, frequency: float, clock: Any = None) -> Rate:
+        """A Rate ticking ``frequency`` times per second; ``rate.sleep()`` needs the node spun."""
+        if frequency <= 0:
+            raise ValueError("frequency must be > 0")
+        timer = self.create_timer(1.0 / frequency, None, self._rclpy.rate_group, clock)
+        return Rate(timer, context=self._rclpy.context)
+
+    def add_waitable(self, waitable: WorkSource) -> None:
+        """Let the node's executor take work from ``waitable`` (what action clients and servers are)."""
+        with self._rclpy.lock:
+            self._rclpy.waitables.append(waitable)
+            self._rclpy.notify()
+
+    def remove_waitable(self, waitable: WorkSource) -> None:
+        """Stop taking work from ``waitable``."""
+        with self._rclpy.lock:
+            _discard(self._rclpy.waitables, waitable)
+
+    def _create(self, source: Any, create: Callable[..., Any], *args: Any, **options: Any) -> None:
+        # On the runtime's thread: the native entity, attached and driven before it can fire.
+        def build() -> None:
+            native = create(self, *args, **options)
+            source._attach(native)
+            self._rclpy.actor.drive(native)
+
+        self._rclpy.session.call(build)
+
+    # -- destroying ---------------------------------------------------------------------
+
+    def _destroy(self, kind: list[Any], entity: Any, destroy: Callable[..., Any] | None) -> bool:
+        with self._rclpy.lock:
+            if entity not in kind:
+                return False
+            kind.remove(entity)
+            self._rclpy.notify()
+        native = getattr(entity, "_native", None)
+        if destroy is not None and native is not None and not self._rclpy.destroyed:
+            def drop() -> None:
+                destroy(self, native)
+                self._rclpy.actor.forget(native)
+
+            self._rclpy.session.call(drop)
+        return True
+
+    def destroy_publisher(self, publisher: Any) -> bool:
+        """Destroy ``publisher``; whether it was the node's."""
+        return self._destroy(self._rclpy.publishers, publisher, NativeNode.destroy_publisher)
+
+    def destroy_subscription(self, subscription: Any) -> bool:
+        """Destroy ``subscription``; whether it was the node's."""
+        return self._destroy(self._rclpy.subscriptions, subscription, NativeNode.destroy_subscription)
+
+    def destroy_timer(self, timer: Any) -> bool:
+        """Destroy ``timer``; whether it was the node's."""
+        return self._destroy(self._rclpy.timers, timer, NativeNode.destroy_timer)
+
+    def destroy_service(self, service: Any) -> bool:
+        """Destroy ``service``; whether it was the node's."""
+        return self._destroy(self._rclpy.services, service, NativeNode.destroy_service)
+
+    def destroy_client(self, client: Any) -> bool:
+        """Destroy ``client``; whether it was the node's."""
+        return self._destroy(self._rclpy.clients, client, NativeNode.destroy_client)
+
+    def destroy_guard_condition(self, guard: GuardCondition) -> bool:
+        """Destroy ``guard``; whether it was the node's."""
+        return self._destroy(self._rclpy.guards, guard, None)
+
+    def destroy_rate(self, rate: Rate) -> bool:
+        """Destroy ``rate`` and its timer."""
+        rate.destroy()
+        return self.destroy_timer(rate._timer)
+
+    def destroy_node(self) -> None:
+        """Destroy the node and everything it has; its executor forgets it.  Idempotent."""
+        state = self._rclpy
+        if state.destroyed:
+            return
+        executor = self.executor
+        if executor is not None:
+            executor.remove_node(self)
+        if state.session.running:
+            state.session.call(NativeNode.destroy_node, self)
+        with state.lock:
+            state.destroyed = True
+            for kind in (state.publishers, state.subscriptions, state.clients, state.services, state.timers,
+                         state.guards, state.waitables):
+                kind.clear()
+            state.native_work.clear()
+        state.context.untrack_node(self)
+
+
+def _discard(entities: list[Any], entity: Any) -> None:
+    if entity in entities:
+        entities.remove(entity)
+
+
+def _threadsafe(sink: Callable[..., None] | None, session: Session) -> Callable[..., None] | None:
+    # A script thread's log record reaches /rosout through the runtime's thread.
+    if sink is None:
+        return None
+
+    def forward(*record: Any) -> None:
+        if session.running:
+            session.loop.call_soon_threadsafe(sink, *record)
+
+    return forward
+
+
+# Every other native method (parameters, graph queries...) runs on the runtime's thread.
+_DIRECT = {"get_name", "get_namespace", "get_fully_qualified_name", "get_clock"}
+
+
+def _on_loop_thread(method: Callable[..., Any]) -> Callable[..., Any]:
+    @functools.wraps(method)
+    def call(self: Node, *args: Any, **kwargs: Any) -> Any:
+        return self._rclpy.session.call(method, self, *args, **kwargs)
+
+    return call
+
+
+for _klass in reversed(NativeNode.__mro__):
+    for _name, _value in vars(_klass).items():
+        if (
+            not _name.startswith("_")
+            and _name not in _DIRECT
+            and _name not in Node.__dict__
+            and callable(_value)
+            and not isinstance(_value, (staticmethod, classmethod, type))
+        ):
+            setattr(Node, _name, _on_loop_thread(_value))

@@ -1,0 +1,62 @@
+"""``rclpy.publisher``: a script node's publisher; ``publish`` runs on the runtime's thread."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from actors.compat.dispatch import NativeProxy, ScriptNode
+
+
+__all__ = ["Publisher"]
+
+
+class Publisher(NativeProxy):
+    """Publishes on one topic (``Node.create_publisher``); other attributes are the native publisher's."""
+
+    def __init__(self, node: ScriptNode, native: Any) -> None:
+        self._node = node
+        self._native = native
+        self._session = node._rclpy.session
+
+    def publish(self, msg: Any) -> None:
+        """Deliver ``msg``; TypeError (or a validation error) if it does not fit the topic's type.
+
+        Returns once every subscription in the runtime has it, so the script may
+        reuse or change ``msg`` afterwards.
+        """
+        self._session.call(_publish, self._native, msg, self._session.dispatcher)
+
+    @property
+    def topic_name(self) -> str:
+        """The full topic name."""
+        return str(self._native.topic_name)
+
+    @property
+    def msg_type(self) -> type:
+        """The message type."""
+        return self._native.msg_type  # type: ignore[no-any-return]
+
+    @property
+    def qos_profile(self) -> Any:
+        """The QoS the publisher offers."""
+        return self._native.qos
+
+    def get_subscription_count(self) -> int:
+        """How many subscriptions it feeds."""
+        return int(self._session.call(self._native.get_subscription_count))
+
+    def wait_for_all_acked(self, timeout: Any = None) -> bool:
+        """Always True: delivery in one process is acknowledged when publish returns."""
+        return True
+
+    def assert_liveliness(self) -> None:
+        """Nothing to assert: a publisher of a running node is alive."""
+
+    def destroy(self) -> None:
+        """Stop publishing."""
+        self._node.destroy_publisher(self)
+
+
+def _publish(native: Any, msg: Any, dispatcher: Any) -> None:
+    native.publish(msg)
+    dispatcher.flush()  # the script subscribers' queues have it now

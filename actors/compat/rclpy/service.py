@@ -1,0 +1,77 @@
+"""``rclpy.service``: a script node's service server.
+
+The native service's handler is the overlay's catcher, an ``async`` function
+that queues the request here, wakes the node's executor, and awaits the
+response that the script's callback returns on the executor's thread.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections import deque
+from collections.abc import Callable
+from typing import Any
+
+from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
+from actors.compat.rclpy.task import await_or_execute
+
+
+__all__ = ["Service"]
+
+
+class Service(WorkSource, NativeProxy):
+    """Answers requests while its node is spun (``Node.create_service``)."""
+
+    def __init__(self, node: ScriptNode, srv_type: type, callback: Callable[..., Any], callback_group: Any) -> None:
+        self._node = node
+        self._session = node._rclpy.session
+        self.srv_type = srv_type
+        self.callback = callback
+        self.callback_group = callback_group
+        self._native: Any = None
+        self._requests: deque[tuple[Any, Any, asyncio.Future[Any]]] = deque()
+
+    async def _catch(self, request: Any, response: Any) -> Any:
+        # On the runtime's thread: the native service's handler.
+        answer: asyncio.Future[Any] = asyncio.get_running_loop().create_future()
+        with self._session.lock:
+            self._requests.append((request, response, answer))
+            self._node._rclpy.notify()
+        return await answer
+
+    def _ready(self) -> bool:
+        return bool(self._requests)
+
+    def _take(self) -> Handler | None:
+        if not self._requests:
+            return None
+        request, response, answer = self._requests.popleft()
+        callback, loop = self.callback, self._session.loop
+
+        async def run() -> None:
+            try:
+                result = await await_or_execute(callback, request, response)
+            except Exception as exc:
+                loop.call_soon_threadsafe(_settle, answer, None, exc)
+                raise
+            loop.call_soon_threadsafe(_settle, answer, result, None)
+
+        return run
+
+    @property
+    def service_name(self) -> str:
+        """The full service name."""
+        return str(self._native.service_name)
+
+    def destroy(self) -> None:
+        """Stop serving."""
+        self._node.destroy_service(self)
+
+
+def _settle(answer: asyncio.Future[Any], result: Any, error: BaseException | None) -> None:
+    if answer.done():  # the node was destroyed meanwhile
+        return
+    if error is not None:
+        answer.set_exception(error)
+    else:
+        answer.set_result(result)

@@ -1,0 +1,112 @@
+"""``rclpy.subscription``: a script node's subscription, its queue, and ``MessageInfo``.
+
+The native subscription's callback is the overlay's catcher: on the runtime's
+thread it moves each message into this queue, bounded as the QoS says (a full
+KEEP_LAST queue drops its oldest message, counted as the native drop count),
+and wakes the node's executor, which takes one message at a time.
+"""
+
+from __future__ import annotations
+
+import inspect
+import sys
+from collections import deque
+from collections.abc import Callable
+from typing import Any, TypedDict
+
+from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
+from actors.compat.rclpy.task import await_or_execute
+from actors.topics import HistoryPolicy
+
+
+__all__ = ["Subscription", "MessageInfo"]
+
+
+class MessageInfo(TypedDict):
+    """What a two-argument subscription callback receives beside the message."""
+
+    source_timestamp: int
+    received_timestamp: int
+    publication_sequence_number: int | None
+    reception_sequence_number: int
+
+
+def _wants_info(callback: Callable[..., Any]) -> bool:
+    try:
+        inspect.signature(callback).bind(object())
+    except TypeError:
+        return True
+    except ValueError:  # no signature (a builtin): give it the message only
+        return False
+    return False
+
+
+class Subscription(WorkSource, NativeProxy):
+    """Receives one topic (``Node.create_subscription``); other attributes are the native one's."""
+
+    def __init__(self, node: ScriptNode, msg_type: type, callback: Callable[..., Any], callback_group: Any) -> None:
+        self._node = node
+        self._session = node._rclpy.session
+        self.msg_type = msg_type
+        self.callback = callback
+        self.callback_group = callback_group
+        self.raw = False
+        self._native: Any = None
+        self._queue: deque[tuple[Any, int]] = deque()
+        self._limit = sys.maxsize
+        self._received = 0
+        self._with_info = _wants_info(callback)
+        self._notify = node._rclpy.notify
+
+    def _attach(self, native: Any) -> None:
+        self._native = native
+        qos = native.qos
+        self._limit = qos.depth if qos.history == HistoryPolicy.KEEP_LAST else sys.maxsize
+
+    def _catch(self, msg: Any) -> None:
+        # On the runtime's thread, for each message the native subscription delivers.
+        with self._session.lock:
+            if len(self._queue) >= self._limit:
+                self._queue.popleft()
+                self._native.dropped += 1
+            self._queue.append((msg, self._node._rclpy.clock.now_ns()))
+            self._notify()
+
+    def _ready(self) -> bool:
+        return bool(self._queue)
+
+    def _take(self) -> Handler | None:
+        if not self._queue:
+            return None
+        msg, stamp = self._queue.popleft()
+        self._received += 1
+        args: tuple[Any, ...] = (msg,)
+        if self._with_info:
+            info: MessageInfo = {
+                "source_timestamp": stamp,
+                "received_timestamp": stamp,
+                "publication_sequence_number": None,
+                "reception_sequence_number": self._received,
+            }
+            args = (msg, info)
+        callback = self.callback
+
+        async def run() -> None:
+            await await_or_execute(callback, *args)
+
+        return run
+
+    @property
+    def topic_name(self) -> str:
+        """The full topic name."""
+        return str(self._native.topic_name)
+
+    @property
+    def qos_profile(self) -> Any:
+        """The QoS the subscription requests."""
+        return self._native.qos
+
+    def destroy(self) -> None:
+        """Stop receiving."""
+        self._node.destroy_subscription(self)
+

@@ -1,0 +1,144 @@
+"""``rclpy.timer``: a script node's timer, and ``Rate``.
+
+The native timer keeps time on the runtime's clock (absolute deadlines, skipped
+ticks); its callback is the overlay's catcher, which marks the timer ready.
+Ticks that come while the timer is still ready merge into one, as an rcl timer
+that nobody took is called once.
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Callable
+from typing import Any
+
+from actors.compat.activity import Waiter
+from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
+from actors.compat.rclpy.exceptions import ROSInterruptException
+from actors.compat.rclpy.task import await_or_execute
+
+
+__all__ = ["Timer", "Rate"]
+
+
+class Timer(WorkSource, NativeProxy):
+    """Calls ``callback`` every period while its node is spun (``Node.create_timer``)."""
+
+    def __init__(self, node: ScriptNode, callback: Callable[..., Any] | None, callback_group: Any) -> None:
+        self._node = node
+        self._session = node._rclpy.session
+        self.callback = callback
+        self.callback_group = callback_group
+        self._native: Any = None
+        self._fired: tuple[Any, ...] | None = None
+
+    def _catcher(self) -> Callable[..., None]:
+        def catch(*args: Any) -> None:
+            with self._session.lock:
+                self._fired = args
+                self._node._rclpy.notify()
+
+        # The native timer reads the callback's signature (a TimerInfo parameter): show it the script's.
+        return functools.wraps(self.callback)(catch) if self.callback is not None else catch
+
+    def _ready(self) -> bool:
+        return self._fired is not None
+
+    def _take(self) -> Handler | None:
+        args, self._fired = self._fired, None
+        callback = self.callback
+        if args is None or callback is None:
+            return None
+
+        async def run() -> None:
+            await await_or_execute(callback, *args)
+
+        return run
+
+    @property
+    def timer_period_ns(self) -> int:
+        """The period in nanoseconds."""
+        return int(self._native.timer_period_ns)
+
+    def cancel(self) -> None:
+        """Stop calling back until :meth:`reset`."""
+        with self._session.lock:
+            self._fired = None
+        self._session.call(self._native.cancel)
+
+    def reset(self) -> None:
+        """Start the period over from now (also revives a canceled timer)."""
+        with self._session.lock:
+            self._fired = None
+        self._session.call(self._native.reset)
+
+    def is_ready(self) -> bool:
+        """Whether a tick waits to be called back."""
+        return self._fired is not None
+
+    def destroy(self) -> None:
+        """Cancel the timer and remove it from its node."""
+        self._node.destroy_timer(self)
+
+
+class Rate:
+    """Sleeps until the next tick of its timer: ``rate.sleep()`` (``Node.create_rate``).
+
+    As in rclpy, the ticks come from a timer of the node, so the node must be
+    spun (by another thread) while a thread sleeps on the rate.
+    """
+
+    def __init__(self, timer: Timer, *, context: Any) -> None:
+        self._timer = timer
+        self._session = timer._session
+        self._ticks = 0
+        self._waiters: set[Waiter] = set()
+        self._is_shutdown = False
+        self._is_destroyed = False
+        self._context = context
+        timer.callback = self._tick
+        context.on_shutdown(self._on_shutdown)
+        context.add_waker(self)
+
+    def _tick(self) -> None:
+        with self._session.lock:
+            self._ticks += 1
+            for waiter in self._waiters:
+                waiter.wake()
+
+    def wake(self) -> None:
+        """Wake the sleepers to look at the context (it shut down)."""
+        with self._session.lock:
+            for waiter in self._waiters:
+                waiter.wake()
+
+    def _on_shutdown(self) -> None:
+        self._is_shutdown = True
+        self.destroy()
+
+    def destroy(self) -> None:
+        """Wake the sleepers; the rate cannot sleep any more."""
+        with self._session.lock:
+            self._is_destroyed = True
+            for waiter in self._waiters:
+                waiter.wake()
+
+    def sleep(self) -> None:
+        """Block until the next tick; ROSInterruptException if the context shuts down meanwhile."""
+        if self._is_shutdown or not self._context.ok():
+            raise ROSInterruptException()
+        if self._is_destroyed:
+            raise RuntimeError("Rate cannot sleep because it has been destroyed")
+        waiter = Waiter(self._session.activity)
+        with self._session.lock:
+            start = self._ticks
+            self._waiters.add(waiter)
+        try:
+            self._session.wait_until(
+                lambda: self._ticks != start or self._is_destroyed or not self._context.ok(), None, waiter
+            )
+        finally:
+            with self._session.lock:
+                self._waiters.discard(waiter)
+        if self._is_shutdown or not self._context.ok():
+            raise ROSInterruptException()

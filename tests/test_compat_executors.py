@@ -1,0 +1,371 @@
+"""rclpy's blocking API on actors: spinning, executors, callback groups, futures, waits, virtual time.
+
+These tests are the script: they call ``actors.compat.rclpy`` on the test's thread, beside a
+virtual-clock session, as a program under ``actors run --clock virtual`` would.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from typing import Any
+
+import pytest
+
+import actors.compat.rclpy as rclpy
+from actors.compat import Session, use_session
+from actors.compat.rclpy.callback_groups import (
+    CallbackGroup,
+    MutuallyExclusiveCallbackGroup,
+    ReentrantCallbackGroup,
+)
+from actors.compat.rclpy.executors import (
+    ExternalShutdownException,
+    MultiThreadedExecutor,
+    SingleThreadedExecutor,
+    TimeoutException,
+)
+from actors.compat.rclpy.qos import QoSProfile
+from actors.compat.rclpy.task import Future
+from actors.compat.rclpy.wait_for_message import wait_for_message
+from actors.node import Node as NativeNode
+from interfaces.example_interfaces.srv import AddTwoInts
+from interfaces.std_msgs.msg import Int64, String
+
+
+@pytest.fixture
+def session():
+    with Session(clock="virtual") as session, use_session(session):
+        rclpy.init(args=[])
+        try:
+            yield session
+        finally:
+            rclpy.get_default_context().finish()
+            rclpy.try_shutdown()
+
+
+def now(session: Session) -> float:
+    return session.loop.time()
+
+
+def spawn_native(session: Session, cls: type, **options: Any) -> Any:
+    return session.call(session.runtime.spawn, cls, **options)
+
+
+class Adder(NativeNode):
+    def __init__(self) -> None:
+        super().__init__("native_adder")
+        self.create_service(AddTwoInts, "add", lambda req, res: AddTwoInts.Response(sum=req.a + req.b))
+
+
+class Numbers(NativeNode):
+    def __init__(self) -> None:
+        super().__init__("numbers")
+        self.pub = self.create_publisher(Int64, "n", 100)
+
+
+def test_callbacks_run_only_while_spun_and_on_the_spinning_thread(session):
+    node = rclpy.create_node("ticker")
+    ran: list[tuple[float, threading.Thread]] = []
+    node.create_timer(0.1, lambda: ran.append((now(session), threading.current_thread())))
+    session.sleep(1.05)  # ten periods pass with nobody spinning
+    assert ran == []
+    rclpy.spin_once(node, timeout_sec=0)  # the ticks nobody took are one call, as an rcl timer's
+    assert ran == [(1.05, threading.current_thread())]
+    rclpy.spin_once(node)  # waits for the next tick: virtual time moves while the thread waits
+    assert [t for t, _ in ran] == [1.05, pytest.approx(1.1)]
+
+
+def test_spin_once_runs_one_callback_and_a_timeout_in_virtual_seconds(session):
+    node = rclpy.create_node("two")
+    heard: list[str] = []
+    node.create_subscription(String, "a", lambda m: heard.append(m.data), 10)
+    pub = node.create_publisher(String, "a", 10)
+    pub.publish(String(data="one"))
+    pub.publish(String(data="two"))
+    rclpy.spin_once(node, timeout_sec=0)
+    assert heard == ["one"]
+    rclpy.spin_once(node, timeout_sec=0)
+    assert heard == ["one", "two"]
+    start = now(session)
+    rclpy.spin_once(node, timeout_sec=2.5)  # nothing left: returns after 2.5 virtual seconds
+    assert now(session) - start == pytest.approx(2.5)
+
+
+def test_a_subscription_keeps_its_depth_while_nobody_spins(session):
+    node = rclpy.create_node("slow")
+    heard: list[int] = []
+    sub = node.create_subscription(Int64, "n", lambda m: heard.append(m.data), QoSProfile(depth=2))
+    numbers = spawn_native(session, Numbers)
+    for i in range(5):
+        session.call(numbers.pub.publish, Int64(data=i))
+    session.sleep(0.1)
+    while heard != [3, 4]:
+        rclpy.spin_once(node, timeout_sec=0)
+        assert len(heard) <= 2
+    assert sub.dropped == 3  # counted as the native subscription's drops (doctor reports them)
+
+
+def test_wait_for_service_returns_false_after_its_timeout_then_true(session):
+    node = rclpy.create_node("asker")
+    client = node.create_client(AddTwoInts, "add")
+    start = now(session)
+    assert client.wait_for_service(timeout_sec=1.0) is False
+    assert now(session) - start == pytest.approx(1.0)
+    spawn_native(session, Adder)
+    assert client.wait_for_service(timeout_sec=1.0) is True
+    future = client.call_async(AddTwoInts.Request(a=2, b=3))
+    session.sleep(1.0)
+    assert not future.done()  # the response waits for the node to be spun, as in rclpy
+    rclpy.spin_until_future_complete(node, future)
+    assert future.result().sum == 5
+
+
+def test_spin_until_future_complete_gives_up_after_its_timeout(session):
+    node = rclpy.create_node("patient")
+    start = now(session)
+    future: Future[Any] = Future()
+    rclpy.spin_until_future_complete(node, future, timeout_sec=3.0)
+    assert not future.done()
+    assert now(session) - start == pytest.approx(3.0)
+
+
+def test_a_synchronous_call_while_another_thread_spins(session):
+    spawn_native(session, Adder)
+    node = rclpy.create_node("caller")
+    client = node.create_client(AddTwoInts, "add")
+    executor = SingleThreadedExecutor()
+    executor.add_node(node)
+    spinner = threading.Thread(target=_spin_quietly, args=(executor,), daemon=True)
+    spinner.start()
+    assert client.call(AddTwoInts.Request(a=40, b=2)).sum == 42
+    executor.shutdown()
+
+
+def test_a_synchronous_call_times_out_in_virtual_seconds(session):
+    node = rclpy.create_node("nobody_answers")
+    client = node.create_client(AddTwoInts, "missing")
+    start = now(session)
+    with pytest.raises(TimeoutError):
+        client.call(AddTwoInts.Request(a=1, b=1), timeout_sec=2.0)
+    assert now(session) - start == pytest.approx(2.0)
+
+
+def _spin_quietly(executor: Any) -> None:
+    try:
+        executor.spin()
+    except ExternalShutdownException:
+        pass
+
+
+def test_a_coroutine_callback_awaits_a_service_while_the_executor_goes_on(session):
+    spawn_native(session, Adder)
+    node = rclpy.create_node("async_caller")
+    group = ReentrantCallbackGroup()
+    client = node.create_client(AddTwoInts, "add", callback_group=group)
+    results: list[int] = []
+    ticks: list[float] = []
+
+    async def ask() -> None:
+        timer.cancel()
+        response = await client.call_async(AddTwoInts.Request(a=1, b=2))
+        results.append(response.sum)
+
+    timer = node.create_timer(0.5, ask, callback_group=group)
+    node.create_timer(0.2, lambda: ticks.append(now(session)))
+    executor = SingleThreadedExecutor()
+    executor.add_node(node)
+    while not results:
+        executor.spin_once()
+    assert results == [3]
+    assert ticks == [pytest.approx(0.2), pytest.approx(0.4)]
+
+
+def test_multi_threaded_executor_runs_reentrant_callbacks_side_by_side(session):
+    node = rclpy.create_node("parallel")
+    spans: dict[str, tuple[float, float]] = {}
+
+    def work(name: str) -> None:
+        start = now(session)
+        session.sleep(1.0)  # blocks its pool thread for a virtual second
+        spans[name] = (start, now(session))
+
+    group = ReentrantCallbackGroup()
+    a = node.create_timer(0.5, lambda: (a.cancel(), work("a")), callback_group=group)
+    b = node.create_timer(0.5, lambda: (b.cancel(), work("b")), callback_group=group)
+    executor = MultiThreadedExecutor(num_threads=2)
+    executor.add_node(node)
+    while len(spans) < 2:
+        executor.spin_once(timeout_sec=0.5)
+    executor.shutdown()
+    assert spans == {"a": (0.5, 1.5), "b": (0.5, 1.5)}
+
+
+def test_a_mutually_exclusive_group_runs_one_callback_at_a_time(session):
+    node = rclpy.create_node("serial")
+    spans: list[tuple[float, float]] = []
+
+    def work() -> None:
+        start = now(session)
+        session.sleep(1.0)
+        spans.append((start, now(session)))
+
+    group = MutuallyExclusiveCallbackGroup()
+    a = node.create_timer(0.5, lambda: (a.cancel(), work()), callback_group=group)
+    b = node.create_timer(0.5, lambda: (b.cancel(), work()), callback_group=group)
+    executor = MultiThreadedExecutor(num_threads=2)
+    executor.add_node(node)
+    while len(spans) < 2:
+        executor.spin_once(timeout_sec=0.5)
+    executor.shutdown()
+    assert spans == [(0.5, 1.5), (1.5, 2.5)]
+
+
+def test_a_callback_group_of_ones_own_decides(session):
+    class EveryOther(CallbackGroup):
+        def __init__(self) -> None:
+            super().__init__()
+            self.asked = 0
+
+        def can_execute(self, entity: Any) -> bool:
+            return True
+
+        def beginning_execution(self, entity: Any) -> bool:
+            self.asked += 1
+            return self.asked % 2 == 1
+
+        def ending_execution(self, entity: Any) -> None:
+            pass
+
+    node = rclpy.create_node("picky")
+    ran: list[float] = []
+    group = EveryOther()
+    node.create_timer(1.0, lambda: ran.append(now(session)), callback_group=group)
+    for _ in range(4):
+        rclpy.spin_once(node, timeout_sec=1.5)
+    # Refused at 2.0, the tick stays ready and runs at the next spin, as in rclpy.
+    assert ran == [1.0, 2.0]
+    assert group.asked == 4
+
+
+def test_a_custom_executor_runs_handlers_on_threads_of_its_own(session):
+    from concurrent.futures import ThreadPoolExecutor
+
+    from actors.compat.rclpy.executors import Executor
+
+    class Pooled(Executor):
+        def __init__(self) -> None:
+            super().__init__()
+            self.pool = ThreadPoolExecutor(max_workers=1)
+
+        def spin_once(self, timeout_sec: float | None = None) -> None:
+            try:
+                handler, _entity, _node = self.wait_for_ready_callbacks(timeout_sec=timeout_sec)
+            except TimeoutException:
+                return
+            self.pool.submit(handler)
+
+    node = rclpy.create_node("pooled")
+    threads: list[str] = []
+    node.create_timer(0.5, lambda: threads.append(threading.current_thread().name))
+    executor = Pooled()
+    executor.add_node(node)
+    while len(threads) < 3:
+        executor.spin_once(timeout_sec=1.0)
+    executor.pool.shutdown()
+    assert all(name != threading.current_thread().name for name in threads)
+
+
+def test_guard_conditions_run_their_callback_at_the_next_spin(session):
+    node = rclpy.create_node("guarded")
+    ran: list[threading.Thread] = []
+    guard = node.create_guard_condition(lambda: ran.append(threading.current_thread()))
+    other = threading.Thread(target=guard.trigger)
+    other.start()
+    other.join()
+    assert ran == []
+    rclpy.spin_once(node, timeout_sec=0)
+    assert ran == [threading.current_thread()]
+
+
+def test_rate_sleep_paces_a_loop_while_another_thread_spins(session):
+    node = rclpy.create_node("paced")
+    rate = node.create_rate(4)
+    executor = SingleThreadedExecutor()
+    executor.add_node(node)
+    threading.Thread(target=_spin_quietly, args=(executor,), daemon=True).start()
+    stamps = []
+    for _ in range(3):
+        rate.sleep()
+        stamps.append(now(session))
+    assert stamps == [pytest.approx(0.25), pytest.approx(0.5), pytest.approx(0.75)]
+
+
+def test_wait_for_message_without_spinning(session):
+    node = rclpy.create_node("waiter")
+    numbers = spawn_native(session, Numbers)
+    session.call(session.loop.call_later, 2.0, numbers.pub.publish, Int64(data=7))
+    ok, msg = wait_for_message(Int64, node, "n", time_to_wait=5.0)
+    assert (ok, msg.data, now(session)) == (True, 7, 2.0)
+    assert wait_for_message(Int64, node, "n", time_to_wait=1.0) == (False, None)
+    assert now(session) == 3.0
+
+
+def test_an_exception_in_a_callback_leaves_spin_once(session):
+    node = rclpy.create_node("raises")
+    node.create_timer(0.1, lambda: 1 / 0)
+    with pytest.raises(ZeroDivisionError):
+        rclpy.spin_once(node)
+
+
+def test_shutdown_from_another_thread_ends_spin(session):
+    node = rclpy.create_node("stopped")
+    stopper = threading.Thread(target=lambda: (session.sleep(5.0), rclpy.shutdown()))
+    stopper.start()
+    rclpy.spin(node)  # returns, as rclpy's does when rclpy.shutdown() is called
+    stopper.join()
+    assert now(session) == 5.0
+    assert not rclpy.ok()
+
+
+def test_an_interrupt_makes_spin_raise_as_a_signal_does(session):
+    node = rclpy.create_node("interrupted")
+    context = rclpy.get_default_context()
+    stopper = threading.Thread(target=lambda: (session.sleep(2.0), context.interrupt()))
+    stopper.start()
+    with pytest.raises(ExternalShutdownException):
+        rclpy.spin(node)
+    stopper.join()
+    assert now(session) == 2.0
+
+
+def test_virtual_time_stands_still_while_the_script_thread_is_busy(session):
+    node = rclpy.create_node("busy")
+    ticks: list[float] = []
+    spawn_native(session, Numbers)  # a graph node beside it, with its parameter services
+    node.create_timer(0.01, lambda: ticks.append(now(session)))
+    start = now(session)
+    deadline = time.monotonic() + 0.05
+    while time.monotonic() < deadline:  # real work, 50 ms of it
+        pass
+    assert now(session) == start
+    rclpy.spin_once(node)
+    assert ticks == [pytest.approx(start + 0.01)]
+
+
+def test_parameter_requests_wait_for_the_spin(session):
+    from actors.params import Parameter
+    from interfaces.rcl_interfaces.srv import SetParameters
+
+    node = rclpy.create_node("tunable")
+    node.declare_parameter("speed", 1.0)
+    asker = spawn_native(session, Numbers)
+    client = session.call(asker.create_client, SetParameters, "/tunable/set_parameters")
+    request = SetParameters.Request(parameters=[Parameter("speed", value=2.0).to_parameter_msg()])
+    answer = session.call(client.call_async, request)
+    session.sleep(1.0)
+    assert not answer.done()  # nobody spins the script's node: rclpy would not answer either
+    assert node.get_parameter("speed").value == 1.0
+    rclpy.spin_once(node, timeout_sec=0)
+    assert answer.done() and answer.result().results[0].successful
+    assert node.get_parameter("speed").value == 2.0

@@ -1,0 +1,114 @@
+"""``actors run SCRIPT.py``: unmodified rclpy programs, their arguments, output and exit codes."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+
+import pytest
+
+from conftest import ROOT, TESTS, python_env
+
+SCRIPTS = ROOT / "scripts"
+TEST_SCRIPTS = TESTS / "rclpy_scripts"
+
+
+def actors_run(*args: str, timeout: float = 60) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-m", "actors", "run", *args],
+        cwd=ROOT, env=python_env(), capture_output=True, text=True, timeout=timeout,
+    )
+
+
+def script(name: str) -> str:
+    return str(SCRIPTS / name if (SCRIPTS / name).exists() else TEST_SCRIPTS / name)
+
+
+def test_a_publisher_on_the_virtual_clock_logs_on_stderr_with_virtual_stamps():
+    done = actors_run("--clock", "virtual", "--duration", "1.1", script("talker.py"))
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == ""
+    assert done.stderr.splitlines() == [
+        f'[INFO] [{0.25 * (i + 1):.9f}] [talker]: sent count {i}' for i in range(4)
+    ]
+
+
+def test_a_subscriber_beside_a_graph_hears_its_talker():
+    done = actors_run("--graph", str(SCRIPTS / "with_talker.toml"), "--clock", "virtual", "--duration", "1.6",
+                      script("listener.py"))
+    assert done.returncode == 0, done.stderr
+    heard = [line for line in done.stderr.splitlines() if "[listener]" in line]
+    assert heard == [
+        f'[INFO] [{0.5 * (i + 1):.9f}] [listener]: got Hello World: {i}' for i in range(3)
+    ]
+
+
+def test_a_client_waits_for_a_late_service_then_uses_its_arguments():
+    done = actors_run("--graph", str(SCRIPTS / "with_server.toml"), "--clock", "virtual", script("add_two_ints_client.py"),
+                      "2", "3")
+    assert done.returncode == 0, done.stderr
+    lines = done.stderr.splitlines()
+    # wait_for_service(timeout_sec=1.0) really waits: one line per virtual second until the server is up.
+    assert lines[:2] == ["[INFO] [1.000000000] [ask_adder]: no adder yet", "[INFO] [2.000000000] [ask_adder]: no adder yet"]
+    assert lines[-1] == "[INFO] [2.500000000] [ask_adder]: 2 + 3 = 5"
+
+
+def test_a_service_answers_a_graph_client():
+    done = actors_run("--graph", str(SCRIPTS / "with_client.toml"), "--clock", "virtual", "--duration", "1",
+                      script("add_two_ints_server.py"))
+    assert done.returncode == 0, done.stderr
+    assert "[adder]: adding 20 and 22" in done.stderr
+    assert "[minimal_client_async]: Result of add_two_ints: for 20 + 22 = 42" in done.stderr
+
+
+def test_the_wall_clock_works_too():
+    done = actors_run("--duration", "0.6", script("talker.py"))
+    assert done.returncode == 0, done.stderr
+    assert [line.split("]: ")[1] for line in done.stderr.splitlines()] == ["sent count 0", "sent count 1"]
+
+
+def test_script_arguments_exit_code_and_ros_arguments():
+    done = actors_run(script("exits.py"), "7", "x", "--ros-args", "-r", "__ns:=/robot", "--", "y")
+    assert done.returncode == 7, done.stderr
+    assert done.stdout.splitlines() == ["args: ['7', 'x', 'y']", "namespace: /robot"]
+
+
+def test_a_callback_that_raises_ends_the_script_with_its_traceback():
+    done = actors_run("--clock", "virtual", "--duration", "5", script("broken.py"))
+    assert done.returncode == 1
+    assert "ZeroDivisionError: division by zero" in done.stderr
+    assert 'File "' + script("broken.py") in done.stderr
+    assert "launcher.py" not in done.stderr and "runpy" not in done.stderr
+
+
+@pytest.mark.parametrize(
+    ("args", "problem"),
+    [
+        (["nowhere.py"], "error: nowhere.py: no such script"),
+        ([script("exits.py"), "--ros-args", "-r", "bad"], "error: --ros-args: -r 'bad': expected [node:]name:=value"),
+        (["--graph", "nowhere.toml", script("exits.py")], "nowhere.toml"),
+        (["--duration", "-1", script("exits.py")], "error: --duration must be > 0 seconds, got -1.0"),
+    ],
+)
+def test_bad_input_is_one_line_and_exit_2(args, problem):
+    done = actors_run(*args)
+    assert done.returncode == 2
+    assert done.stderr.strip().splitlines() == [done.stderr.strip()]
+    assert problem in done.stderr
+
+
+def test_ctrl_c_stops_a_spinning_script_gracefully():
+    # talker.py does not catch KeyboardInterrupt: the launcher still exits 0, without a traceback.
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "actors", "run", script("talker.py")],
+        cwd=ROOT, env=python_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )
+    assert proc.stderr is not None
+    first = proc.stderr.readline()  # the first message: the script is spinning
+    assert "sent count 0" in first
+    os.kill(proc.pid, signal.SIGINT)
+    _, err = proc.communicate(timeout=30)
+    assert proc.returncode == 0, err
+    assert "Traceback" not in err
