@@ -45,6 +45,7 @@ __all__ = [
     "get_logger_level",
     "get_logger_effective_level",
     "get_logging_severity_from_string",
+    "console_unless_configured",
 ]
 
 
@@ -287,3 +288,17 @@ def configure_console(level: int = INFO, stream: Any = None) -> logging.Handler:
     root.setLevel(level)
     root.propagate = False
     return handler
+
+
+def console_unless_configured(level: int = INFO) -> logging.Handler | None:
+    """Print actors' records on stderr at ``level``, as rclpy does, unless logging is configured.
+
+    Configured means: the root logger has a handler (``logging.basicConfig``,
+    pytest's capture), or the ``actors`` logger has a handler or a level of its
+    own.  Then nothing changes and None is returned.  A runtime calls this as
+    it starts, so an embedded graph's nodes are heard without any set-up.
+    """
+    ours = logging.getLogger(ROOT_LOGGER)
+    if logging.getLogger().handlers or ours.handlers or ours.level != logging.NOTSET:
+        return None
+    return configure_console(level, sys.stderr)

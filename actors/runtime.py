@@ -23,7 +23,7 @@ import anyio.abc
 from actors.clock import ROSClock
 from actors.errors import InvalidNameError
 from actors.introspection import GraphView
-from actors.log import NodeLogger
+from actors.log import NodeLogger, console_unless_configured
 from actors.node import Node, NodeCore, SpawnRequest, spawning
 from actors.services import ServiceTable
 from actors.supervisor import Child, RestartType, Supervisor, SupervisorPolicy
@@ -87,6 +87,7 @@ class Runtime:
         if self._state != "unopened":
             raise RuntimeError(f"runtime {self.name!r} is {self._state}; a Runtime is entered once")
         self.loop: asyncio.AbstractEventLoop = asyncio.get_running_loop()
+        console_unless_configured()  # INFO on stderr as rclpy prints it, unless the app chose
         self.clock = ROSClock(self.loop)
         self.deadlines = Deadlines(self.loop)
         self._rosout = self._runtime_publisher("/rosout", "Log")

@@ -188,3 +188,48 @@ def test_a_free_logger_prints_in_the_ros_form_with_the_system_clock(console):
     level, stamp, rest = line.split(" ", 2)
     assert (level, rest) == ("[INFO]", "[free]: hi")
     assert abs(float(stamp.strip("[]")) - before) < 60
+
+
+EMBEDDED = """
+import logging
+import anyio
+from actors import Runtime, VirtualTimeLoop
+from nodes.talker import MinimalPublisher
+
+{setup}
+
+async def main():
+    async with Runtime() as rt:
+        rt.spawn(MinimalPublisher)
+        await anyio.sleep(0.75)
+
+anyio.run(main, backend_options={{"loop_factory": VirtualTimeLoop}})
+"""
+
+
+@pytest.mark.parametrize(
+    ("setup", "expected"),
+    [
+        # Nothing configured: INFO on stderr in ROS's form, as rclpy prints it.
+        ("", ['[INFO] [0.500000000] [minimal_publisher]: Publishing: "Hello World: 0"']),
+        # The application configured logging: its choice stands.
+        ("logging.basicConfig(level=logging.WARNING)", []),
+        ("logging.getLogger('actors').setLevel(logging.ERROR)", []),
+    ],
+)
+def test_an_embedded_runtime_prints_info_on_stderr_unless_logging_is_configured(setup, expected):
+    import subprocess
+    import sys
+
+    from conftest import ROOT, python_env
+
+    result = subprocess.run(
+        [sys.executable, "-c", EMBEDDED.format(setup=setup)],
+        cwd=ROOT,
+        env=python_env(),
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert (result.returncode, result.stdout) == (0, "")
+    assert result.stderr.splitlines() == expected

@@ -1,0 +1,265 @@
+"""The README's examples run as written: its code blocks are read from README.md when the tests run.
+
+- ``sh`` blocks: every ``python -m actors.run ...`` / ``python -m actors launch ...``
+  line runs a graph (virtual time to its end; the wall clock until its first
+  line, then Ctrl-C); every other ``python -m actors ...`` line runs, in README
+  order, against the demo graph started exactly as the README starts it.
+  Set-up and ``python -m bench`` lines are not run (they install packages or
+  take minutes); a path under ``~/`` stands for the reader's own files.
+  A command whose comment says ``exits N`` must exit N; every other must exit 0.
+- ``python`` blocks: one with ``@pytest.mark`` is a test file, run by pytest in
+  strict and in auto mode; one that calls ``anyio.run(`` is a script, run as
+  one; any other defines nodes, which are spawned on virtual time and must log
+  without crashing.
+- ``toml`` blocks are graph files, run on virtual time.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import logging
+import re
+import shlex
+import signal
+import subprocess
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+
+import anyio
+import pytest
+
+from actors import Node, Runtime
+from conftest import ROOT, python_env
+
+README = ROOT / "README.md"
+FENCE = re.compile(r"^```(?P<lang>[a-z]*)\n(?P<body>.*?)^```$", re.MULTILINE | re.DOTALL)
+
+
+def blocks(lang: str) -> list[str]:
+    return [m["body"] for m in FENCE.finditer(README.read_text()) if m["lang"] == lang]
+
+
+def commands() -> list[tuple[list[str], int]]:
+    """Each ``python -m actors...`` line of the sh blocks as words, with the exit code it expects."""
+    found = []
+    for body in blocks("sh"):
+        for line in body.splitlines():
+            words = shlex.split(line, comments=True)
+            if words[:2] != ["python", "-m"] or not words[2].startswith("actors"):
+                continue
+            if any(word.startswith("~/") for word in words):
+                continue
+            comment = line.partition(" #")[2]
+            expected = re.search(r"\bexits (\d)\b", comment)
+            found.append((words, int(expected[1]) if expected else 0))
+    return found
+
+
+def runs_a_graph(words: list[str]) -> bool:
+    return words[2] == "actors.run" or words[2:4] == ["actors", "launch"]
+
+
+def streams(words: list[str]) -> bool:
+    """Whether the command runs until interrupted (as ros2's echo, hz, bw and pub do)."""
+    verb = words[3:5]
+    if verb in (["topic", "echo"],):
+        return "--once" not in words
+    if verb in (["topic", "hz"], ["topic", "bw"]):
+        return "--count" not in words
+    if verb == ["topic", "pub"]:
+        return not {"--once", "-1", "-t", "--times"} & set(words)
+    return False
+
+
+@pytest.fixture
+def private_endpoints(tmp_path_factory, monkeypatch) -> dict[str, str]:
+    """A control-socket directory of the test's own: only the graphs it starts are found."""
+    monkeypatch.setenv("XDG_RUNTIME_DIR", str(tmp_path_factory.mktemp("xdg")))
+    return python_env()
+
+
+def start(words: list[str], env: dict[str, str], cwd: Path = ROOT) -> subprocess.Popen[str]:
+    return subprocess.Popen(
+        [sys.executable, *words[1:]],
+        cwd=cwd,
+        env=env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+
+
+def first_line_then_interrupt(proc: subprocess.Popen[str], until: str = "") -> tuple[str, str]:
+    """Read stdout until a line containing ``until`` (any line when empty), then Ctrl-C."""
+    assert proc.stdout is not None
+    try:
+        for line in proc.stdout:
+            if until in line:
+                break
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=30)
+    finally:
+        proc.kill()
+    return line + out, err
+
+
+def test_the_readme_has_examples_of_every_kind():
+    assert len(commands()) > 20
+    assert blocks("python") and blocks("toml")
+
+
+def test_the_graph_commands_run_as_written(private_endpoints):
+    seen = set()
+    for words, expected in commands():
+        if not runs_a_graph(words) or tuple(words) in seen:
+            continue
+        seen.add(tuple(words))
+        if "--duration" in words:
+            result = subprocess.run(
+                [sys.executable, *words[1:]],
+                cwd=ROOT,
+                env=private_endpoints,
+                capture_output=True,
+                text=True,
+                timeout=120,
+            )
+            code, out, err = result.returncode, result.stdout, result.stderr
+        else:  # on the wall clock until Ctrl-C, as the README says
+            proc = start(words, private_endpoints)
+            out, err = first_line_then_interrupt(proc)
+            code = proc.returncode
+        assert code == expected, (words, out[-2000:], err[-2000:])
+        assert "Traceback" not in out + err and "[FATAL]" not in err, (words, err)
+
+
+@pytest.fixture
+def demo(private_endpoints) -> Iterator[subprocess.Popen[str]]:
+    """``python -m actors.run graph.toml`` as the README starts it, once every node runs."""
+    proc = start(["python", "-m", "actors.run", "graph.toml"], private_endpoints)
+    try:
+        assert proc.stdout is not None
+        for line in proc.stdout:  # the add_two_ints server starts 1 s late: then all run
+            if "Result of add_two_ints" in line:
+                break
+        yield proc
+    finally:
+        proc.send_signal(signal.SIGINT)
+        try:
+            proc.communicate(timeout=30)
+        finally:
+            proc.kill()
+    assert proc.returncode == 0
+
+
+def run_in_process(words: list[str]) -> tuple[int, str, str]:
+    """``python -m actors ARGS`` through the same main(), with ``> FILE`` done as a shell would."""
+    from actors.cli import main
+
+    target = None
+    if ">" in words:
+        words, target = words[: words.index(">")], words[words.index(">") + 1]
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            code = main(words[3:])
+        except SystemExit as exc:  # argparse's usage errors
+            code = exc.code if isinstance(exc.code, int) else 2
+    if target is not None:
+        Path(target).write_text(out.getvalue())
+    return code, out.getvalue(), err.getvalue()
+
+
+def test_the_second_terminal_commands_run_as_written(demo, private_endpoints, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # what they write (graph.dot, a new package) lands here
+    ran = 0
+    for words, expected in commands():
+        if runs_a_graph(words):
+            continue
+        if streams(words):
+            proc = start(words, private_endpoints, cwd=tmp_path)
+            out, err = first_line_then_interrupt(proc)
+            code = proc.returncode
+        else:
+            code, out, err = run_in_process(words)
+        assert (code, err if expected == 0 else "") == (expected, ""), (words, out, err)
+        assert out, words
+        ran += 1
+    assert ran > 15
+
+
+def test_the_graph_file_example_runs(private_endpoints, tmp_path):
+    (example,) = blocks("toml")
+    graph = tmp_path / "example.toml"
+    graph.write_text(example)
+    result = subprocess.run(
+        [sys.executable, "-m", "actors.run", str(graph), "--clock", "virtual", "--duration", "2"],
+        cwd=ROOT,
+        env=private_endpoints,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert result.returncode == 0, result.stderr
+    assert "[talker]: Publishing" in result.stdout
+
+
+def python_blocks(kind: str) -> list[str]:
+    def kind_of(body: str) -> str:
+        if "@pytest.mark" in body:
+            return "test"
+        return "script" if "anyio.run(" in body else "nodes"
+
+    return [body for body in blocks("python") if kind_of(body) == kind]
+
+
+@pytest.mark.parametrize("body", python_blocks("script"))
+def test_the_scripts_run_and_their_nodes_are_heard(body, private_endpoints, tmp_path):
+    script = tmp_path / "example.py"
+    script.write_text(body)
+    result = subprocess.run(
+        [sys.executable, str(script)],
+        cwd=ROOT,
+        env=private_endpoints,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert result.returncode == 0, result.stderr
+    assert re.search(r"^\[INFO\] \[\d+\.\d{9}\] \[\w+\]: ", result.stderr, re.MULTILINE), result.stderr
+    assert "Traceback" not in result.stderr
+
+
+@pytest.mark.parametrize("mode", ["strict", "auto"])
+@pytest.mark.parametrize("body", python_blocks("test"))
+def test_the_test_examples_pass_in_any_asyncio_mode(body, mode, private_endpoints, tmp_path):
+    (tmp_path / "test_example.py").write_text(body)
+    result = subprocess.run(
+        [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-p", "no:hypothesispytest"]
+        + ["-o", f"asyncio_mode={mode}"],
+        cwd=tmp_path,
+        env=private_endpoints,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert result.returncode == 0, result.stdout[-3000:]
+    assert re.search(r"^\d+ passed", result.stdout, re.MULTILINE)
+
+
+@pytest.mark.virtual_time
+@pytest.mark.parametrize("body", python_blocks("nodes"))
+async def test_the_node_examples_run_and_log(body, caplog):
+    namespace: dict[str, object] = {"__name__": "readme_example"}
+    exec(compile(body, "README.md", "exec"), namespace)
+    classes = [v for v in namespace.values() if isinstance(v, type) and issubclass(v, Node) and v is not Node]
+    assert classes
+    caplog.set_level(logging.INFO, logger="actors")
+    async with Runtime(name="readme") as rt:
+        nodes = [rt.spawn(cls) for cls in classes]
+        await anyio.sleep(3)
+        infos = rt.graph.nodes()
+    assert all(info.crashes == 0 for info in infos), infos
+    for node in nodes:
+        assert any(r.ros_name == node.get_name() for r in caplog.records), node.get_name()
