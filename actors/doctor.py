@@ -27,6 +27,7 @@ own, the runtime's) are left out of the topic checks.
 from __future__ import annotations
 
 import functools
+import sys
 import threading
 from collections import deque
 from collections.abc import Callable, Iterable
@@ -268,7 +269,10 @@ class LagMonitor:
     last tick is older than ``threshold`` it reads which node's actor is running
     what (``Actor.current``, the most recent ``busy_since`` among running actors:
     nothing else can have started while the loop is stuck), and the event names
-    that node and callback.  The thread only reads; it stops with the task.
+    that node and callback, provided the callback's code is on the loop
+    thread's stack at that moment: an ``async`` callback that is only awaiting
+    does not hold the loop, whatever else stalls it meanwhile (a constructor,
+    an import, a starved process).  The thread only reads; it stops with the task.
     """
 
     def __init__(
@@ -281,11 +285,13 @@ class LagMonitor:
         self._tick = 0.0
         self._suspect: tuple[str, str] | None = None
         self._stop = threading.Event()
+        self._loop_thread = threading.get_ident()
 
     async def run(self) -> None:
         """Measure until cancelled."""
         clock = self._runtime.clock
         self._tick = clock.monotonic()
+        self._loop_thread = threading.get_ident()
         thread = threading.Thread(
             target=self._watch, name=f"actors lag monitor ({self._runtime.name})", daemon=True
         )
@@ -328,4 +334,18 @@ class LagMonitor:
             or getattr(entity, "handler", None)
             or getattr(entity, "fn", None)
         )
+        if not self._executing(fn):
+            return None  # an async callback that awaits: something else holds the loop
         return latest[1], getattr(fn, "__qualname__", None) or type(entity).__name__
+
+    def _executing(self, fn: Any) -> bool:
+        """Whether ``fn``'s code is on the loop thread's stack now (True when it cannot tell)."""
+        code = getattr(getattr(fn, "__func__", fn), "__code__", None)
+        frame = sys._current_frames().get(self._loop_thread)
+        if code is None or frame is None:
+            return True
+        while frame is not None:
+            if frame.f_code is code:
+                return True
+            frame = frame.f_back
+        return False

@@ -275,3 +275,28 @@ async def test_actions_alone_are_healthy_and_a_client_without_server_is_a_warnin
     assert checks(report)["subscriptions without publishers"] is None
     (unserved,) = [c for c in report.checks if c.name == "action servers"]
     assert unserved.passed and unserved.failed(include_warnings=True)
+
+
+async def test_an_async_callback_that_only_awaits_is_not_blamed_for_a_stall(tmp_path, monkeypatch):
+    class Patient(Node):
+        def __init__(self) -> None:
+            super().__init__("patient")
+
+        async def on_start(self) -> None:
+            await anyio.sleep(30)  # awaiting: it does not hold the loop
+
+    monkeypatch.setenv("XDG_RUNTIME_DIR", str(tmp_path))
+    async with Runtime(name="doctor_await", attach=[endpoint := ControlEndpoint()]) as rt:
+        rt.spawn(Patient)
+        assert endpoint.server is not None
+        monitor = endpoint.server.monitor
+        await anyio.sleep(0.1)  # on_start has begun its wait
+        end = time.perf_counter() + 0.15
+        while time.perf_counter() < end:  # the loop is held here, by no node's callback
+            pass
+        with anyio.fail_after(5):
+            while not monitor.events:
+                await anyio.sleep(0.01)
+        report = diagnose(rt, monitor)
+    assert [e.node for e in report.lag_events] == [""]
+    assert checks(report)["callbacks blocking the loop"] is None
