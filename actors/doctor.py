@@ -272,7 +272,9 @@ class LagMonitor:
     that node and callback, provided the callback's code is on the loop
     thread's stack at that moment: an ``async`` callback that is only awaiting
     does not hold the loop, whatever else stalls it meanwhile (a constructor,
-    an import, a starved process).  The thread only reads; it stops with the task.
+    an import).  When the watchdog itself wakes late, the whole process was
+    starved (a busy machine) and nobody is blamed.  The thread only reads; it
+    stops with the task.
     """
 
     def __init__(
@@ -315,8 +317,15 @@ class LagMonitor:
     def _watch(self) -> None:
         # The loop's time() is time.monotonic() on a wall-clock loop: safe to read from here.
         now = self._runtime.clock.monotonic
-        while not self._stop.wait(self.period):
-            if self._suspect is None and now() - self._tick > self.threshold:
+        while True:
+            before = now()
+            if self._stop.wait(self.period):
+                return
+            if now() - before - self.period > self.threshold:
+                # This thread stalled too: the whole process was not scheduled, and
+                # whatever callback was running when it stopped is not to blame.
+                self._suspect = ("", "")
+            elif self._suspect is None and now() - self._tick > self.threshold:
                 self._suspect = self._running() or ("", "")
 
     def _running(self) -> tuple[str, str] | None:

@@ -300,3 +300,35 @@ async def test_an_async_callback_that_only_awaits_is_not_blamed_for_a_stall(tmp_
         report = diagnose(rt, monitor)
     assert [e.node for e in report.lag_events] == [""]
     assert checks(report)["callbacks blocking the loop"] is None
+
+
+@pytest.mark.parametrize(("frozen", "blamed"), [(0.0, ("/n", "run_watchdog.<locals>.callback")), (0.2, ("", ""))])
+def test_watchdog_blames_a_running_callback_unless_the_whole_process_was_starved(frozen, blamed):
+    # The watchdog thread's logic driven by hand, on a clock of the test's own.
+    assert run_watchdog(frozen) == blamed
+
+
+def run_watchdog(frozen: float) -> tuple[str, str] | None:
+    from types import SimpleNamespace
+
+    from actors.doctor import LagMonitor
+
+    now = [0.0]
+    entity = SimpleNamespace()
+    core = SimpleNamespace(fqn="/n", actor=SimpleNamespace(current=entity, busy_since=0.0))
+    runtime = SimpleNamespace(name="fake", nodes={"/n": core}, clock=SimpleNamespace(monotonic=lambda: now[0]))
+    monitor = LagMonitor(runtime)  # type: ignore[arg-type]
+    stops = iter([False, True])
+
+    def wait(period: float) -> bool:
+        now[0] += period + frozen  # the stall: 0.2 s more when the whole process was frozen
+        return next(stops)
+
+    def callback() -> None:  # "running on the loop thread" while the watchdog looks
+        monitor._watch()
+
+    monitor._stop.wait = wait  # type: ignore[method-assign]
+    entity.callback = callback
+    now[0] = 1.0  # the loop's last tick was a second ago
+    callback()
+    return monitor._suspect
