@@ -80,6 +80,13 @@ def private_endpoints(tmp_path_factory, monkeypatch) -> dict[str, str]:
     return python_env()
 
 
+def python(*args: str, env: dict[str, str], cwd: Path = ROOT) -> subprocess.CompletedProcess[str]:
+    """``python ARGS`` to its end (bounded), output captured."""
+    return subprocess.run(
+        [sys.executable, *args], cwd=cwd, env=env, capture_output=True, text=True, timeout=120
+    )
+
+
 def start(words: list[str], env: dict[str, str], cwd: Path = ROOT) -> subprocess.Popen[str]:
     return subprocess.Popen(
         [sys.executable, *words[1:]],
@@ -117,14 +124,7 @@ def test_the_graph_commands_run_as_written(private_endpoints):
             continue
         seen.add(tuple(words))
         if "--duration" in words:
-            result = subprocess.run(
-                [sys.executable, *words[1:]],
-                cwd=ROOT,
-                env=private_endpoints,
-                capture_output=True,
-                text=True,
-                timeout=120,
-            )
+            result = python(*words[1:], env=private_endpoints)
             code, out, err = result.returncode, result.stdout, result.stderr
         else:  # on the wall clock until Ctrl-C, as the README says
             proc = start(words, private_endpoints)
@@ -193,13 +193,8 @@ def test_the_graph_file_example_runs(private_endpoints, tmp_path):
     (example,) = blocks("toml")
     graph = tmp_path / "example.toml"
     graph.write_text(example)
-    result = subprocess.run(
-        [sys.executable, "-m", "actors.run", str(graph), "--clock", "virtual", "--duration", "2"],
-        cwd=ROOT,
-        env=private_endpoints,
-        capture_output=True,
-        text=True,
-        timeout=60,
+    result = python(
+        "-m", "actors.run", str(graph), "--clock", "virtual", "--duration", "2", env=private_endpoints
     )
     assert result.returncode == 0, result.stderr
     assert "[talker]: Publishing" in result.stdout
@@ -218,14 +213,7 @@ def python_blocks(kind: str) -> list[str]:
 def test_the_scripts_run_and_their_nodes_are_heard(body, private_endpoints, tmp_path):
     script = tmp_path / "example.py"
     script.write_text(body)
-    result = subprocess.run(
-        [sys.executable, str(script)],
-        cwd=ROOT,
-        env=private_endpoints,
-        capture_output=True,
-        text=True,
-        timeout=60,
-    )
+    result = python(str(script), env=private_endpoints)
     assert result.returncode == 0, result.stderr
     assert re.search(r"^\[INFO\] \[\d+\.\d{9}\] \[\w+\]: ", result.stderr, re.MULTILINE), result.stderr
     assert "Traceback" not in result.stderr
@@ -235,15 +223,8 @@ def test_the_scripts_run_and_their_nodes_are_heard(body, private_endpoints, tmp_
 @pytest.mark.parametrize("body", python_blocks("test"))
 def test_the_test_examples_pass_in_any_asyncio_mode(body, mode, private_endpoints, tmp_path):
     (tmp_path / "test_example.py").write_text(body)
-    result = subprocess.run(
-        [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-p", "no:hypothesispytest"]
-        + ["-o", f"asyncio_mode={mode}"],
-        cwd=tmp_path,
-        env=private_endpoints,
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
+    options = ("-p", "no:cacheprovider", "-p", "no:hypothesispytest", "-o", f"asyncio_mode={mode}")
+    result = python("-m", "pytest", "-q", *options, env=private_endpoints, cwd=tmp_path)
     assert result.returncode == 0, result.stdout[-3000:]
     assert re.search(r"^\d+ passed", result.stdout, re.MULTILINE)
 
