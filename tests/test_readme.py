@@ -3,14 +3,17 @@
 - ``sh`` blocks: every ``python -m actors.run ...`` / ``python -m actors launch ...``
   line runs a graph (virtual time to its end; the wall clock until its first
   line, then Ctrl-C); every other ``python -m actors ...`` line runs, in README
-  order, against the demo graph started exactly as the README starts it.
+  order, against a graph started as the README starts it: the demo's
+  (``graph.toml``), or the one a ``<!-- graph: FILE -->`` comment above the
+  block names, up to the next such comment.
   Set-up and ``python -m bench`` lines are not run (they install packages or
   take minutes); a path under ``~/`` stands for the reader's own files.
   A command whose comment says ``exits N`` must exit N; every other must exit 0.
 - ``python`` blocks: one with ``@pytest.mark`` is a test file, run by pytest in
   strict and in auto mode; one that calls ``anyio.run(`` is a script, run as
-  one; any other defines nodes, which are spawned on virtual time and must log
-  without crashing.
+  one (its nodes must be heard on stderr); one that is lines from inside a
+  method (a bare ``await``) must compile there; any other defines nodes, which
+  are spawned on virtual time and must run without crashing.
 - ``toml`` blocks are graph files, run on virtual time.
 """
 
@@ -18,42 +21,62 @@ from __future__ import annotations
 
 import contextlib
 import io
-import logging
+import itertools
 import re
 import shlex
 import signal
 import subprocess
 import sys
+import textwrap
+import time
 from collections.abc import Iterator
 from pathlib import Path
+from typing import NamedTuple
 
 import anyio
 import pytest
 
 from actors import Node, Runtime
+from actors.errors import ActorsError
+from actors.names import is_hidden
 from conftest import ROOT, python_env
 
 README = ROOT / "README.md"
 FENCE = re.compile(r"^```(?P<lang>[a-z]*)\n(?P<body>.*?)^```$", re.MULTILINE | re.DOTALL)
+GRAPH = re.compile(r"^<!-- graph: (\S+) -->$", re.MULTILINE)
 
 
 def blocks(lang: str) -> list[str]:
     return [m["body"] for m in FENCE.finditer(README.read_text()) if m["lang"] == lang]
 
 
-def commands() -> list[tuple[list[str], int]]:
-    """Each ``python -m actors...`` line of the sh blocks as words, with the exit code it expects."""
+class Command(NamedTuple):
+    words: list[str]
+    expected: int  # the exit code
+    graph: str  # the graph file it talks to
+
+
+def commands() -> list[Command]:
+    """Each ``python -m actors...`` line of the sh blocks, in README order.
+
+    The graph a command talks to is the demo's, ``graph.toml``, unless a
+    ``<!-- graph: FILE -->`` comment above its block names another.
+    """
+    text = README.read_text()
     found = []
-    for body in blocks("sh"):
-        for line in body.splitlines():
+    for match in FENCE.finditer(text):
+        if match["lang"] != "sh":
+            continue
+        named = GRAPH.findall(text, 0, match.start())
+        graph = named[-1] if named else "graph.toml"
+        for line in match["body"].splitlines():
             words = shlex.split(line, comments=True)
             if words[:2] != ["python", "-m"] or not words[2].startswith("actors"):
                 continue
             if any(word.startswith("~/") for word in words):
                 continue
-            comment = line.partition(" #")[2]
-            expected = re.search(r"\bexits (\d)\b", comment)
-            found.append((words, int(expected[1]) if expected else 0))
+            expected = re.search(r"\bexits (\d)\b", line.partition(" #")[2])
+            found.append(Command(words, int(expected[1]) if expected else 0, graph))
     return found
 
 
@@ -119,7 +142,7 @@ def test_the_readme_has_examples_of_every_kind():
 
 def test_the_graph_commands_run_as_written(private_endpoints):
     seen = set()
-    for words, expected in commands():
+    for words, expected, _ in commands():
         if not runs_a_graph(words) or tuple(words) in seen:
             continue
         seen.add(tuple(words))
@@ -134,15 +157,22 @@ def test_the_graph_commands_run_as_written(private_endpoints):
         assert "Traceback" not in out + err and "[FATAL]" not in err, (words, err)
 
 
-@pytest.fixture
-def demo(private_endpoints) -> Iterator[subprocess.Popen[str]]:
-    """``python -m actors.run graph.toml`` as the README starts it, once every node runs."""
-    proc = start(["python", "-m", "actors.run", "graph.toml"], private_endpoints)
+@contextlib.contextmanager
+def running(graph: str, env: dict[str, str]) -> Iterator[subprocess.Popen[str]]:
+    """``python -m actors.run GRAPH`` as the README starts it, once every node of the file runs."""
+    from actors.cli._client import connect
+    from actors.graph import load_graph
+
+    wanted = len(load_graph(ROOT / graph)[0].nodes)
+    proc = start(["python", "-m", "actors.run", graph], env)
     try:
-        assert proc.stdout is not None
-        for line in proc.stdout:  # the add_two_ints server starts 1 s late: then all run
-            if "Result of add_two_ints" in line:
-                break
+        deadline = time.monotonic() + 30
+        while True:  # delayed nodes included: poll the graph until they are all there
+            assert proc.poll() is None and time.monotonic() < deadline, proc.stderr
+            with contextlib.suppress(ActorsError), connect(None) as conn:
+                if len([n for n in conn.graph().nodes if not is_hidden(n.name)]) >= wanted:
+                    break
+            time.sleep(0.05)
         yield proc
     finally:
         proc.send_signal(signal.SIGINT)
@@ -171,22 +201,21 @@ def run_in_process(words: list[str]) -> tuple[int, str, str]:
     return code, out.getvalue(), err.getvalue()
 
 
-def test_the_second_terminal_commands_run_as_written(demo, private_endpoints, tmp_path, monkeypatch):
+def test_the_second_terminal_commands_run_as_written(private_endpoints, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)  # what they write (graph.dot, a new package) lands here
-    ran = 0
-    for words, expected in commands():
-        if runs_a_graph(words):
-            continue
-        if streams(words):
-            proc = start(words, private_endpoints, cwd=tmp_path)
-            out, err = first_line_then_interrupt(proc)
-            code = proc.returncode
-        else:
-            code, out, err = run_in_process(words)
-        assert (code, err if expected == 0 else "") == (expected, ""), (words, out, err)
-        assert out, words
-        ran += 1
-    assert ran > 15
+    verbs = [c for c in commands() if not runs_a_graph(c.words)]
+    assert len(verbs) > 15
+    for graph, group in itertools.groupby(verbs, key=lambda c: c.graph):
+        with running(graph, private_endpoints):
+            for words, expected, _ in group:
+                if streams(words):
+                    proc = start(words, private_endpoints, cwd=tmp_path)
+                    out, err = first_line_then_interrupt(proc)
+                    code = proc.returncode
+                else:
+                    code, out, err = run_in_process(words)
+                assert (code, err if expected == 0 else "") == (expected, ""), (words, out, err)
+                assert out, words
 
 
 def test_the_graph_file_example_runs(private_endpoints, tmp_path):
@@ -202,11 +231,20 @@ def test_the_graph_file_example_runs(private_endpoints, tmp_path):
 
 def python_blocks(kind: str) -> list[str]:
     def kind_of(body: str) -> str:
+        try:
+            compile(body, "README.md", "exec")
+        except SyntaxError:
+            return "fragment"  # lines from inside a method, e.g. with a bare await
         if "@pytest.mark" in body:
             return "test"
         return "script" if "anyio.run(" in body else "nodes"
 
     return [body for body in blocks("python") if kind_of(body) == kind]
+
+
+@pytest.mark.parametrize("body", python_blocks("fragment"))
+def test_the_fragments_are_python_inside_an_async_method(body):
+    compile("async def method(self):\n" + textwrap.indent(body, "    "), "README.md", "exec")
 
 
 @pytest.mark.parametrize("body", python_blocks("script"))
@@ -231,16 +269,14 @@ def test_the_test_examples_pass_in_any_asyncio_mode(body, mode, private_endpoint
 
 @pytest.mark.virtual_time
 @pytest.mark.parametrize("body", python_blocks("nodes"))
-async def test_the_node_examples_run_and_log(body, caplog):
+async def test_the_node_examples_run_without_crashing(body):
     namespace: dict[str, object] = {"__name__": "readme_example"}
     exec(compile(body, "README.md", "exec"), namespace)
     classes = [v for v in namespace.values() if isinstance(v, type) and issubclass(v, Node) and v is not Node]
     assert classes
-    caplog.set_level(logging.INFO, logger="actors")
     async with Runtime(name="readme") as rt:
-        nodes = [rt.spawn(cls) for cls in classes]
+        for cls in classes:
+            rt.spawn(cls)
         await anyio.sleep(3)
         infos = rt.graph.nodes()
-    assert all(info.crashes == 0 for info in infos), infos
-    for node in nodes:
-        assert any(r.ros_name == node.get_name() for r in caplog.records), node.get_name()
+    assert len(infos) == len(classes) and all(info.crashes == 0 for info in infos), infos
