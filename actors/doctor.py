@@ -16,6 +16,8 @@ check passes or fails with one reason per problem found:
 - nodes that crashed or keep restarting;
 - subscriptions that dropped messages (a full KEEP_LAST mailbox; not on
   hidden topics: an action's status subscription keeps only the latest);
+- messages a node refused at its input boundary (``MessageRefused``), with
+  their counts per reason and the last sender;
 - callbacks that block the loop, named by node and callback (wall clock only:
   on virtual time the loop's clock stands still while a callback runs);
 - required packages installed.
@@ -112,6 +114,7 @@ def diagnose(runtime: Runtime, monitor: LagMonitor | None = None) -> Report:
         _per_topic(topics, "QoS compatibility", _qos_mismatches),
         _node_health(nodes + graph.ended()),
         _per_topic(topics, "dropped messages", _drops),
+        _per_topic(topics, "refused messages", _refused),
     ]
     events = tuple(monitor.events) if monitor is not None else ()
     if monitor is not None:
@@ -201,6 +204,16 @@ def _drops(topic: TopicInfo) -> list[str]:
         f"{topic.name}: {e.node} dropped {e.dropped} message(s) (queue depth {e.qos.depth})"
         for e in _visible(topic.subscriptions)
         if e.dropped
+    ]
+
+
+def _refused(topic: TopicInfo) -> list[str]:
+    return [
+        f"{topic.name}: {e.node} refused {sum(e.refused.values())} message(s): "
+        + "; ".join(f"{reason} ({count})" for reason, count in sorted(e.refused.items()))
+        + f"; the last from {e.refused_from}"
+        for e in topic.subscriptions
+        if e.refused
     ]
 
 

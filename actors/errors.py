@@ -12,6 +12,7 @@
     │   ├── InvalidTopicNameException
     │   └── InvalidServiceNameException
     ├── TopicTypeError               publisher and subscription disagree on a topic's type
+    ├── MessageRefused               a subscription callback turns a message away (dropped, counted)
     ├── GraphFileError               graph.toml is malformed (names file and key path)
     ├── RosArgsError                 a --ros-args argument or a parameter file is malformed
     ├── WorldError                   a robot without a world, a start pose that does not fit
@@ -53,6 +54,7 @@ __all__ = [
     "InvalidTopicNameException",
     "InvalidServiceNameException",
     "TopicTypeError",
+    "MessageRefused",
     "GraphFileError",
     "RosArgsError",
     "WorldError",
@@ -130,6 +132,24 @@ class InvalidServiceNameException(InvalidNameError):
 
 class TopicTypeError(ActorsError, TypeError):
     """An endpoint's message type differs from the type already used on the topic."""
+
+
+class MessageRefused(ActorsError):
+    """Raised by a subscription callback to refuse the message it was given.
+
+    The message is dropped and counted per reason (``doctor`` and ``topic info``
+    show the counts); it is logged once per publisher and reason, at most a few
+    lines per period; the node keeps running.  This is a node's input boundary:
+    raise it for a message the node cannot act on (a non-finite command, a
+    value out of range), and let a real bug raise anything else, which crashes
+    the node for its supervisor to restart.  ``reason`` should not contain the
+    message's values: refusals are counted and logged per distinct reason.
+    Raised elsewhere (a timer, a service handler) it is an ordinary error.
+    """
+
+    def __init__(self, reason: str) -> None:
+        self.reason = reason
+        super().__init__(reason)
 
 
 class GraphFileError(ActorsError):

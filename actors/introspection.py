@@ -33,13 +33,20 @@ __all__ = [
 
 
 class EndpointInfo(msgspec.Struct, frozen=True, kw_only=True):
-    """A publisher or subscription: its node, type and QoS; for a subscription, its mailbox."""
+    """A publisher or subscription: its node, type and QoS; for a subscription, its mailbox.
+
+    ``refused`` counts, per reason, the messages the subscription's callback
+    refused (:class:`~actors.errors.MessageRefused`); ``refused_from`` names the
+    publisher of the last one.
+    """
 
     node: str
     type: str
     qos: QoSProfile
     queued: int = 0
     dropped: int = 0
+    refused: dict[str, int] = {}
+    refused_from: str = ""
 
 
 class TopicInfo(msgspec.Struct, frozen=True, kw_only=True):
@@ -198,6 +205,8 @@ class GraphView:
                     qos=s.qos,
                     queued=s.queued,
                     dropped=s.dropped,
+                    refused=dict(s.refusals.counts) if s.refusals else {},
+                    refused_from=s.refusals.last_from if s.refusals else "",
                 )
                 for s in topic.subscriptions
             ),

@@ -426,7 +426,9 @@ class Node(ParameterMethods, GraphQueries):
         Raises TopicTypeError if the topic already carries another type.  A
         TRANSIENT_LOCAL subscription first receives the history kept by
         TRANSIENT_LOCAL publishers.  Callbacks that raise crash the node (its
-        supervisor restarts it); the message is logged as a dead letter.
+        supervisor restarts it); the message is logged as a dead letter.  A
+        callback that raises MessageRefused refuses the message instead: it
+        is dropped and counted, and the node keeps running.
         """
         return self._core.create_subscription(msg_type, topic, callback, qos_profile)
 

@@ -14,6 +14,11 @@ compatible, as in ROS: a best-effort publisher does not feed a reliable
 subscription, nor a volatile publisher a transient-local one.  Incompatible
 pairs are logged once and reported by ``doctor``.
 
+A subscription callback may refuse a message by raising
+:class:`~actors.errors.MessageRefused`: the message is dropped and counted
+(:mod:`actors.refusals`), and the node keeps running; anything else a callback
+raises crashes the node, for its supervisor to restart.
+
 Endpoints are kept in dicts used as insertion-ordered sets (``{endpoint: None}``):
 creation order is kept, and removing one endpoint costs O(1), so stopping a
 graph of 10,000 nodes that share a topic is linear, not quadratic.
@@ -31,7 +36,8 @@ from typing import Any
 import msgspec
 
 from actors.actor import CallbackFailed, Mailbox, Owner
-from actors.errors import TopicTypeError
+from actors.errors import MessageRefused, TopicTypeError
+from actors.refusals import Refusals
 from actors.snapshot import snapshotter
 
 __all__ = [
@@ -125,7 +131,9 @@ def type_name(msg_type: type) -> str:
 class Publisher:
     """Publishes messages of one type on one topic.  Create with ``Node.create_publisher``."""
 
-    __slots__ = ("topic_name", "msg_type", "qos", "node", "_subs", "_history", "_snapshot", "__weakref__")
+    __slots__ = (
+        "topic_name", "msg_type", "qos", "node", "_subs", "_tracked", "_history", "_snapshot", "__weakref__"
+    )
 
     def __init__(self, node: Owner, topic_name: str, msg_type: type, qos: QoSProfile) -> None:
         self.node = node
@@ -134,6 +142,7 @@ class Publisher:
         self.qos = qos
         self._snapshot = snapshotter(msg_type)
         self._subs: dict[Subscription, None] = {}  # matched subscriptions, in match order
+        self._tracked: dict[Subscription, None] = {}  # those of them that note who sent what
         self._history: deque[Any] | None = (
             deque(maxlen=qos.depth) if qos.durability == DurabilityPolicy.TRANSIENT_LOCAL else None
         )
@@ -165,6 +174,9 @@ class Publisher:
             if not sub._scheduled:
                 sub._scheduled = True
                 sub._actor.schedule(sub)
+        if self._tracked:  # rare: subscriptions that refused messages (Subscription.track_senders)
+            for sub in self._tracked:
+                sub._senders.append((msg, self))  # type: ignore[union-attr]
 
     def get_subscription_count(self) -> int:
         """How many subscriptions this publisher feeds."""
@@ -185,7 +197,10 @@ class Subscription(Mailbox):
         "qos",
         "node",
         "dropped",
+        "refusals",
         "_limit",
+        "_topic",
+        "_senders",
         "__weakref__",
     )
 
@@ -203,9 +218,12 @@ class Subscription(Mailbox):
         self.callback = callback
         self.qos = qos
         self.dropped = 0
+        self.refusals: Refusals | None = None  # made at the first refusal
         super().__init__(node.actor)
         self._queue: deque[Any] = deque()
         self._limit = qos.depth if qos.history == HistoryPolicy.KEEP_LAST else sys.maxsize
+        self._topic: Topic | None = None  # set by the topic table
+        self._senders: deque[tuple[Any, Publisher]] | None = None  # see track_senders
 
     def _push(self, msg: Any) -> None:
         queue = self._queue
@@ -218,7 +236,47 @@ class Subscription(Mailbox):
     def _adopt(self, old: Mailbox) -> None:
         assert isinstance(old, Subscription)
         self.dropped = old.dropped
+        self.refusals = old.refusals
         super()._adopt(old)
+        if old._senders is not None:
+            self._senders = old._senders
+            self.track_senders()
+
+    def track_senders(self) -> None:
+        """Note which publisher sent each message, so that a refusal names it exactly.
+
+        A subscription does this by itself from its first refusal on; a node
+        that expects to refuse messages from the start may call it at once.
+        It costs one append per message received.
+        """
+        if self._senders is None:
+            # Enough to find any message still queued, or being handled, among the latest.
+            self._senders = deque(maxlen=min(self._limit, 1000) + 1)
+        if self._topic is not None:
+            for pub in self._topic.publishers:
+                if self in pub._subs:
+                    pub._tracked[self] = None
+
+    def _refuse(self, msg: Any, refusal: MessageRefused) -> None:
+        """Drop ``msg``, which the callback refused: count it, and log it if it is news."""
+        if self.refusals is None:
+            self.refusals = Refusals()
+        line = self.refusals.add(
+            self.topic_name, self._sender_of(msg), refusal.reason, self.node.loop.time()
+        )
+        if line is not None:
+            self.node.logger.warning(line)
+        self.track_senders()
+
+    def _sender_of(self, msg: Any) -> str:
+        if self._senders is not None:
+            for sent, pub in reversed(self._senders):
+                if sent is msg:
+                    return pub.node.fqn
+        feeds = [] if self._topic is None else [p for p in self._topic.publishers if self in p._subs]
+        if len(feeds) == 1:
+            return feeds[0].node.fqn
+        return "one of " + ", ".join(sorted({p.node.fqn for p in feeds})) if feeds else "an unknown publisher"
 
     def _run(self) -> Awaitable[None] | None:
         queue = self._queue
@@ -228,6 +286,9 @@ class Subscription(Mailbox):
             msg = queue.popleft()
             try:
                 result = callback(msg)
+            except MessageRefused as refusal:
+                self._refuse(msg, refusal)
+                continue
             except Exception as exc:
                 self._round_done()
                 raise CallbackFailed(self, msg, exc) from exc
@@ -239,13 +300,19 @@ class Subscription(Mailbox):
     async def _run_async(self, pending: Awaitable[Any], msg: Any, left: int) -> None:
         # An async callback: await it, then the ``left`` messages still due this round.
         try:
-            await pending
+            try:
+                await pending
+            except MessageRefused as refusal:
+                self._refuse(msg, refusal)
             queue, callback = self._queue, self.callback
             for _ in range(left):
                 msg = queue.popleft()
-                result = callback(msg)
-                if result is not None and isawaitable(result):
-                    await result
+                try:
+                    result = callback(msg)
+                    if result is not None and isawaitable(result):
+                        await result
+                except MessageRefused as refusal:
+                    self._refuse(msg, refusal)
         except Exception as exc:
             self._round_done()
             raise CallbackFailed(self, msg, exc) from exc
@@ -302,6 +369,7 @@ class TopicTable:
         """Register ``sub``, connect it, and replay transient-local history if it asks for it."""
         topic = self._topic_for(sub.topic_name, sub.msg_type, "a subscription", sub.node.fqn)
         topic.subscriptions[sub] = None
+        sub._topic = topic
         for pub in topic.publishers:
             if self._match(pub, sub) and replay and pub._history:
                 if sub.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL:
@@ -314,6 +382,8 @@ class TopicTable:
             self._on_incompatible(pub, sub, reason)
             return False
         pub._subs[sub] = None
+        if sub._senders is not None:
+            pub._tracked[sub] = None
         return True
 
     def replace_subscription(self, old: Subscription, new: Subscription) -> None:
@@ -326,11 +396,13 @@ class TopicTable:
         topic = self.topics[old.topic_name]
         del topic.subscriptions[old]
         topic.subscriptions[new] = None
+        new._topic = topic
         for pub in topic.publishers:
             subs = pub._subs
             if old in subs:
                 del subs[old]
                 subs[new] = None
+                pub._tracked.pop(old, None)  # the new one tracks again if it adopts the old one's senders
 
     def remove_publisher(self, pub: Publisher) -> None:
         """Forget ``pub``; drop the topic when it has no endpoint left.  O(1)."""
@@ -338,6 +410,7 @@ class TopicTable:
         if topic is not None and pub in topic.publishers:
             del topic.publishers[pub]
             pub._subs = {}
+            pub._tracked = {}
             self._drop_if_empty(topic)
 
     def remove_subscription(self, sub: Subscription) -> None:
@@ -350,6 +423,7 @@ class TopicTable:
             del topic.subscriptions[sub]
             for pub in topic.publishers:
                 pub._subs.pop(sub, None)
+                pub._tracked.pop(sub, None)
             self._drop_if_empty(topic)
 
     def _drop_if_empty(self, topic: Topic) -> None:

@@ -9,7 +9,9 @@ class ConstantControl(Node):
     """Node ``constant_control``: publishes Twist(v, omega) on ``cmd_vel`` every 0.2 s.
 
     Parameters ``v`` (m/s, default 0.2) and ``omega`` (rad/s, default 0.0).  A
-    std_msgs/Bool true on ``kill`` cancels the timer and publishes one zero Twist.
+    std_msgs/Bool true on ``kill`` cancels the timer and publishes one zero
+    Twist.  It says "sending constant control..." when it starts and every
+    ten seconds after, and one line when the kill arrives.
     """
 
     def __init__(self) -> None:
@@ -25,9 +27,10 @@ class ConstantControl(Node):
         msg.linear.x = self.get_parameter("v").value
         msg.angular.z = self.get_parameter("omega").value
         self.cmd_pub.publish(msg)
+        self.get_logger().info("sending constant control...", throttle_duration_sec=10.0)
 
     def kill_callback(self, msg: Bool) -> None:
-        if msg.data:
+        if msg.data and not self.timer.is_canceled():
             self.timer.cancel()
             self.cmd_pub.publish(Twist())
             self.get_logger().info("kill received: timer cancelled, zero command sent")

@@ -48,6 +48,7 @@ async def test_a_clean_graph_passes_every_check():
         "QoS compatibility": None,
         "node health": None,
         "dropped messages": None,
+        "refused messages": None,
         "required packages": None,
     }
     assert not report.lag_measured  # virtual time: the loop's clock stands still in a callback

@@ -17,7 +17,7 @@ ROOT = Path(actors.__file__).resolve().parent
 LAYERS: list[set[str]] = [
     {"errors", "log", "names", "clock", "actor", "config", "idl", "idl_gen", "codec", "rosargs", "layout", "cdr",
      "typehash", "snapshot"},
-    {"topics", "services", "timers", "params", "actions", "endpoint_info"},
+    {"topics", "services", "timers", "params", "actions", "endpoint_info", "refusals"},
     {"node", "node_params", "node_graph", "param_client"},
     {"supervisor", "runtime", "introspection", "graph"},
     {"control", "doctor"},

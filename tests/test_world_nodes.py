@@ -8,7 +8,7 @@ import anyio
 import msgspec
 import pytest
 
-from actors import Node, Runtime, VirtualTimeLoop
+from actors import Node, Parameter, Runtime, VirtualTimeLoop
 from actors.errors import WorldError
 from interfaces.geometry_msgs.msg import PoseStamped, Twist
 from interfaces.nav_msgs.msg import Odometry
@@ -179,3 +179,99 @@ def test_a_bad_world_file_exits_2_naming_file_and_key(run_module, tmp_path):
     result = run_module("actors.run", str(graph), "--clock", "virtual", "--duration", "1")
     assert result.returncode == 2
     assert result.stderr.strip().endswith(f"{world}: boxes[0].size: expected an array of 2 numbers, got 3 items")
+
+
+class BadCommands(Node):
+    """Sends a good command, then every kind of bad one, on /cmd_vel."""
+
+    def __init__(self) -> None:
+        super().__init__("bad_commands")
+        self.pub = self.create_publisher(Twist, "/cmd_vel", 100)
+
+    def send(self, *pairs: tuple[object, object]) -> None:
+        for v, w in pairs:
+            msg = Twist()
+            msg.linear.x, msg.angular.z = v, w  # type: ignore[assignment]
+            self.pub.publish(msg)
+
+
+async def test_commands_that_are_not_finite_numbers_are_refused_and_the_robot_keeps_the_last_good_one(caplog):
+    async with Runtime() as rt:
+        rt.spawn(World, params={"world": "empty"})
+        rt.spawn(TurtleBot)
+        observer = rt.spawn(Observer)
+        bad = rt.spawn(BadCommands)
+        bad.send((0.1, 0.0))
+        await anyio.sleep(1)
+        nan, inf = math.nan, math.inf
+        for _ in range(250):  # 1,000 bad commands: the supervisor's intensity is 3 in 5 s
+            bad.send((nan, 0.0), (0.0, inf), (-inf, nan), ("fast", 0.0))
+            await anyio.sleep(0.01)  # within the subscription's depth of 10
+        await anyio.sleep(1)
+        robot = rt.node("turtlebot")
+        assert robot.robot.commanded == (0.1, 0.0)
+        (info,) = [n for n in rt.graph.nodes() if n.name == "/turtlebot"]
+        assert (info.crashes, info.state) == (0, "running")
+        (sub,) = rt.graph.topic("/cmd_vel").subscriptions[:1]
+        assert sub.refused == {
+            "linear.x and angular.z must be finite": 750,
+            "linear.x and angular.z must be numbers": 250,
+        }
+    assert observer.odom[-1].twist.twist.linear.x == pytest.approx(0.1)
+    refusals = [r.getMessage() for r in caplog.records if "refused" in r.getMessage()]
+    assert refusals == [
+        "refused a message on /cmd_vel from /bad_commands: linear.x and angular.z must be finite (dropped; 1 so far)",
+        "refused a message on /cmd_vel from /bad_commands: linear.x and angular.z must be numbers (dropped; 1 so far)",
+    ]
+
+
+async def test_world_and_robot_parameters_are_read_only_and_the_step_is_checked():
+    from actors.errors import InvalidParameterValueException
+
+    async with Runtime() as rt:
+        world = rt.spawn(World, params={"world": "empty"})
+        robot = rt.spawn(TurtleBot)
+        for node, name, value in ((world, "dt", 0.0), (world, "world", "signs"), (robot, "x", math.nan)):
+            (result,) = node.set_parameters([Parameter(name, value=value)])
+            assert not result.successful and "read-only" in result.reason
+    for dt in (0.0, -0.01, 0.5):
+        async with Runtime() as rt:
+            with pytest.raises(InvalidParameterValueException, match=f"parameter 'dt' of /world: {dt} is out of range"):
+                rt.spawn(World, params={"dt": dt})
+
+
+async def test_the_world_says_when_a_robot_touches_something_and_when_it_is_free(caplog):
+    caplog.set_level("INFO")
+    async with Runtime() as rt:
+        rt.spawn(World, params={"world": "signs"})
+        rt.spawn(TurtleBot)
+        control = rt.spawn(ConstantControl, params={"v": 0.2})
+        await anyio.sleep(10)
+        control.set_parameters([Parameter("v", value=-0.2)])
+        await anyio.sleep(2)
+    lines = [r.getMessage() for r in caplog.records if r.name == "actors.node.world"]
+    assert lines == ["/turtlebot touches obstacle box_east at (1.26, 0.00)", "/turtlebot is free again"]
+
+
+@pytest.mark.parametrize("path", ["graphs/turtlebot.toml", "graph.toml"])
+async def test_the_demo_robot_drives_a_minute_without_touching_anything_until_killed_then_stops(path):
+    """The demo graphs as configured: /kill at any time in the first minute is visibly what stops it."""
+    from actors.graph import load_graph
+
+    graph, classes = load_graph(ROOT / path)
+    robot_part = [(e, c) for e, c in zip(graph.nodes, classes) if c in (World, TurtleBot, ConstantControl)]
+    assert len(robot_part) == 3
+    async with Runtime() as rt:
+        for entry, cls in robot_part:
+            rt.spawn(cls, name=entry.name, params=entry.params)
+        observer = rt.spawn(Observer)
+        killer = rt.spawn(Killer)
+        killer.timer.cancel()
+        killer.timer = killer.create_timer(58.0, killer.kill)
+        await anyio.sleep(70)
+    assert True not in observer.contact
+    moving = [o.twist.twist for o in observer.odom if o.header.stamp.sec < 58]
+    assert all(t.linear.x == pytest.approx(0.2) for t in moving[10:])
+    still = [o for o in observer.odom if o.header.stamp.sec >= 59]
+    assert still and all((o.twist.twist.linear.x, o.twist.twist.angular.z) == (0.0, 0.0) for o in still)
+    assert len({(o.pose.pose.position.x, o.pose.pose.position.y) for o in still}) == 1

@@ -30,8 +30,8 @@ from typing import NamedTuple
 import msgspec
 import pymunk
 
-from world.lidar import LidarSpec
-from world.noise import Noise, NoiseSource
+from .lidar import LidarSpec
+from .noise import Noise, NoiseSource
 
 __all__ = [
     "LOOKAHEAD",

@@ -6,10 +6,10 @@ from collections.abc import Mapping, Sequence
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Generic, NamedTuple, TypeVar
 
-from world.drive import Pose
+from .drive import Pose
 
 if TYPE_CHECKING:
-    from world.simulation import Simulation
+    from .simulation import Simulation
 
 __all__ = ["Frame", "Recorder", "Sample"]
 

@@ -12,9 +12,9 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from world.arena import posts, solids
-from world.drive import Pose
-from world.record import Recorder
+from .arena import posts, solids
+from .drive import Pose
+from .record import Recorder
 
 if TYPE_CHECKING:
     from PIL.Image import Image

@@ -3,7 +3,10 @@
 Topics (relative, so a namespace gives ``/robot1/cmd_vel`` and so on):
 
 - subscribes ``cmd_vel`` (geometry_msgs/Twist): linear.x and angular.z, clipped
-  to the model's limits and rate-limited by its accelerations;
+  to the model's limits and rate-limited by its accelerations (as a real
+  TurtleBot's firmware does); a command that is not a finite number is refused
+  (:class:`~actors.errors.MessageRefused`: dropped, counted, logged once per
+  publisher) and the robot keeps its last valid command;
 - publishes ``odom`` (nav_msgs/Odometry, 20 Hz): frame ``odom`` (the start
   pose, as on a real robot), child ``base_footprint``, pose and body twist;
 - publishes ``scan`` (sensor_msgs/LaserScan, 10 Hz): 360 beams over 0..2π from
@@ -18,6 +21,7 @@ Topics (relative, so a namespace gives ``/robot1/cmd_vel`` and so on):
 Parameters: ``model`` (``burger`` or ``asl_tb3``), start pose ``x``, ``y``,
 ``theta``, ``seed``, and noise standard deviations ``noise_position``,
 ``noise_heading``, ``noise_linear``, ``noise_angular``, ``noise_ranges`` (all 0).
+They are read once, at start: each is read-only (``param set`` refuses it).
 """
 
 from __future__ import annotations
@@ -27,13 +31,15 @@ import math
 import msgspec
 
 from actors import DurabilityPolicy, Node, QoSProfile
-from actors.errors import WorldError
+from actors.errors import MessageRefused, WorldError
 from interfaces.geometry_msgs.msg import PoseStamped, Quaternion, Twist
 from interfaces.nav_msgs.msg import Odometry
+from interfaces.rcl_interfaces.msg import ParameterDescriptor
 from interfaces.sensor_msgs.msg import LaserScan
 from interfaces.std_msgs.msg import Bool, Header
-from world.noise import Noise
-from world.sim import world_of
+
+from .noise import Noise
+from .sim import world_of
 
 __all__ = ["TurtleBot"]
 
@@ -51,12 +57,15 @@ class TurtleBot(Node):
 
     def __init__(self) -> None:
         super().__init__("turtlebot")
-        model = self.declare_parameter("model", "burger").value
-        x = self.declare_parameter("x", 0.0).value
-        y = self.declare_parameter("y", 0.0).value
-        theta = self.declare_parameter("theta", 0.0).value
-        seed = self.declare_parameter("seed", 0).value
-        noise = {k: self.declare_parameter(f"noise_{k}", 0.0).value for k in Noise.__struct_fields__}
+        fixed = ParameterDescriptor(read_only=True)
+        model = self.declare_parameter("model", "burger", fixed).value
+        x = self.declare_parameter("x", 0.0, fixed).value
+        y = self.declare_parameter("y", 0.0, fixed).value
+        theta = self.declare_parameter("theta", 0.0, fixed).value
+        seed = self.declare_parameter("seed", 0, fixed).value
+        noise = {
+            k: self.declare_parameter(f"noise_{k}", 0.0, fixed).value for k in Noise.__struct_fields__
+        }
         self.world = world_of(self)
         self.name = self.get_fully_qualified_name()
         # The node is the robot's driver: when it stops or restarts, the body stays in
@@ -88,13 +97,20 @@ class TurtleBot(Node):
             Bool, "sim/contact", QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
         )
         self._touching: bool | None = None
-        self.create_subscription(Twist, "cmd_vel", self.on_cmd_vel, 10)
+        # Commands come from outside (the command line, other nodes): name who sends a bad one.
+        self.create_subscription(Twist, "cmd_vel", self.on_cmd_vel, 10).track_senders()
         self.create_timer(ODOM_PERIOD, self.publish_odometry)
         self.create_timer(SCAN_PERIOD, self.publish_scan)
 
     def on_cmd_vel(self, msg: Twist) -> None:
-        """Command the robot: linear.x (m/s) and angular.z (rad/s)."""
-        self.robot.command(msg.linear.x, msg.angular.z)
+        """Command the robot: linear.x (m/s) and angular.z (rad/s); MessageRefused if they are not finite."""
+        try:
+            v, w = float(msg.linear.x), float(msg.angular.z)
+        except (AttributeError, TypeError, ValueError):  # an in-process publisher's malformed Twist
+            raise MessageRefused("linear.x and angular.z must be numbers") from None
+        if not (math.isfinite(v) and math.isfinite(w)):
+            raise MessageRefused("linear.x and angular.z must be finite")
+        self.robot.command(v, w)
 
     def publish_odometry(self) -> None:
         """Publish odom, the ground-truth pose, and the contact state if it changed."""

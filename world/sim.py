@@ -4,10 +4,14 @@ One World per runtime; TurtleBot nodes started after it find it with
 :func:`world_of`.  Parameters:
 
 - ``world``: a world file path, or the name of a shipped world (``empty``, ``signs``);
-- ``dt``: the physics step in seconds (0.01);
+- ``dt``: the physics step in seconds (0.01; from 0.0001 to 0.1);
 - ``image``: a PNG to draw the run into when the node stops (arena, obstacles,
   robots, trajectories); ``gif``: an animated GIF of the run.  Both need the
   ``viz`` extra (Pillow).
+
+They are read once, at start: each is read-only (``param set`` refuses it).
+The World logs a line when a robot starts touching something and when it
+is free again.
 """
 
 from __future__ import annotations
@@ -19,8 +23,11 @@ import numpy as np
 
 from actors import Node
 from actors.errors import WorldError
-from world.record import Recorder
-from world.simulation import Simulation
+from interfaces.rcl_interfaces.msg import FloatingPointRange, ParameterDescriptor
+
+from .drive import Contact
+from .record import Recorder
+from .simulation import Simulation
 
 if TYPE_CHECKING:
     from actors.runtime import Runtime
@@ -28,6 +35,9 @@ if TYPE_CHECKING:
 __all__ = ["World", "world_of"]
 
 _WORLDS: WeakKeyDictionary[Runtime, World] = WeakKeyDictionary()
+
+#: How often (s) the World looks for robots that started or stopped touching something.
+CONTACT_PERIOD = 0.1
 
 
 def world_of(node: Node) -> World:
@@ -46,10 +56,15 @@ class World(Node):
 
     def __init__(self) -> None:
         super().__init__("world")
-        source = self.declare_parameter("world", "empty").value
-        dt = self.declare_parameter("dt", 0.01).value
-        self._image = self.declare_parameter("image", "").value
-        self._gif = self.declare_parameter("gif", "").value
+        fixed = ParameterDescriptor(read_only=True)
+        source = self.declare_parameter("world", "empty", fixed).value
+        # Above 0.1 s robots would cross the contact look-ahead in one step; below 0.1 ms is a typo.
+        step_range = FloatingPointRange(from_value=0.0001, to_value=0.1)
+        dt = self.declare_parameter(
+            "dt", 0.01, ParameterDescriptor(read_only=True, floating_point_range=[step_range])
+        ).value
+        self._image = self.declare_parameter("image", "", fixed).value
+        self._gif = self.declare_parameter("gif", "", fixed).value
         runtime = self._core.runtime
         other = _WORLDS.get(runtime)
         if other is not None and other is not self and not other._core.destroyed:
@@ -57,7 +72,7 @@ class World(Node):
         self.sim = Simulation.from_file(source, dt=dt)
         self.recorder: Recorder | None = None
         if self._image or self._gif:
-            from world.render import pillow
+            from .render import pillow
 
             try:
                 pillow()  # no Pillow: say so now, not after the whole run
@@ -67,13 +82,29 @@ class World(Node):
         self._scans: dict[str, np.ndarray] = {}
         self._scanned_at = -1
         _WORLDS[runtime] = self
+        self._touching: dict[str, tuple[Contact, ...]] = {}
         self.timer = self.create_timer(dt, self.step)
+        self.create_timer(CONTACT_PERIOD, self.report_contacts)
 
     def step(self) -> None:
         """Advance the physics one step (the timer's callback)."""
         self.sim.step()
         if self.recorder is not None:
             self.recorder.update()
+
+    def report_contacts(self) -> None:
+        """Log each robot that started touching something, or is free again, since the last look."""
+        for name, robot in self.sim.robots.items():
+            contacts = robot.contacts
+            if contacts == self._touching.get(name, ()):
+                continue
+            self._touching[name] = contacts
+            if contacts:
+                things = ", ".join(_describe(c) for c in contacts)
+                x, y, _ = robot.pose
+                self.get_logger().info(f"{name} touches {things} at ({x:.2f}, {y:.2f})")
+            else:
+                self.get_logger().info(f"{name} is free again")
 
     def scan(self, robot: str) -> np.ndarray:
         """``robot``'s 360 ranges now; all robots are scanned in one batch per physics step."""
@@ -86,7 +117,7 @@ class World(Node):
         """Draw the run into the files named by ``image`` and ``gif``."""
         if self.recorder is None:
             return
-        from world.render import save_gif, save_png
+        from .render import save_gif, save_png
 
         if self._image:
             self.get_logger().info(f"wrote {save_png(self.recorder, self._image)}")
@@ -98,3 +129,7 @@ class World(Node):
         if _WORLDS.get(runtime) is self:
             del _WORLDS[runtime]
         super().destroy_node()
+
+
+def _describe(contact: Contact) -> str:
+    return f"{contact.kind} {contact.name}" if contact.name else f"a {contact.kind}"

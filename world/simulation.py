@@ -16,10 +16,10 @@ import numpy as np
 import pymunk
 import pymunk.autogeometry
 
-from world.arena import Post, Solid, World, load_world, posts, solids
-from world.drive import MODELS, Contact, Pose, Robot, RobotModel
-from world.lidar import Lidar, LidarSpec, finish_ranges
-from world.noise import Noise
+from .arena import Post, Solid, World, load_world, posts, solids
+from .drive import MODELS, Contact, Pose, Robot, RobotModel
+from .lidar import Lidar, LidarSpec, finish_ranges
+from .noise import Noise
 
 __all__ = ["Simulation"]
 
