@@ -182,16 +182,16 @@ def test_a_bad_world_file_exits_2_naming_file_and_key(run_module, tmp_path):
 
 
 class BadCommands(Node):
-    """Sends a good command, then every kind of bad one, on /cmd_vel."""
+    """Sends the commands it is given on /cmd_vel."""
 
     def __init__(self) -> None:
         super().__init__("bad_commands")
         self.pub = self.create_publisher(Twist, "/cmd_vel", 100)
 
-    def send(self, *pairs: tuple[object, object]) -> None:
+    def send(self, *pairs: tuple[float, float]) -> None:
         for v, w in pairs:
             msg = Twist()
-            msg.linear.x, msg.angular.z = v, w  # type: ignore[assignment]
+            msg.linear.x, msg.angular.z = v, w
             self.pub.publish(msg)
 
 
@@ -205,7 +205,7 @@ async def test_commands_that_are_not_finite_numbers_are_refused_and_the_robot_ke
         await anyio.sleep(1)
         nan, inf = math.nan, math.inf
         for _ in range(250):  # 1,000 bad commands: the supervisor's intensity is 3 in 5 s
-            bad.send((nan, 0.0), (0.0, inf), (-inf, nan), ("fast", 0.0))
+            bad.send((nan, 0.0), (0.0, inf), (-inf, nan), (1e308 * 10, 0.0))
             await anyio.sleep(0.01)  # within the subscription's depth of 10
         await anyio.sleep(1)
         robot = rt.node("turtlebot")
@@ -213,15 +213,11 @@ async def test_commands_that_are_not_finite_numbers_are_refused_and_the_robot_ke
         (info,) = [n for n in rt.graph.nodes() if n.name == "/turtlebot"]
         assert (info.crashes, info.state) == (0, "running")
         (sub,) = rt.graph.topic("/cmd_vel").subscriptions[:1]
-        assert sub.refused == {
-            "linear.x and angular.z must be finite": 750,
-            "linear.x and angular.z must be numbers": 250,
-        }
+        assert sub.refused == {"linear.x and angular.z must be finite": 1000}
     assert observer.odom[-1].twist.twist.linear.x == pytest.approx(0.1)
     refusals = [r.getMessage() for r in caplog.records if "refused" in r.getMessage()]
     assert refusals == [
         "refused a message on /cmd_vel from /bad_commands: linear.x and angular.z must be finite (dropped; 1 so far)",
-        "refused a message on /cmd_vel from /bad_commands: linear.x and angular.z must be numbers (dropped; 1 so far)",
     ]
 
 

@@ -103,11 +103,12 @@ class TurtleBot(Node):
         self.create_timer(SCAN_PERIOD, self.publish_scan)
 
     def on_cmd_vel(self, msg: Twist) -> None:
-        """Command the robot: linear.x (m/s) and angular.z (rad/s); MessageRefused if they are not finite."""
-        try:
-            v, w = float(msg.linear.x), float(msg.angular.z)
-        except (AttributeError, TypeError, ValueError):  # an in-process publisher's malformed Twist
-            raise MessageRefused("linear.x and angular.z must be numbers") from None
+        """Command the robot: linear.x (m/s) and angular.z (rad/s); MessageRefused if they are not finite.
+
+        A topic carries only what its type allows (publish checks every field),
+        so both are floats; NaN and infinities are what a float may still hold.
+        """
+        v, w = msg.linear.x, msg.angular.z
         if not (math.isfinite(v) and math.isfinite(w)):
             raise MessageRefused("linear.x and angular.z must be finite")
         self.robot.command(v, w)
