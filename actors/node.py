@@ -198,11 +198,14 @@ class NodeCore:
         self.subscriptions[sub] = None
         return sub
 
-    def create_timer(self, period: float, callback: Callable[[], Any]) -> Timer:
+    def create_timer(self, period: float, callback: Callable[..., Any], *, clock: Clock | None = None,
+                     autostart: bool = True) -> Timer:
         """See :meth:`Node.create_timer`."""
         if not callable(callback):
             raise TypeError(f"timer callback must be callable, got {callback!r}")
-        timer = Timer(self, period, callback, self.runtime.deadlines)
+        if clock is not None and not isinstance(clock, Clock):
+            raise TypeError(f"a timer's clock must be a Clock, got {clock!r}")
+        timer = Timer(self, period, callback, self.runtime.deadlines, clock=clock or self.clock, autostart=autostart)
         self.timers[timer] = None
         return timer
 
@@ -503,9 +506,17 @@ class Node(ParameterMethods, GraphQueries):
 
     # -- time -----------------------------------------------------------------
 
-    def create_timer(self, timer_period_sec: float, callback: Callable[[], Any]) -> Timer:
-        """A timer calling ``callback()`` every ``timer_period_sec`` seconds, first one period from now."""
-        return self._core.create_timer(timer_period_sec, callback)
+    def create_timer(self, timer_period_sec: float, callback: Callable[..., Any], *, clock: Clock | None = None,
+                     autostart: bool = True) -> Timer:
+        """A timer calling ``callback()`` every ``timer_period_sec`` seconds, first one period from now.
+
+        A callback with a parameter annotated ``TimerInfo`` gets the tick's
+        expected and actual call times.  ``autostart=False`` makes a timer that
+        starts on ``timer.reset()``.  The timer ticks on the graph's time;
+        ``clock`` (the node's by default) is the one TimerInfo reads.  Raises
+        ValueError for a period that is not > 0.
+        """
+        return self._core.create_timer(timer_period_sec, callback, clock=clock, autostart=autostart)
 
     def destroy_timer(self, timer: Timer) -> bool:
         """Cancel and forget ``timer``; returns True as rclpy does."""

@@ -13,11 +13,18 @@ a tick's cost with 10,000 timers; tuples compare in C.  Timers whose deadlines
 have come when the loop timer fires all fire from it, so timers that share a
 deadline (every node started in the same instant, under virtual time) cost one
 loop timer between them.  Timers due together fire in the order they were armed.
+
+As in rclpy, a callback with a parameter annotated ``TimerInfo`` is called with
+the tick's expected and actual times; ``autostart=False`` makes a timer that
+waits for :meth:`Timer.reset`; times until and since a call are nanoseconds.
+Every timer ticks on the graph's time (the loop's); a ``clock`` given to it is
+the one its TimerInfo stamps are read from.
 """
 
 from __future__ import annotations
 
 import asyncio
+import inspect
 import itertools
 from collections.abc import Awaitable, Callable
 from heapq import heapify, heappop, heappush
@@ -25,8 +32,52 @@ from inspect import isawaitable
 from typing import Any
 
 from actors.actor import CallbackFailed, Owner
+from actors.clock import Clock, ClockType, Time
 
-__all__ = ["Timer", "Deadlines"]
+__all__ = ["Timer", "TimerInfo", "Deadlines"]
+
+_NS = 1_000_000_000
+
+
+class TimerInfo:
+    """When a tick was due and when its callback ran, as ``rclpy.timer.TimerInfo``.
+
+    Raises TypeError when ``clock_type`` is not a ClockType and ValueError for
+    negative times (nanoseconds of the timer's clock).
+    """
+
+    __slots__ = ("_expected", "_actual")
+
+    def __init__(self, *, expected_call_time: int = 0, actual_call_time: int = 0,
+                 clock_type: ClockType = ClockType.SYSTEM_TIME) -> None:
+        if expected_call_time < 0 or actual_call_time < 0:
+            raise ValueError("a TimerInfo's call times cannot be negative")
+        self._expected = Time(nanoseconds=expected_call_time, clock_type=clock_type)
+        self._actual = Time(nanoseconds=actual_call_time, clock_type=clock_type)
+
+    @property
+    def expected_call_time(self) -> Time:
+        """When the tick was due."""
+        return self._expected
+
+    @property
+    def actual_call_time(self) -> Time:
+        """When the callback was called (later than due when the node was busy)."""
+        return self._actual
+
+
+def _timer_info_parameter(callback: Callable[..., Any]) -> str | None:
+    """The name of ``callback``'s parameter annotated TimerInfo, if it has one (as rclpy looks for it)."""
+    try:
+        parameters = inspect.signature(callback).parameters.values()
+    except (TypeError, ValueError):  # a builtin or a C callable: no annotations to read
+        return None
+    for parameter in parameters:
+        annotation = parameter.annotation
+        # A string when the callback's module uses ``from __future__ import annotations``.
+        if annotation is TimerInfo or (isinstance(annotation, str) and annotation.rpartition(".")[2] == "TimerInfo"):
+            return parameter.name
+    return None
 
 _COMPACT_AT = 64  # stale entries tolerated before the heap is rebuilt without them
 
@@ -118,28 +169,41 @@ class Timer:
         "node",
         "callback",
         "period",
+        "clock",
         "_loop",
         "_deadlines",
         "_start",
         "_k",
         "_when",
         "_canceled",
+        "_last_call",
+        "_checked",
+        "_info_arg",
         "ticks",
         "__weakref__",
     )
 
-    def __init__(self, node: Owner, period: float, callback: Callable[[], Any], deadlines: Deadlines) -> None:
+    def __init__(self, node: Owner, period: float, callback: Callable[..., Any], deadlines: Deadlines, *,
+                 clock: Clock, autostart: bool = True) -> None:
         if not period > 0:
             raise ValueError(f"timer period must be > 0 seconds, got {period}")
         self.node = node
         self.callback = callback
         self.period = float(period)
+        self.clock = clock
         self._loop: asyncio.AbstractEventLoop = node.loop
         self._deadlines = deadlines
-        self._canceled = False
         self._when: float | None = None  # the deadline this timer waits for; None when not armed
+        # The callback whose signature was last read, and its TimerInfo parameter (None: none).
+        self._checked: Any = None
+        self._info_arg: str | None = None
         self.ticks = 0
-        self._restart()
+        self._last_call = self._loop.time()
+        self._canceled = not autostart
+        if autostart:
+            self._restart()
+        else:
+            self._start, self._k = self._last_call, 1
 
     def _restart(self) -> None:
         self._start = self._loop.time()
@@ -164,8 +228,12 @@ class Timer:
         if self._canceled:
             return None
         self.ticks += 1
+        callback = self.callback
+        self._last_call = self._loop.time()
+        if callback is not self._checked:  # read the signature again only when the callback changes
+            self._checked, self._info_arg = callback, _timer_info_parameter(callback)
         try:
-            result = self.callback()
+            result = callback(**{self._info_arg: self._info()}) if self._info_arg else callback()
             if result is not None and isawaitable(result):
                 return self._run_async(result)
         except Exception as exc:
@@ -191,21 +259,46 @@ class Timer:
             self._k = max(self._k + 1, int(elapsed / self.period) + 1)
             self._arm()
 
+    def _info(self) -> TimerInfo:
+        actual = self.clock.now_ns()
+        late = int(round((self._last_call - self.next_deadline) * _NS))
+        return TimerInfo(expected_call_time=max(0, actual - late), actual_call_time=actual,
+                         clock_type=self.clock.clock_type)
+
     @property
     def timer_period_ns(self) -> int:
-        """The period in nanoseconds, as rclpy's ``Timer.timer_period_ns``."""
-        return int(round(self.period * 1e9))
+        """The period in nanoseconds, as rclpy's ``Timer.timer_period_ns``.
+
+        Setting it changes the period from the tick already scheduled on: that
+        tick keeps its time, the ones after it follow the new period.
+        """
+        return int(round(self.period * _NS))
+
+    @timer_period_ns.setter
+    def timer_period_ns(self, value: int) -> None:
+        if not value > 0:
+            raise ValueError(f"timer period must be > 0 ns, got {value}")
+        self._start, self._k = self.next_deadline, 0  # re-anchored on the scheduled tick
+        self.period = value / _NS
 
     @property
     def next_deadline(self) -> float:
         """The loop time of the next tick."""
         return self._start + self._k * self.period
 
-    def time_until_next_call(self) -> float | None:
-        """Seconds until the next tick, or None when canceled."""
+    def time_until_next_call(self) -> int | None:
+        """Nanoseconds until the next tick (negative when it is overdue), or None when canceled."""
         if self._canceled:
             return None
-        return max(0.0, self.next_deadline - self._loop.time())
+        return int(round((self.next_deadline - self._loop.time()) * _NS))
+
+    def time_since_last_call(self) -> int:
+        """Nanoseconds since the callback was last called (since the timer was made, before the first call)."""
+        return int(round((self._loop.time() - self._last_call) * _NS))
+
+    def is_ready(self) -> bool:
+        """Whether a tick is due and its callback has not run yet."""
+        return not self._canceled and self._loop.time() >= self.next_deadline
 
     def cancel(self) -> None:
         """Stop ticking until :meth:`reset`."""
@@ -217,7 +310,7 @@ class Timer:
         return self._canceled
 
     def reset(self) -> None:
-        """Start over: the next tick comes one period from now (also revives a canceled timer)."""
+        """Start over: the next tick comes one period from now (also starts a canceled or not started timer)."""
         self._disarm()
         self._canceled = False
         self._restart()

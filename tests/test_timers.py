@@ -1,13 +1,16 @@
-"""Timers: absolute deadlines under virtual time, skipped ticks on overrun, cancel and reset."""
+"""Timers: absolute deadlines under virtual time, skipped ticks on overrun, cancel and reset, rclpy's TimerInfo, autostart, clock= and nanosecond times."""
 
 from __future__ import annotations
 
 import asyncio
+import time
 
 import anyio
 import pytest
 
 from actors import Node, Runtime
+from actors.clock import Clock, ClockType, Time
+from actors.timers import TimerInfo, _timer_info_parameter
 from conftest import live_loop_timers
 
 pytestmark = pytest.mark.virtual_time
@@ -55,7 +58,7 @@ async def test_cancel_reset_and_is_canceled():
         node = rt.spawn(Ticker)
         await anyio.sleep(0.35)
         assert len(node.stamps) == 3
-        assert node.timer.time_until_next_call() == pytest.approx(0.05)
+        assert node.timer.time_until_next_call() == 50_000_000  # nanoseconds, as rclpy
         node.timer.cancel()
         assert node.timer.is_canceled() and node.timer.time_until_next_call() is None
         await anyio.sleep(1)
@@ -130,3 +133,130 @@ async def test_stale_deadlines_of_canceled_timers_are_swept_out():
         assert len(rt.deadlines._heap) < 200  # rebuilt when stale entries became the majority
         await anyio.sleep(10)
         assert node.timers[0].ticks == 1
+
+
+class Informed(Node):
+    """A timer callback that asks for TimerInfo, in both spellings of the annotation."""
+
+    def __init__(self, **timer_options: object) -> None:
+        super().__init__("informed")
+        self.infos: list[TimerInfo] = []
+        self.timer = self.create_timer(0.25, self.tick, **timer_options)
+
+    def tick(self, info: TimerInfo) -> None:
+        self.infos.append(info)
+
+
+async def test_a_callback_annotated_with_timer_info_gets_the_expected_and_actual_times():
+    async with Runtime() as rt:
+        node = rt.spawn(Informed)
+        await anyio.sleep(0.6)
+        first, second = node.infos
+        assert first.expected_call_time == Time(seconds=0.25, clock_type=ClockType.ROS_TIME)
+        assert second.actual_call_time == Time(seconds=0.5, clock_type=ClockType.ROS_TIME)
+
+
+async def test_timer_info_shows_a_late_call():
+    class Late(Informed):
+        def __init__(self) -> None:
+            super().__init__()
+            self.create_timer(0.1, self.block)
+
+        async def block(self) -> None:
+            await anyio.sleep(0.3)  # holds the node past the 0.25 s tick
+
+    async with Runtime() as rt:
+        node = rt.spawn(Late)
+        await anyio.sleep(0.45)
+        (info,) = node.infos
+        assert info.expected_call_time.nanoseconds == 250_000_000
+        assert info.actual_call_time.nanoseconds == 400_000_000
+
+
+def test_the_timer_info_parameter_is_found_by_its_annotation():
+    def plain() -> None: ...
+
+    def stringly(info: TimerInfo) -> None: ...
+
+    def real(first: int, info) -> None: ...  # noqa: ANN001
+
+    real.__annotations__["info"] = TimerInfo
+    # This module has `from __future__ import annotations`: there the annotation is a string.
+    assert stringly.__annotations__["info"] == "TimerInfo"
+    assert _timer_info_parameter(plain) is None
+    assert _timer_info_parameter(stringly) == "info"
+    assert _timer_info_parameter(real) == "info"
+    assert _timer_info_parameter(print) is None
+    with pytest.raises(ValueError):
+        TimerInfo(expected_call_time=-1)
+    with pytest.raises(TypeError):
+        TimerInfo(clock_type="ROS_TIME")
+
+
+async def test_a_timer_made_without_autostart_waits_for_reset():
+    async with Runtime() as rt:
+        node = rt.spawn(Informed, autostart=False)
+        await anyio.sleep(1)
+        assert node.infos == [] and node.timer.is_canceled()
+        assert node.timer.time_until_next_call() is None
+        node.timer.reset()
+        await anyio.sleep(0.3)
+        assert [i.expected_call_time.nanoseconds for i in node.infos] == [1_250_000_000]
+
+
+async def test_times_until_and_since_a_call_are_nanoseconds():
+    class Busy(Ticker):
+        period = 0.5
+
+    async with Runtime() as rt:
+        node = rt.spawn(Busy)
+        await anyio.sleep(0.2)
+        assert node.timer.time_since_last_call() == 200_000_000  # since it was made
+        assert node.timer.time_until_next_call() == 300_000_000
+        await anyio.sleep(0.5)
+        assert node.timer.time_since_last_call() == 200_000_000  # since the tick at 0.5
+        assert not node.timer.is_ready()
+
+
+async def test_an_overdue_tick_has_a_negative_time_until_it():
+    class Hog(Node):
+        def __init__(self) -> None:
+            super().__init__("hog")
+            self.seen: list[int | None] = []
+            self.ticker = self.create_timer(0.1, lambda: None)
+            self.create_timer(0.05, self.hold)
+
+        async def hold(self) -> None:
+            await anyio.sleep(0.12)  # the 0.1 tick comes due while this runs
+            self.seen.append(self.ticker.time_until_next_call())
+            self.seen.append(self.ticker.is_ready())
+
+    async with Runtime() as rt:
+        node = rt.spawn(Hog)
+        await anyio.sleep(0.18)
+        assert node.seen[:2] == [-70_000_000, True]
+
+
+async def test_a_timer_on_another_clock_stamps_its_timer_info_with_that_clock():
+    async with Runtime() as rt:
+        node = rt.spawn(Informed, clock=Clock(clock_type=ClockType.SYSTEM_TIME))
+        assert node.timer.clock.clock_type == ClockType.SYSTEM_TIME
+        before = time.time_ns()
+        await anyio.sleep(0.3)
+        (info,) = node.infos
+        assert info.actual_call_time.clock_type == ClockType.SYSTEM_TIME
+        assert info.actual_call_time.nanoseconds >= before  # read from the system clock
+        with pytest.raises(TypeError):
+            node.create_timer(1.0, lambda: None, clock="steady")
+
+
+async def test_changing_the_period_keeps_the_scheduled_tick():
+    async with Runtime() as rt:
+        node = rt.spawn(Ticker)
+        await anyio.sleep(0.15)
+        node.timer.timer_period_ns = 500_000_000
+        assert node.timer.timer_period_ns == 500_000_000
+        await anyio.sleep(1.0)
+        assert node.stamps == pytest.approx([0.1, 0.2, 0.7])
+        with pytest.raises(ValueError):
+            node.timer.timer_period_ns = 0
