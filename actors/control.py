@@ -445,7 +445,7 @@ class _Session:
             )
         pub = self._publishers.get(name)
         if pub is None:
-            pub = Publisher(self, name, msg_type, QoSProfile())  # type: ignore[arg-type]
+            pub = Publisher(self, name, msg_type, QoSProfile(depth=10))  # type: ignore[arg-type]
             self.runtime.topics.add_publisher(pub)
             self._publishers[name] = pub
         pub.publish(codec.convert(request.msg, msg_type))

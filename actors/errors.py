@@ -13,6 +13,7 @@
     │   └── InvalidServiceNameException
     ├── TopicTypeError               publisher and subscription disagree on a topic's type
     ├── MessageRefused               a subscription callback turns a message away (dropped, counted)
+    ├── InvalidQoSProfileException   a QoSProfile without a history or depth (rclpy's name)
     ├── GraphFileError               graph.toml is malformed (names file and key path)
     ├── RosArgsError                 a --ros-args argument or a parameter file is malformed
     ├── WorldError                   a robot without a world, a start pose that does not fit
@@ -55,6 +56,7 @@ __all__ = [
     "InvalidServiceNameException",
     "TopicTypeError",
     "MessageRefused",
+    "InvalidQoSProfileException",
     "GraphFileError",
     "RosArgsError",
     "WorldError",
@@ -150,6 +152,10 @@ class MessageRefused(ActorsError):
     def __init__(self, reason: str) -> None:
         self.reason = reason
         super().__init__(reason)
+
+
+class InvalidQoSProfileException(ActorsError, ValueError):
+    """A QoSProfile was made without a history or a depth, or KEEP_LAST without a depth."""
 
 
 class GraphFileError(ActorsError):

@@ -17,7 +17,8 @@ import msgspec
 from actors.names import is_hidden
 from actors.services import ServiceTable
 from actors.supervisor import Child, Supervisor
-from actors.topics import QoSProfile, Topic, TopicTable, type_name
+from actors.qos import QoSSnapshot
+from actors.topics import Topic, TopicTable, type_name
 
 __all__ = [
     "EndpointInfo",
@@ -42,7 +43,7 @@ class EndpointInfo(msgspec.Struct, frozen=True, kw_only=True):
 
     node: str
     type: str
-    qos: QoSProfile
+    qos: QoSSnapshot
     queued: int = 0
     dropped: int = 0
     refused: dict[str, int] = {}

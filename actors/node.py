@@ -31,7 +31,15 @@ from actors.node_params import ParameterMethods
 from actors.params import Parameter, ParameterStore
 from actors.services import Client, Service, ServiceTable
 from actors.timers import Deadlines, Timer
-from actors.topics import Publisher, QoSProfile, Subscription, TopicTable, as_qos
+from actors.qos import QoSProfile, as_qos
+from actors.qos_events import (
+    EndpointEvents,
+    PublisherEventCallbacks,
+    SubscriptionEventCallbacks,
+    WatchedPublisher,
+    watched,
+)
+from actors.topics import Publisher, Subscription, TopicTable
 from interfaces.rcl_interfaces.msg import ParameterDescriptor
 
 __all__ = ["Node", "NodeCore", "Host", "ChildSpec", "SpawnRequest", "spawning"]
@@ -166,11 +174,16 @@ class NodeCore:
         self._inherited = {}
         return rest
 
-    def create_publisher(self, msg_type: type, topic: str, qos: QoSProfile | int) -> Publisher:
+    def create_publisher(self, msg_type: type, topic: str, qos: QoSProfile | int,
+                         event_callbacks: PublisherEventCallbacks | None = None) -> Publisher:
         """See :meth:`Node.create_publisher`."""
         _check_type(msg_type, "create_publisher")
         name = self.resolver.resolve(topic)
-        pub = Publisher(self, name, msg_type, as_qos(qos))
+        snapshot = as_qos(qos)
+        if watched(snapshot) or event_callbacks is not None:
+            pub: Publisher = WatchedPublisher(self, name, msg_type, snapshot, event_callbacks)
+        else:
+            pub = Publisher(self, name, msg_type, snapshot)
         old = self._take_inherited("pub", name, msg_type)
         if old is not None and old._history is not None and pub._history is not None:
             pub._history.extend(old._history)
@@ -181,7 +194,8 @@ class NodeCore:
         return pub
 
     def create_subscription(
-        self, msg_type: type, topic: str, callback: Callable[[Any], Any], qos: QoSProfile | int
+        self, msg_type: type, topic: str, callback: Callable[[Any], Any], qos: QoSProfile | int,
+        event_callbacks: SubscriptionEventCallbacks | None = None,
     ) -> Subscription:
         """See :meth:`Node.create_subscription`."""
         _check_type(msg_type, "create_subscription")
@@ -189,6 +203,8 @@ class NodeCore:
             raise TypeError(f"subscription callback must be callable, got {callback!r}")
         name = self.resolver.resolve(topic)
         sub = Subscription(self, name, msg_type, callback, as_qos(qos))
+        if event_callbacks is not None:
+            sub._events = EndpointEvents(sub, event_callbacks)
         old = self._take_inherited("sub", name, msg_type)
         if old is not None:
             self.runtime.topics.replace_subscription(old, sub)
@@ -409,13 +425,17 @@ class Node(ParameterMethods, GraphQueries):
 
     # -- topics ---------------------------------------------------------------
 
-    def create_publisher(self, msg_type: type, topic: str, qos_profile: QoSProfile | int) -> Publisher:
+    def create_publisher(self, msg_type: type, topic: str, qos_profile: QoSProfile | int, *,
+                         event_callbacks: PublisherEventCallbacks | None = None) -> Publisher:
         """A publisher of ``msg_type`` on ``topic`` (resolved and remapped by ROS rules).
 
-        ``qos_profile`` is a QoSProfile or a depth (KEEP_LAST of that depth).
-        Raises TopicTypeError if the topic already carries another type.
+        ``qos_profile`` is a QoSProfile (copied: changing it later changes
+        nothing) or a depth (KEEP_LAST of that depth); its deadline, lifespan
+        and liveliness are kept (see :mod:`actors.qos_events`).
+        ``event_callbacks`` are called on QoS events.  Raises TopicTypeError if
+        the topic already carries another type.
         """
-        return self._core.create_publisher(msg_type, topic, qos_profile)
+        return self._core.create_publisher(msg_type, topic, qos_profile, event_callbacks)
 
     def create_subscription(
         self,
@@ -423,17 +443,21 @@ class Node(ParameterMethods, GraphQueries):
         topic: str,
         callback: Callable[[Any], Any],
         qos_profile: QoSProfile | int,
+        *,
+        event_callbacks: SubscriptionEventCallbacks | None = None,
     ) -> Subscription:
         """A subscription calling ``callback(msg)`` for each message on ``topic``.
 
         Raises TopicTypeError if the topic already carries another type.  A
         TRANSIENT_LOCAL subscription first receives the history kept by
-        TRANSIENT_LOCAL publishers.  Callbacks that raise crash the node (its
-        supervisor restarts it); the message is logged as a dead letter.  A
-        callback that raises MessageRefused refuses the message instead: it
-        is dropped and counted, and the node keeps running.
+        TRANSIENT_LOCAL publishers.  Messages older than their publisher's
+        lifespan are not delivered.  ``event_callbacks`` are called on QoS
+        events.  Callbacks that raise crash the node (its supervisor restarts
+        it); the message is logged as a dead letter.  A callback that raises
+        MessageRefused refuses the message instead: it is dropped and counted,
+        and the node keeps running.
         """
-        return self._core.create_subscription(msg_type, topic, callback, qos_profile)
+        return self._core.create_subscription(msg_type, topic, callback, qos_profile, event_callbacks)
 
     def destroy_publisher(self, publisher: Publisher) -> bool:
         """Destroy ``publisher``; returns True as rclpy does."""

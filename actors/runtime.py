@@ -28,7 +28,7 @@ from actors.node import Node, NodeCore, SpawnRequest, spawning
 from actors.services import ServiceTable
 from actors.supervisor import Child, RestartType, Supervisor, SupervisorPolicy
 from actors.timers import Deadlines
-from actors.topics import Publisher, QoSProfile, Subscription, TopicTable, type_name
+from actors.topics import Publisher, QoSProfile, TopicTable
 
 __all__ = ["Runtime", "Attachment"]
 
@@ -70,7 +70,7 @@ class Runtime:
         self.name = name
         self._attachments = tuple(attach)
         self.policy = supervisor or SupervisorPolicy()
-        self.topics = TopicTable(self._incompatible_qos)
+        self.topics = TopicTable()
         self.services = ServiceTable()
         self._owner = _RuntimeEndpointOwner(self)
         self.nodes: dict[str, NodeCore] = {}
@@ -78,7 +78,6 @@ class Runtime:
         self._state = "unopened"
         self._failure: BaseException | None = None
         self._rosout: Publisher | None = None
-        self._reported_pairs: set[tuple[str, str, str]] = set()
         self._stopped: anyio.Event | None = None
 
     # -- lifecycle ------------------------------------------------------------
@@ -264,15 +263,6 @@ class Runtime:
         self.topics.add_publisher(pub)
         return pub
 
-    def _incompatible_qos(self, pub: Publisher, sub: Subscription, reason: str) -> None:
-        pair = (pub.node.fqn, sub.node.fqn, sub.topic_name)
-        if pair in self._reported_pairs:  # once per pair of nodes, not at every restart
-            return
-        self._reported_pairs.add(pair)
-        self.logger.warning(
-            f"{sub.node.fqn} subscribes to {sub.topic_name} ({type_name(sub.msg_type)}) but "
-            f"{pub.node.fqn} publishes with incompatible QoS ({reason}): not connected"
-        )
 
 
 class _RuntimeEndpointOwner:

@@ -10,9 +10,21 @@ subscription keeps its own queue, bounded by its QoS depth as in ROS: a full
 KEEP_LAST queue drops its oldest message and counts the drop.
 
 A publisher and a subscription are *matched* (connected) only when their QoS is
-compatible, as in ROS: a best-effort publisher does not feed a reliable
-subscription, nor a volatile publisher a transient-local one.  Incompatible
-pairs are logged once and reported by ``doctor``.
+compatible, as in ROS (``actors.qos``): a best-effort publisher does not feed a
+reliable subscription, nor a volatile publisher a transient-local one, nor a
+publisher with a longer deadline or lease, or an AUTOMATIC one, a subscription
+that asks for less or for MANUAL_BY_TOPIC.  Each side of an incompatible pair
+warns once, as rclpy's default event callbacks do, and ``doctor`` reports it.
+BEST_AVAILABLE reliability and durability are settled when an endpoint joins
+its topic: a publisher offers RELIABLE and TRANSIENT_LOCAL; a subscription asks
+for as much as every publisher there already offers.
+
+QoS events and the policies that need watching (deadline, lifespan,
+MANUAL_BY_TOPIC liveliness) live in ``actors.qos_events``: endpoints that use
+none of them pay nothing for them on the publish path.  A message of a
+publisher with a lifespan travels wrapped in :class:`Expiring`, and a
+subscription fed by such a publisher drops each one whose time has passed when
+its turn comes.
 
 A subscription callback may refuse a message by raising
 :class:`~actors.errors.MessageRefused`: the message is dropped and counted
@@ -29,7 +41,6 @@ from __future__ import annotations
 import sys
 from collections import deque
 from collections.abc import Awaitable, Callable
-from enum import IntEnum
 from inspect import isawaitable
 from typing import Any
 
@@ -39,8 +50,23 @@ from actors.actor import CallbackFailed, Mailbox, Owner
 from actors.errors import MessageRefused, TopicTypeError
 from actors.refusals import Refusals
 from actors.snapshot import snapshotter
+from actors.qos import (
+    DurabilityPolicy,
+    HistoryPolicy,
+    QoSPolicyKind,
+    QoSProfile,
+    QoSSnapshot,
+    ReliabilityPolicy,
+    as_qos,
+    incompatible_policies,
+    qos_incompatibility,
+    qos_policy_name_from_kind,
+    qos_profile_sensor_data,
+    qos_profile_system_default,
+)
 
 __all__ = [
+    # QoS lives in actors.qos; these names stay here for the code that imports them from here.
     "HistoryPolicy",
     "ReliabilityPolicy",
     "DurabilityPolicy",
@@ -50,6 +76,8 @@ __all__ = [
     "as_qos",
     "qos_incompatibility",
     "type_name",
+    "warn_incompatible",
+    "Expiring",
     "Publisher",
     "Subscription",
     "Topic",
@@ -57,90 +85,56 @@ __all__ = [
 ]
 
 
-class HistoryPolicy(IntEnum):
-    """How many messages a queue keeps (values as rclpy's)."""
-
-    KEEP_LAST = 1
-    KEEP_ALL = 2
-
-
-class ReliabilityPolicy(IntEnum):
-    """Delivery guarantee requested or offered (values as rclpy's)."""
-
-    RELIABLE = 1
-    BEST_EFFORT = 2
-
-
-class DurabilityPolicy(IntEnum):
-    """Whether late subscribers get earlier messages (values as rclpy's)."""
-
-    TRANSIENT_LOCAL = 1
-    VOLATILE = 2
-
-
-class QoSProfile(msgspec.Struct, frozen=True, kw_only=True):
-    """Quality of service of a publisher or subscription, shaped like rclpy's.
-
-    ``depth`` bounds a KEEP_LAST queue and the history a TRANSIENT_LOCAL
-    publisher keeps for late subscribers.
-    """
-
-    depth: int = 10
-    history: HistoryPolicy = HistoryPolicy.KEEP_LAST
-    reliability: ReliabilityPolicy = ReliabilityPolicy.RELIABLE
-    durability: DurabilityPolicy = DurabilityPolicy.VOLATILE
-
-    def __post_init__(self) -> None:
-        if self.history == HistoryPolicy.KEEP_LAST and self.depth < 1:
-            raise ValueError(f"QoS depth must be >= 1 for KEEP_LAST, got {self.depth}")
-
-
-qos_profile_system_default = QoSProfile()
-qos_profile_sensor_data = QoSProfile(depth=5, reliability=ReliabilityPolicy.BEST_EFFORT)
-
-
-def as_qos(qos: QoSProfile | int) -> QoSProfile:
-    """A QoS profile from a profile or a plain depth (KEEP_LAST of that depth)."""
-    if isinstance(qos, QoSProfile):
-        return qos
-    if isinstance(qos, int) and not isinstance(qos, bool):
-        return QoSProfile(depth=qos)
-    raise TypeError(f"qos must be a QoSProfile or an int depth, got {qos!r}")
-
-
-def qos_incompatibility(offered: QoSProfile, requested: QoSProfile) -> str | None:
-    """Why a publisher offering ``offered`` cannot feed a subscription requesting ``requested``."""
-    if (
-        offered.reliability == ReliabilityPolicy.BEST_EFFORT
-        and requested.reliability == ReliabilityPolicy.RELIABLE
-    ):
-        return "publisher offers BEST_EFFORT, subscription requests RELIABLE"
-    if (
-        offered.durability == DurabilityPolicy.VOLATILE
-        and requested.durability == DurabilityPolicy.TRANSIENT_LOCAL
-    ):
-        return "publisher offers VOLATILE, subscription requests TRANSIENT_LOCAL"
-    return None
-
-
 def type_name(msg_type: type) -> str:
     """A type's ROS name (``std_msgs/msg/String``), or its Python name if it has none."""
     return getattr(msg_type, "__ros_type__", None) or f"{msg_type.__module__}.{msg_type.__qualname__}"
+
+
+def warn_incompatible(endpoint: Publisher | Subscription, policy: QoSPolicyKind) -> None:
+    """rclpy's default incompatible-QoS warning, from ``endpoint``'s node."""
+    name = qos_policy_name_from_kind(policy)
+    if isinstance(endpoint, Subscription):
+        text = (f"New publisher discovered on topic '{endpoint.topic_name}', offering incompatible QoS. "
+                f"No messages will be received from it. Last incompatible policy: {name}")
+    else:
+        text = (f"New subscription discovered on topic '{endpoint.topic_name}', requesting incompatible QoS. "
+                f"No messages will be sent to it. Last incompatible policy: {name}")
+    endpoint.node.logger.warning(text)
+
+
+class Expiring:
+    """A message of a publisher with a lifespan, in a queue: dropped unread once ``expires`` (loop time) passes."""
+
+    __slots__ = ("msg", "expires")
+
+    def __init__(self, msg: Any, expires: float) -> None:
+        self.msg = msg
+        self.expires = expires
+
+    def __repr__(self) -> str:
+        return repr(self.msg)  # what a dead letter shows
 
 
 class Publisher:
     """Publishes messages of one type on one topic.  Create with ``Node.create_publisher``."""
 
     __slots__ = (
-        "topic_name", "msg_type", "qos", "node", "_subs", "_tracked", "_history", "_snapshot", "__weakref__"
+        "topic_name", "msg_type", "qos", "node", "_subs", "_tracked", "_history", "_snapshot", "_events",
+        "__weakref__",
     )
 
-    def __init__(self, node: Owner, topic_name: str, msg_type: type, qos: QoSProfile) -> None:
+    def __init__(self, node: Owner, topic_name: str, msg_type: type, qos: QoSProfile | QoSSnapshot | int) -> None:
         self.node = node
         self.topic_name = topic_name
         self.msg_type = msg_type
+        qos = as_qos(qos)
+        if qos.reliability == ReliabilityPolicy.BEST_AVAILABLE or qos.durability == DurabilityPolicy.BEST_AVAILABLE:
+            # A BEST_AVAILABLE publisher offers the most: subscriptions of any kind can take it.
+            qos = msgspec.structs.replace(qos, reliability=ReliabilityPolicy.RELIABLE,
+                                          durability=DurabilityPolicy.TRANSIENT_LOCAL)
         self.qos = qos
         self._snapshot = snapshotter(msg_type)
+        self._events: Any = None  # an actors.qos_events.EndpointEvents, for endpoints with event callbacks
         self._subs: dict[Subscription, None] = {}  # matched subscriptions, in match order
         self._tracked: dict[Subscription, None] = {}  # those of them that note who sent what
         self._history: deque[Any] | None = (
@@ -182,6 +176,14 @@ class Publisher:
         """How many subscriptions this publisher feeds."""
         return len(self._subs)
 
+    @property
+    def qos_profile(self) -> QoSProfile:
+        """This publisher's QoS as an rclpy-shaped QoSProfile (a copy: changing it changes nothing)."""
+        return self.qos.to_profile()
+
+    def assert_liveliness(self) -> None:
+        """Show this publisher is alive: matters only for MANUAL_BY_TOPIC liveliness (see actors.qos_events)."""
+
     def destroy(self) -> None:
         """Stop publishing; the topic forgets this publisher."""
         self.node.destroy_publisher(self)
@@ -201,6 +203,8 @@ class Subscription(Mailbox):
         "_limit",
         "_topic",
         "_senders",
+        "_events",
+        "_expiring",
         "__weakref__",
     )
 
@@ -210,15 +214,17 @@ class Subscription(Mailbox):
         topic_name: str,
         msg_type: type,
         callback: Callable[[Any], Any],
-        qos: QoSProfile,
+        qos: QoSProfile | QoSSnapshot | int,
     ) -> None:
         self.node = node
         self.topic_name = topic_name
         self.msg_type = msg_type
         self.callback = callback
-        self.qos = qos
+        self.qos = qos = as_qos(qos)
         self.dropped = 0
         self.refusals: Refusals | None = None  # made at the first refusal
+        self._events: Any = None  # an actors.qos_events.EndpointEvents, for endpoints with event callbacks
+        self._expiring = False  # fed by a publisher with a lifespan: its queue may hold Expiring items
         super().__init__(node.actor)
         self._queue: deque[Any] = deque()
         self._limit = qos.depth if qos.history == HistoryPolicy.KEEP_LAST else sys.maxsize
@@ -237,6 +243,7 @@ class Subscription(Mailbox):
         assert isinstance(old, Subscription)
         self.dropped = old.dropped
         self.refusals = old.refusals
+        self._expiring = old._expiring
         super()._adopt(old)
         if old._senders is not None:
             self._senders = old._senders
@@ -259,6 +266,8 @@ class Subscription(Mailbox):
 
     def _refuse(self, msg: Any, refusal: MessageRefused) -> None:
         """Drop ``msg``, which the callback refused: count it, and log it if it is news."""
+        if type(msg) is Expiring:
+            msg = msg.msg  # the message the sender sent
         if self.refusals is None:
             self.refusals = Refusals()
         line = self.refusals.add(
@@ -278,9 +287,23 @@ class Subscription(Mailbox):
             return feeds[0].node.fqn
         return "one of " + ", ".join(sorted({p.node.fqn for p in feeds})) if feeds else "an unknown publisher"
 
+    @property
+    def qos_profile(self) -> QoSProfile:
+        """This subscription's QoS as an rclpy-shaped QoSProfile (a copy: changing it changes nothing)."""
+        return self.qos.to_profile()
+
+    def _call_unexpired(self, item: Any) -> Any:
+        # The callback of a subscription fed by a publisher with a lifespan: a message whose
+        # lifespan has passed by the time its turn comes is dropped unread.
+        if type(item) is Expiring:
+            if item.expires < self.node.loop.time():
+                return None
+            item = item.msg
+        return self.callback(item)
+
     def _run(self) -> Awaitable[None] | None:
         queue = self._queue
-        callback = self.callback
+        callback = self._call_unexpired if self._expiring else self.callback
         # Only what is queued now: messages published meanwhile wait for the next round.
         for left in range(len(queue) - 1, -1, -1):
             msg = queue.popleft()
@@ -304,7 +327,8 @@ class Subscription(Mailbox):
                 await pending
             except MessageRefused as refusal:
                 self._refuse(msg, refusal)
-            queue, callback = self._queue, self.callback
+            queue = self._queue
+            callback = self._call_unexpired if self._expiring else self.callback
             for _ in range(left):
                 msg = queue.popleft()
                 try:
@@ -336,13 +360,12 @@ class Topic:
 
 
 class TopicTable:
-    """Every topic of a runtime; matches publishers to subscriptions."""
+    """Every topic of a runtime; matches publishers to subscriptions and tells them of it."""
 
-    __slots__ = ("topics", "_on_incompatible")
+    __slots__ = ("topics",)
 
-    def __init__(self, on_incompatible: Callable[[Publisher, Subscription, str], None]) -> None:
+    def __init__(self) -> None:
         self.topics: dict[str, Topic] = {}
-        self._on_incompatible = on_incompatible
 
     def _topic_for(self, name: str, msg_type: type, endpoint: str, node: str) -> Topic:
         topic = self.topics.get(name)
@@ -368,6 +391,7 @@ class TopicTable:
     def add_subscription(self, sub: Subscription, *, replay: bool = True) -> None:
         """Register ``sub``, connect it, and replay transient-local history if it asks for it."""
         topic = self._topic_for(sub.topic_name, sub.msg_type, "a subscription", sub.node.fqn)
+        _settle_best_available(sub, topic)
         topic.subscriptions[sub] = None
         sub._topic = topic
         for pub in topic.publishers:
@@ -377,13 +401,20 @@ class TopicTable:
                         sub._push(msg)
 
     def _match(self, pub: Publisher, sub: Subscription) -> bool:
-        reason = qos_incompatibility(pub.qos, sub.qos)
-        if reason is not None:
-            self._on_incompatible(pub, sub, reason)
+        refused = incompatible_policies(pub.qos, sub.qos)
+        if refused:
+            for endpoint in (pub, sub):
+                if endpoint._events is not None:
+                    endpoint._events.incompatible(refused[-1])
+                elif hasattr(endpoint.node, "logger"):  # a node's (the runtime's and the CLI's have none)
+                    warn_incompatible(endpoint, refused[-1])
             return False
         pub._subs[sub] = None
         if sub._senders is not None:
             pub._tracked[sub] = None
+        if pub.qos.lifespan_ns:
+            sub._expiring = True
+        _tell(pub, sub, +1)
         return True
 
     def replace_subscription(self, old: Subscription, new: Subscription) -> None:
@@ -395,6 +426,8 @@ class TopicTable:
         """
         topic = self.topics[old.topic_name]
         del topic.subscriptions[old]
+        if old._events is not None:
+            old._events.stop()
         topic.subscriptions[new] = None
         new._topic = topic
         for pub in topic.publishers:
@@ -409,6 +442,10 @@ class TopicTable:
         topic = self.topics.get(pub.topic_name)
         if topic is not None and pub in topic.publishers:
             del topic.publishers[pub]
+            if pub._events is not None:
+                pub._events.stop()
+            for sub in pub._subs:
+                _tell(pub, sub, -1, to_pub=False)  # the publisher itself is gone: only its subscriptions hear
             pub._subs = {}
             pub._tracked = {}
             self._drop_if_empty(topic)
@@ -421,11 +458,42 @@ class TopicTable:
         topic = self.topics.get(sub.topic_name)
         if topic is not None and sub in topic.subscriptions:
             del topic.subscriptions[sub]
+            if sub._events is not None:
+                sub._events.stop()
             for pub in topic.publishers:
-                pub._subs.pop(sub, None)
                 pub._tracked.pop(sub, None)
+                if pub._subs.pop(sub, False) is None:
+                    _tell(pub, sub, -1, to_sub=False)
             self._drop_if_empty(topic)
 
     def _drop_if_empty(self, topic: Topic) -> None:
         if not topic.publishers and not topic.subscriptions:
             del self.topics[topic.name]
+
+
+def _tell(pub: Publisher, sub: Subscription, delta: int, *, to_pub: bool = True, to_sub: bool = True) -> None:
+    """Tell the endpoints with events that they connected (+1) or parted (-1)."""
+    if to_pub and pub._events is not None:
+        pub._events.matched(delta)
+    events = sub._events
+    if to_sub and events is not None:
+        events.matched(delta)
+        lease = pub._events.lease if pub._events is not None else None
+        if lease is not None and lease.expired:
+            events.liveliness_changed(0, delta)  # a publisher that had lost its liveliness
+        else:
+            events.liveliness_changed(delta, 0)
+
+
+def _settle_best_available(sub: Subscription, topic: Topic) -> None:
+    """A BEST_AVAILABLE subscription asks for what every publisher already there offers."""
+    qos = sub.qos
+    reliability, durability = qos.reliability, qos.durability
+    if reliability == ReliabilityPolicy.BEST_AVAILABLE:
+        reliable = all(p.qos.reliability == ReliabilityPolicy.RELIABLE for p in topic.publishers)
+        reliability = ReliabilityPolicy.RELIABLE if reliable else ReliabilityPolicy.BEST_EFFORT
+    if durability == DurabilityPolicy.BEST_AVAILABLE:
+        latched = all(p.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in topic.publishers)
+        durability = DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE
+    if (reliability, durability) != (qos.reliability, qos.durability):
+        sub.qos = msgspec.structs.replace(qos, reliability=reliability, durability=durability)

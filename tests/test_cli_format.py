@@ -9,7 +9,7 @@ from actors.cli.graph import to_dot
 from actors.control import GraphSnapshot
 from actors.errors import ControlError
 from actors.introspection import EndpointInfo, TopicInfo
-from actors.topics import QoSProfile
+from actors.qos import QoSSnapshot
 from interfaces.geometry_msgs.msg import Twist
 from interfaces.std_msgs.msg import String
 
@@ -36,7 +36,7 @@ def test_yaml_text_of_a_message_a_field_and_a_scalar():
 
 def test_the_dot_graph_leaves_out_rosout_and_hidden_endpoints_unless_asked():
     def end(node: str) -> EndpointInfo:
-        return EndpointInfo(node=node, type="std_msgs/msg/String", qos=QoSProfile())
+        return EndpointInfo(node=node, type="std_msgs/msg/String", qos=QoSSnapshot())
 
     graph = GraphSnapshot(
         name="demo",

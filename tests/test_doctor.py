@@ -106,13 +106,13 @@ async def test_the_command_lines_own_subscription_is_no_subscriber(tmp_path, mon
     ("offered", "requested", "why"),
     [
         (
-            QoSProfile(reliability=ReliabilityPolicy.BEST_EFFORT),
-            QoSProfile(reliability=ReliabilityPolicy.RELIABLE),
+            QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT),
+            QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE),
             "publisher offers BEST_EFFORT, subscription requests RELIABLE",
         ),
         (
-            QoSProfile(durability=DurabilityPolicy.VOLATILE),
-            QoSProfile(durability=DurabilityPolicy.TRANSIENT_LOCAL),
+            QoSProfile(depth=10, durability=DurabilityPolicy.VOLATILE),
+            QoSProfile(depth=10, durability=DurabilityPolicy.TRANSIENT_LOCAL),
             "publisher offers VOLATILE, subscription requests TRANSIENT_LOCAL",
         ),
     ],

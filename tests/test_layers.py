@@ -16,8 +16,8 @@ ROOT = Path(actors.__file__).resolve().parent
 # Lowest first.  A module may import its own layer and those below it, never above.
 LAYERS: list[set[str]] = [
     {"errors", "log", "names", "clock", "actor", "config", "idl", "idl_gen", "codec", "rosargs", "layout", "cdr",
-     "typehash", "snapshot"},
-    {"topics", "services", "timers", "params", "actions", "endpoint_info", "refusals"},
+     "typehash", "snapshot", "qos"},
+    {"topics", "services", "timers", "params", "actions", "endpoint_info", "refusals", "qos_events"},
     {"node", "node_params", "node_graph", "param_client"},
     {"supervisor", "runtime", "introspection", "graph"},
     {"control", "doctor"},

@@ -266,7 +266,7 @@ async def test_a_publisher_of_another_type_is_refused():
 
 async def test_best_effort_publisher_does_not_feed_a_reliable_subscription():
     class BestEffortSource(Source):
-        qos = QoSProfile(reliability=ReliabilityPolicy.BEST_EFFORT)
+        qos = QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT)
 
     async with Runtime() as rt:
         sink = rt.spawn(Sink)
