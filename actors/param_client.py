@@ -11,6 +11,7 @@ import anyio
 
 from actors.actor import OneShot
 from actors.params import Parameter
+from actors.qos import QoSProfile, qos_profile_parameter_events
 from interfaces.rcl_interfaces.msg import Parameter as ParameterMsg
 from interfaces.rcl_interfaces.msg import ParameterEvent
 from interfaces.rcl_interfaces.srv import (
@@ -102,7 +103,8 @@ class AsyncParameterClient:
         """Unset ``names`` (only dynamically typed parameters can be; ``response.results``)."""
         return self.set_parameters([Parameter(name) for name in names], callback)
 
-    def on_parameter_event(self, callback: Callable[[ParameterEvent], Any], qos_profile: Any = 1000) -> Any:
+    def on_parameter_event(self, callback: Callable[[ParameterEvent], Any],
+                           qos_profile: QoSProfile | int = qos_profile_parameter_events) -> Any:
         """Subscribe ``callback`` to ``/parameter_events`` (every node's parameter changes)."""
         return self.node.create_subscription(ParameterEvent, "/parameter_events", callback, qos_profile)
 
