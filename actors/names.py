@@ -25,6 +25,11 @@ __all__ = [
 
 _NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
 _TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
+_ABSOLUTE = re.compile(r"(?:/[A-Za-z_][A-Za-z0-9_]*)+\Z")
+# Names already found valid: with any valid namespace and node name they expand to a valid
+# name, so the nodes of a large graph (which share their topic and service names) check
+# each name once, not once per node.
+_VALID_NAMES: set[str] = set()
 # The error raised for each kind of name (rclpy's exception names); others get InvalidNameError.
 _ERRORS: dict[str, type[InvalidNameError]] = {
     "namespace": InvalidNamespaceException,
@@ -61,8 +66,8 @@ def is_hidden_name(name: str) -> bool:
 
 
 def _check_absolute(name: str, what: str) -> str:
-    if name == "/":
-        return name
+    if name == "/" or _ABSOLUTE.match(name):
+        return name  # one regex for the usual case; the loop below finds the culprit
     tokens = name[1:].split("/")
     for token in tokens:
         if not _TOKEN.match(token):
@@ -91,18 +96,29 @@ def fully_qualified(namespace: str, name: str) -> str:
 
 
 def expand(name: str, namespace: str, node_name: str, *, what: str = "topic name") -> str:
-    """Expand a relative, absolute or ``~/private`` name to an absolute one, by ROS rules."""
+    """Expand a relative, absolute or ``~/private`` name to an absolute one, by ROS rules.
+
+    ``namespace`` and ``node_name`` must be valid already (a node's are).
+    """
+    if name in _VALID_NAMES:
+        return _joined(name, namespace, node_name)
     if not isinstance(name, str) or not name:
         raise _invalid(what, f"invalid {what} {name!r}: it must not be empty")
-    if name == "~" or name.startswith("~/"):
-        full = fully_qualified(namespace, node_name) + name[1:]
-    elif name.startswith("/"):
-        full = name
-    else:
-        full = (namespace if namespace != "/" else "") + "/" + name
+    full = _joined(name, namespace, node_name)
     if full != "/" and full.endswith("/"):
         raise _invalid(what, f"invalid {what} {name!r}: it must not end with '/'")
-    return _check_absolute(full, what)
+    _check_absolute(full, what)
+    if len(_VALID_NAMES) < 10_000:
+        _VALID_NAMES.add(name)
+    return full
+
+
+def _joined(name: str, namespace: str, node_name: str) -> str:
+    if name == "~" or name.startswith("~/"):
+        return fully_qualified(namespace, node_name) + name[1:]
+    if name.startswith("/"):
+        return name
+    return (namespace if namespace != "/" else "") + "/" + name
 
 
 class Resolver:

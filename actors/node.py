@@ -22,7 +22,7 @@ from typing import Any, Protocol
 import anyio.abc
 
 from actors.actions import ActionClient, ActionServer
-from actors.actor import Actor
+from actors.actor import Actor, Scheduler
 from actors.clock import Clock, Rate, ROSClock
 from actors.log import NodeLogger
 from actors.names import Resolver, fully_qualified, normalize_namespace, validate_node_name
@@ -53,6 +53,7 @@ class Host(Protocol):
     topics: TopicTable
     services: ServiceTable
     deadlines: Deadlines
+    scheduler: Scheduler
     parameter_events: Publisher
     graph: Any
     _task_group: anyio.abc.TaskGroup
@@ -131,7 +132,7 @@ class NodeCore:
         self.loop: asyncio.AbstractEventLoop = self.runtime.loop
         self.clock: ROSClock = self.runtime.clock
         self.parameter_events = self.runtime.parameter_events
-        self.actor = request.actor if request.actor is not None else Actor(self.loop)
+        self.actor = request.actor if request.actor is not None else Actor(self.loop, self.runtime.scheduler)
         self._logger: NodeLogger | None = None
         # Insertion-ordered sets ({entity: None}): creation order, O(1) removal.
         self.publishers: dict[Publisher, None] = {}

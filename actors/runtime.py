@@ -20,6 +20,7 @@ from typing import Any, Protocol, TypeVar
 import anyio
 import anyio.abc
 
+from actors.actor import Scheduler
 from actors.clock import ROSClock
 from actors.errors import InvalidNameError
 from actors.introspection import GraphView
@@ -89,6 +90,7 @@ class Runtime:
         console_unless_configured()  # INFO on stderr as rclpy prints it, unless the app chose
         self.clock = ROSClock(self.loop)
         self.deadlines = Deadlines(self.loop)
+        self.scheduler = Scheduler(self.loop)
         self._rosout = self._runtime_publisher("/rosout", "Log")
         self.parameter_events = self._runtime_publisher("/parameter_events", "ParameterEvent")
         self.logger = self.make_logger("actors")

@@ -18,18 +18,20 @@ A restarted node is a new instance.  The crashed instance's subscriptions stay
 attached to their topics while it is down, and the new instance adopts their
 mailboxes when it subscribes again, so messages queued for it are not lost.
 
-Each node's actor runs in an asyncio task of its own that the supervisor
-tracks (not in an anyio task group: a cancel scope and a done event per node
-cost 1.5 KB and a loop iteration to stop).  Halting a node whose actor is idle
-needs no cancellation and no wait: :meth:`Actor.stop` guarantees that none of
+A node's actor runs on the runtime's scheduler (:mod:`actors.actor`), with a
+task of its own only while an ``async`` callback runs; it tells the
+supervisor through ``Actor.on_exit`` when it ends by itself (a crash, or
+``destroy_node``).  Halting a node needs no cancellation and no wait unless an
+``async`` callback is in progress: :meth:`Actor.stop` guarantees that none of
 its callbacks runs again, so stopping 10,000 nodes takes no loop iteration per
-node.  A node in the middle of an ``async`` callback is cancelled, and the halt
-waits until the callback has unwound.
+node.  A node inside an ``async`` callback is cancelled, and the halt waits
+until the callback has unwound.
 """
 
 from __future__ import annotations
 
 import asyncio
+import functools
 from collections import deque
 from collections.abc import Mapping
 from enum import StrEnum
@@ -112,8 +114,6 @@ class Child:
         self.last_exception: BaseException | None = None  # the Escalation's cause
         self.state = "starting"
         self._inheritance: dict[tuple[str, str], list[Any]] = {}
-        # The current instance's actor task; None once the supervisor halted it.
-        self._task: asyncio.Task[None] | None = None
 
     def give_back(self, entities: dict[tuple[str, str], list[Any]]) -> None:
         """Keep ``entities`` (a failed instance's) for the next instance to adopt."""
@@ -169,39 +169,28 @@ class Supervisor:
             core.actor.schedule(OneShot(on_start, "on_start"))
         child.core = core
         child.state = "running"
-        child._task = self.runtime.loop.create_task(self._watch(child, core), name=f"node {core.fqn}")
+        core.actor.on_exit = functools.partial(Supervisor._exited, self, child, core)
         return core
 
-    async def _watch(self, child: Child, core: NodeCore) -> None:
-        error: BaseException | None = None
-        try:
-            await core.actor.run()
-        except CallbackFailed as failed:
-            error = failed
-        except asyncio.CancelledError:
-            if child._task is asyncio.current_task():
-                raise  # not a halt: the loop itself is being torn down
-            return
-        except Exception as exc:
-            error = exc
-        if child._task is asyncio.current_task():  # it ended by itself, not by a halt
-            self._send.send_nowait(_Exit(child, core, error))
+    def _exited(self, child: Child, core: NodeCore, error: BaseException | None) -> None:
+        # The actor ended by itself (a crash, or the node destroyed itself), not by a halt.
+        self._send.send_nowait(_Exit(child, core, error))
 
     async def _halt(self, child: Child) -> None:
         """End ``child``'s actor: none of its callbacks runs after this returns.
 
-        An idle actor is only told to stop (its task ends on its next wake-up);
-        one inside an ``async`` callback is cancelled, and waited for.
+        An idle actor is only told to stop; one inside an ``async`` callback is
+        cancelled first, and waited for.
         """
-        task, child._task = child._task, None
-        if task is None or task.done() or child.core is None:
+        if child.core is None:
             return
         actor = child.core.actor
-        if actor.awaiting:
+        actor.on_exit = None  # stopped by us: not an exit to handle
+        task = actor.task
+        if task is not None and not task.done() and task is not asyncio.current_task():
             task.cancel()
             await asyncio.wait((task,))
-        else:
-            actor.stop()
+        actor.stop()
 
     async def stop(self, child: Child) -> None:
         """Stop ``child`` for good: actor halted, ``on_shutdown`` and ``destroy_node`` run."""

@@ -317,7 +317,11 @@ class Subscription(Mailbox):
                 raise CallbackFailed(self, msg, exc) from exc
             if result is not None and isawaitable(result):
                 return self._run_async(result, msg, left)
-        self._round_done()
+        # Mailbox._round_done, inlined: one call less per wake-up.
+        if queue:
+            self._actor.schedule(self)
+        else:
+            self._scheduled = False
         return None
 
     async def _run_async(self, pending: Awaitable[Any], msg: Any, left: int) -> None:

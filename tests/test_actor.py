@@ -1,0 +1,115 @@
+"""The actor: callbacks one at a time per node, run by the scheduler without a task per node, fair rounds."""
+
+from __future__ import annotations
+
+import asyncio
+
+import anyio
+import pytest
+
+from actors import Node, Runtime
+from interfaces.std_msgs.msg import Int64
+
+pytestmark = pytest.mark.virtual_time
+
+
+class Idle(Node):
+    def __init__(self) -> None:
+        super().__init__("idle")
+        self.ticks = 0
+        self.create_timer(1.0, self.tick)
+
+    def tick(self) -> None:
+        self.ticks += 1
+
+
+async def test_nodes_with_plain_callbacks_own_no_task():
+    async with Runtime() as rt:
+        before = len(asyncio.all_tasks())
+        nodes = [rt.spawn(Idle, name=f"idle{i}") for i in range(200)]
+        await anyio.sleep(3.5)
+        assert [n.ticks for n in nodes] == [3] * 200
+        assert len(asyncio.all_tasks()) == before
+
+
+async def test_an_async_callback_holds_back_its_node_but_not_the_others():
+    events: list[str] = []
+
+    class Slow(Node):
+        def __init__(self) -> None:
+            super().__init__("slow")
+            self.create_subscription(Int64, "numbers", self.on_number, 10)
+
+        async def on_number(self, msg: Int64) -> None:
+            events.append(f"slow starts {msg.data}")
+            await anyio.sleep(1)
+            events.append(f"slow ends {msg.data}")
+
+    class Fast(Node):
+        def __init__(self) -> None:
+            super().__init__("fast")
+            self.create_subscription(Int64, "numbers", lambda msg: events.append(f"fast {msg.data}"), 10)
+
+    async with Runtime() as rt:
+        rt.spawn(Slow)
+        rt.spawn(Fast)
+        pub = rt.spawn(Idle).create_publisher(Int64, "numbers", 10)
+        pub.publish(Int64(data=1))
+        await anyio.sleep(0.5)
+        pub.publish(Int64(data=2))
+        assert rt.node("slow")._core.actor.awaiting
+        await anyio.sleep(3)
+    # The slow node's second message waits for its first callback; the fast node never waits.
+    assert [e for e in events if e.startswith("slow")] == ["slow starts 1", "slow ends 1", "slow starts 2", "slow ends 2"]
+    assert events.index("fast 2") < events.index("slow ends 1")
+
+
+async def test_a_node_that_keeps_itself_busy_does_not_starve_the_others():
+    heard: list[str] = []
+
+    class Echo(Node):
+        """Republishes every number to itself at once, 100 times: it always has work."""
+
+        def __init__(self) -> None:
+            super().__init__("echo")
+            self.pub = self.create_publisher(Int64, "loop", 10)
+            self.create_subscription(Int64, "loop", self.again, 10)
+
+        def again(self, msg: Int64) -> None:
+            heard.append(f"echo {msg.data}")
+            if msg.data < 100:
+                self.pub.publish(Int64(data=msg.data + 1))
+
+    class Other(Node):
+        def __init__(self) -> None:
+            super().__init__("other")
+            self.create_subscription(Int64, "other", lambda msg: heard.append("other"), 10)
+
+    async with Runtime() as rt:
+        echo = rt.spawn(Echo)
+        rt.spawn(Other)
+        other = rt.spawn(Idle).create_publisher(Int64, "other", 10)
+        echo.pub.publish(Int64(data=0))
+        await anyio.sleep(0)
+        other.publish(Int64(data=0))
+        await anyio.sleep(1)
+    # One message per round for the echo node: the other node's message waits a round or two, not 100.
+    assert heard.index("other") < 5 and heard[-1] == "echo 100"
+
+
+async def test_a_crash_in_a_plain_callback_ends_only_that_node():
+    class Fragile(Node):
+        def __init__(self) -> None:
+            super().__init__("fragile")
+            self.create_subscription(Int64, "numbers", self.on_number, 10)
+
+        def on_number(self, msg: Int64) -> None:
+            raise RuntimeError("no")
+
+    async with Runtime() as rt:
+        rt.spawn(Fragile, restart="temporary")
+        idle = rt.spawn(Idle)
+        rt.spawn(Idle, name="publisher").create_publisher(Int64, "numbers", 10).publish(Int64(data=1))
+        await anyio.sleep(2.5)
+        assert [n.name for n in rt.graph.nodes()] == ["/idle", "/publisher"]
+        assert idle.ticks == 2
