@@ -335,10 +335,14 @@ def load_yaml(text: str) -> Any:
 
 
 def dump_yaml(data: Any) -> str:
-    """Plain data as block-style YAML, keys in their order, as ROS tools print it."""
+    """Plain data as block-style YAML, keys in their order, as ROS tools print it (no line wrapping)."""
+    import sys
+
     import yaml
 
-    return yaml.safe_dump(data, sort_keys=False, default_flow_style=False, allow_unicode=True)
+    return yaml.safe_dump(
+        data, sort_keys=False, default_flow_style=False, allow_unicode=True, width=sys.maxsize
+    )
 
 
 @functools.cache

@@ -130,13 +130,16 @@ class Publish(Request, tag="publish"):
 class Subscribe(Request, tag="subscribe"):
     """Stream ``topic``: result ``{"type": ros_name}``, then :class:`Sample` frames until hang-up.
 
-    ``content=False`` streams stamps only (what ``topic hz`` needs).  Fails for
-    a topic that does not exist.
+    ``content=False`` streams stamps only (what ``topic hz`` needs).  With a
+    ``type`` (``echo TOPIC TYPE``) the topic need not exist yet, as in ROS;
+    without one, a topic that does not exist fails, and so does a topic of
+    another type.
     """
 
     topic: str
     content: bool = True
     depth: int = 100
+    type: str = ""
 
 
 class Call(Request, tag="call"):
@@ -435,14 +438,19 @@ class _Session:
             clients=_pairs((c.service_name, c.srv_type) for c in core.clients),
         )
 
+    def _topic(self, name: str, asked: str) -> tuple[Any, type]:
+        """The topic ``name`` (None if it does not exist yet) and its type, ``asked`` or its own."""
+        topic = self.runtime.topics.topics.get(name)
+        msg_type = codec.get_type(asked) if asked else None
+        if topic is None and msg_type is None:
+            raise ControlError(f"unknown topic {name}")
+        if topic is not None and msg_type is not None and topic.msg_type is not msg_type:
+            raise ControlError(f"topic {name} carries {type_name(topic.msg_type)}, not {asked}")
+        return topic, msg_type or topic.msg_type
+
     def _publish(self, request: Publish) -> dict[str, int]:
         name = expand(request.topic, "/", "_")
-        msg_type = codec.get_type(request.type)
-        topic = self.runtime.topics.topics.get(name)
-        if topic is not None and topic.msg_type is not msg_type:
-            raise ControlError(
-                f"topic {name} carries {type_name(topic.msg_type)}, not {request.type}"
-            )
+        _, msg_type = self._topic(name, request.type)
         pub = self._publishers.get(name)
         if pub is None:
             pub = Publisher(self, name, msg_type, QoSProfile(depth=10))  # type: ignore[arg-type]
@@ -453,12 +461,10 @@ class _Session:
 
     def _subscribe(self, request: Subscribe) -> dict[str, str]:
         name = expand(request.topic, "/", "_")
-        topic = self.runtime.topics.topics.get(name)
-        if topic is None:
-            raise ControlError(f"unknown topic {name}")
+        topic, msg_type = self._topic(name, request.type)
         # Best effort and volatile match every publisher; transient local when all
         # publishers keep history, so that a latched topic's last message shows up.
-        pubs = topic.publishers
+        pubs = topic.publishers if topic is not None else ()
         # (Not for `hz`, content=False: a replayed history would look like a burst.)
         latched = request.content and bool(pubs) and all(
             p.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in pubs
@@ -474,10 +480,10 @@ class _Session:
         async def forward(msg: Any) -> None:
             await self.send(frame(Sample(stamp=clock.monotonic(), msg=msg if content else None)))
 
-        sub = Subscription(self, name, topic.msg_type, forward, qos)  # type: ignore[arg-type]
+        sub = Subscription(self, name, msg_type, forward, qos)  # type: ignore[arg-type]
         self.runtime.topics.add_subscription(sub)
         self._subscriptions.append(sub)
-        return {"type": type_name(topic.msg_type)}
+        return {"type": type_name(msg_type)}
 
     async def _call(self, request: Call) -> Any:
         name = expand(request.service, "/", "_", what="service name")

@@ -73,3 +73,32 @@ def test_the_dot_graph_leaves_out_rosout_and_hidden_endpoints_unless_asked():
         '"t:/chatter" -> "n:/_actors_cli_1";' in everything
         and '"n:/_demo" -> "t:/rosout";' in everything
     )
+
+
+def test_no_arr_and_no_str_print_ros2s_summaries_at_every_depth():
+    from interfaces.nav_msgs.msg import Odometry
+    from interfaces.rcl_interfaces.msg import ParameterDescriptor, ParameterValue
+
+    odom = Odometry()
+    odom.header.frame_id = "odom"
+    text = yaml_text(odom, no_arr=True)
+    assert text.count("  covariance: '<array type: double[36]>'\n") == 2  # fixed arrays, nested
+    assert "  frame_id: odom\n" in text
+    assert yaml_text(odom, no_str=True).count("'<string length: <4>>'") == 1  # frame_id
+    assert "child_frame_id: '<string length: <0>>'\n" in yaml_text(odom, no_str=True)
+    descriptor = ParameterDescriptor(name="speed")
+    assert (
+        "floating_point_range: '<sequence type: rcl_interfaces/msg/FloatingPointRange[1], length: 0>'\n"
+        in yaml_text(descriptor, no_arr=True)
+    )
+    value = yaml_text(ParameterValue(byte_array_value=b"ab", string_array_value=["x"]), no_arr=True)
+    assert "byte_array_value: '<sequence type: octet, length: 2>'\n" in value
+    assert "string_array_value: '<sequence type: string, length: 1>'\n" in value
+    assert "string_array_value:\n- '<string length: <1>>'\n" in yaml_text(
+        ParameterValue(string_array_value=["x"]), no_str=True
+    )
+
+
+def test_long_strings_stay_on_one_line_as_ros2_prints_them():
+    text = "word " * 40
+    assert yaml_text(String(data=text)) == f"data: '{text}'\n"

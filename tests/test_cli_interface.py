@@ -138,3 +138,42 @@ def test_show_hash_prints_the_rihs01_hash(capsys):
     assert (code, out) == (0, "RIHS01_e118de6bf5eeb66a2491b5bda11202e7b68f198d6f67922cf30364858239c81a\n")
     code, _, err = run(capsys, "show", "nope_msgs/msg/Nope", "--hash")
     assert code == 2 and "unknown interface type" in err
+
+
+def test_proto_prints_a_default_instance_in_quotes(capsys):
+    code, out, _ = run(capsys, "proto", "geometry_msgs/msg/Twist")
+    assert code == 0
+    assert out == '"linear:\n  x: 0.0\n  y: 0.0\n  z: 0.0\nangular:\n  x: 0.0\n  y: 0.0\n  z: 0.0\n"\n'
+    # A service's request, an action's goal, as ros2 interface proto; --no-quotes as it says.
+    assert run(capsys, "proto", "example_interfaces/srv/AddTwoInts", "--no-quotes")[1] == "a: 0\nb: 0\n\n"
+    assert run(capsys, "proto", "example_interfaces/action/Fibonacci")[1] == '"order: 0\n"\n'
+    assert run(capsys, "proto", "std_srvs/srv/Trigger")[1] == '"{}\n"\n'
+
+
+def test_a_proto_pasted_into_from_yaml_is_the_default_message():
+    from interfaces.geometry_msgs.msg import Twist
+
+    assert codec.from_yaml(codec.to_yaml(Twist()), Twist) == Twist()
+
+
+def test_packages_and_package_list_what_each_defines(capsys):
+    code, out, _ = run(capsys, "packages")
+    packages = out.splitlines()
+    assert code == 0 and packages == sorted(packages)
+    assert {"std_msgs", "std_srvs", "example_interfaces", "action_msgs"} <= set(packages)
+    assert run(capsys, "packages", "-a")[1].splitlines() == sorted(
+        {name.split("/")[0] for name in codec.list_types() if "/action/" in name}
+    )
+    assert "std_srvs" not in run(capsys, "packages", "--only-msgs")[1].splitlines()
+    assert run(capsys, "package", "std_srvs")[1] == (
+        "std_srvs/srv/Empty\nstd_srvs/srv/SetBool\nstd_srvs/srv/Trigger\n"
+    )
+    lines = run(capsys, "package", "example_interfaces")[1].splitlines()
+    kinds = [line.split("/")[1] for line in lines]
+    assert kinds == sorted(kinds, key=["msg", "srv", "action"].index) and "action" in kinds
+    assert run(capsys, "package", "example_interfaces", "-s")[1] == "example_interfaces/srv/AddTwoInts\n"
+    assert run(capsys, "package", "std_srvs", "-a") == (0, "", "")  # none of that kind, as ros2
+
+
+def test_an_unknown_package_is_one_line_and_exit_2(capsys):
+    assert run(capsys, "package", "not_a_package") == (2, "", "actors: unknown package 'not_a_package'\n")

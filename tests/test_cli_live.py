@@ -166,6 +166,54 @@ def test_topic_hz_reports_about_two_hertz(graph):
     )
 
 
+def test_topic_type_and_find(graph):
+    assert ok(graph, "topic", "type", "/topic") == "std_msgs/msg/String\n"
+    found = ok(graph, "topic", "find", "std_msgs/msg/Bool").splitlines()
+    assert {"/kill", "/sim/contact"} <= set(found) and "/topic" not in found
+    assert ok(graph, "topic", "find", "std_msgs/Bool", "-c") == f"{len(found)}\n"  # short form
+    assert ok(graph, "topic", "find", "nope_msgs/msg/Nope") == ""  # as ros2: nothing of it
+    assert ok(graph, "service", "find", "example_interfaces/srv/AddTwoInts") == "/add_two_ints\n"
+    count = int(ok(graph, "service", "find", "rcl_interfaces/srv/ListParameters", "-c"))
+    assert count >= len(COURSE_NODES)  # every node has its parameter services
+
+
+def test_topic_echo_with_a_type_waits_for_a_topic_that_does_not_exist_yet(graph):
+    echo = subprocess.Popen(
+        [sys.executable, "-m", "actors", "topic", "echo", "/cli_later", "std_msgs/msg/Int64",
+         "--once", "--graph", graph.name],
+        cwd=ROOT,
+        env=python_env(),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        for _ in range(100):  # until the echo's subscription has made the topic
+            if "/cli_later" in ok(graph, "topic", "list").splitlines():
+                break
+        ok(graph, "topic", "pub", "/cli_later", "std_msgs/msg/Int64", "data: 7", "--once")
+        out, err = echo.communicate(timeout=30)
+    finally:
+        echo.kill()
+    assert (echo.returncode, out, err) == (0, "data: 7\n---\n", "")
+
+
+def test_topic_echo_no_arr_summarises_the_scan(graph):
+    out = ok(graph, "topic", "echo", "/scan", "sensor_msgs/msg/LaserScan", "--once", "--no-arr")
+    assert "\nranges: '<sequence type: float, length: 360>'\n" in out
+    assert "\nintensities: '<sequence type: float, length: 0>'\n" in out
+
+
+def test_topic_bw_counts_the_scans_cdr_bytes(graph):
+    out = ok(graph, "topic", "bw", "/scan", "--count", "1")
+    lines = out.splitlines()
+    assert lines[0] == "Subscribed to [/scan]"
+    rate = re.fullmatch(r"(\d+\.\d\d) KB/s from (\d+) messages", lines[1])
+    assert rate and 10 < float(rate[1]) < 20, out  # 1504 bytes ten times a second
+    # 360 float32 ranges, the header and frame id: the size ROS puts on the wire.
+    assert lines[2] == "\tMessage size mean: 1.50 KB min: 1.50 KB max: 1.50 KB"
+
+
 def test_topic_pub_once_and_times(graph):
     out = ok(graph, "topic", "pub", "/kill", "std_msgs/msg/Bool", "data: true", "--once")
     assert out == "publisher: beginning loop\npublishing #1: std_msgs.msg.Bool(data=True)\n\n"
@@ -222,9 +270,10 @@ def test_param_set_reaches_the_node_and_get_list_dump_read_it(graph):
 
 def test_a_refused_param_set_says_why_and_exits_1(graph):
     result = actors(graph, "param", "set", "/minimal_param_node", "my_parameter", "3")
-    assert result.returncode == 1
+    assert (result.returncode, result.stdout) == (1, "")
+    # On stderr, as ros2 param set prints it.
     assert (
-        result.stdout == "Setting parameter failed: wrong type: expected STRING, got INTEGER (3)\n"
+        result.stderr == "Setting parameter failed: wrong type: expected STRING, got INTEGER (3)\n"
     )
 
 
@@ -273,6 +322,13 @@ def test_graph_writes_a_dot_file(graph, tmp_path):
             "parameter 'nothing' is not set on /minimal_param_node",
         ),
         (("service", "type", "/nothing"), "unknown service /nothing"),
+        (("topic", "type", "/nowhere"), "unknown topic /nowhere"),
+        (("topic", "bw", "/nowhere"), "unknown topic /nowhere"),
+        (
+            ("topic", "echo", "/topic", "std_msgs/msg/Bool", "--once"),
+            "topic /topic carries std_msgs/msg/String, not std_msgs/msg/Bool",
+        ),
+        (("topic", "echo", "/x", "nope_msgs/msg/Nope"), "unknown interface type 'nope_msgs/msg/Nope'"),
         (("service", "call", "/nothing", "std_srvs/srv/Trigger"), "unknown service /nothing"),
         (
             ("service", "call", "/add_two_ints", "std_srvs/srv/Trigger"),

@@ -15,7 +15,9 @@ __all__ = ["main"]
 # Each group module exposes ``register(subparsers)``, which adds its parser and
 # sets ``func(args) -> int | None`` on every verb.  Imports inside the verbs stay
 # lazy so that ``actors --help`` is quick.
-GROUPS = ("node", "topic", "service", "action", "param", "interface", "doctor", "graph", "launch", "run")
+GROUPS = (
+    "node", "topic", "service", "action", "param", "interface", "doctor", "graph", "launch", "run", "pkg"
+)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -39,6 +39,8 @@ __all__ = [
     "Connection",
     "add_verb",
     "print_names",
+    "print_matching",
+    "type_of",
     "connect",
     "query",
     "graph_snapshot",
@@ -234,3 +236,33 @@ def print_names(entries: Iterable[Any], show_types: bool) -> None:
     """Each entry's ``name``, with `` [type]`` under ``-t``: how ros2's list verbs print."""
     for entry in entries:
         print(f"{entry.name} [{entry.type}]" if show_types else entry.name)
+
+
+def print_matching(entries: Iterable[Any], type_: str, count_only: bool) -> None:
+    """What ros2's ``find`` verbs print: the name of each entry of ``type_``, or how many there are.
+
+    ``type_`` may be short (``std_msgs/String``) when the type is known.
+    """
+    from actors import codec
+    from actors.errors import UnknownInterfaceError
+
+    try:
+        type_ = codec.ros_name(codec.get_type(type_))
+    except UnknownInterfaceError:
+        pass  # no such type here: then nothing is of it, as ros2 finds nothing
+    names = [entry.name for entry in entries if entry.type == type_]
+    if count_only:
+        print(len(names))
+    for name in names if not count_only else ():
+        print(name)
+
+
+def type_of(entries: Iterable[Any], name: str, what: str) -> str:
+    """The type of the entry called ``name`` (a topic, a service, an action); ControlError if none."""
+    from actors.names import expand
+
+    full = expand(name, "/", "_", what=f"{what} name")
+    for entry in entries:
+        if entry.name == full:
+            return str(entry.type)
+    raise ControlError(f"unknown {what} {full}")

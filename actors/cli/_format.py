@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from actors.errors import ControlError
+
+if TYPE_CHECKING:
+    from actors.layout import FieldLayout, MessageLayout
 
 __all__ = ["ros_repr", "yaml_text", "parse_yaml", "field"]
 
@@ -20,14 +23,56 @@ def ros_repr(value: Any) -> str:
     return repr(value)
 
 
-def yaml_text(value: Any) -> str:
-    """``value`` as block YAML: a message as ``codec.to_yaml`` writes it, anything else likewise."""
+def yaml_text(value: Any, *, no_arr: bool = False, no_str: bool = False) -> str:
+    """``value`` as block YAML: a message as ``codec.to_yaml`` writes it, anything else likewise.
+
+    In a message, ``no_arr`` puts ``ros2 topic echo --no-arr``'s summary
+    (``<sequence type: float, length: 360>``) in place of each array, and
+    ``no_str`` its ``<string length: <N>>`` in place of each string.
+    """
     from actors import codec
+    from actors.layout import layout
 
     if hasattr(type(value), "__ros_type__"):
-        return codec.to_yaml(value)
+        if not (no_arr or no_str):
+            return codec.to_yaml(value)
+        return codec.dump_yaml(_abridged(codec.to_builtins(value), layout(type(value)), no_arr, no_str))
     text = codec.dump_yaml(_plain(value))
     return text.removesuffix("...\n")  # the end-of-document mark PyYAML adds after a bare scalar
+
+
+# rosidl's names of the .msg primitives (what --no-arr prints), where they differ.
+_IDL_NAMES = {"bool": "boolean", "byte": "octet", "char": "uint8", "float32": "float", "float64": "double"}
+
+
+def _abridged(data: dict[str, Any], message: MessageLayout, no_arr: bool, no_str: bool) -> dict[str, Any]:
+    """``data`` (a message's builtins) with arrays and strings summarised, nested messages too."""
+    from actors.idl import STRINGS
+
+    def one(value: Any, field: FieldLayout) -> Any:
+        if field.nested is not None:
+            return _abridged(value, field.nested, no_arr, no_str)
+        if no_str and field.type.base in STRINGS:
+            return f"<string length: <{len(value)}>>"
+        return value
+
+    for field in message.fields:
+        if field.name not in data:
+            continue  # rosidl's placeholder in a message without fields
+        kind, value = field.type.array, data[field.name]
+        if kind and no_arr:
+            element = field.type.ros_type if field.type.is_nested else field.type.base
+            element = _IDL_NAMES.get(element, element)
+            data[field.name] = (
+                f"<array type: {element}[{field.type.size}]>"
+                if kind == "fixed"
+                else f"<sequence type: {element}[{field.type.size}], length: {len(value)}>"
+                if kind == "bounded"
+                else f"<sequence type: {element}, length: {len(value)}>"
+            )
+        else:
+            data[field.name] = [one(item, field) for item in value] if kind else one(value, field)
+    return data
 
 
 def _plain(value: Any) -> Any:

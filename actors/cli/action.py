@@ -15,7 +15,15 @@ import threading
 import uuid
 from typing import Any
 
-from actors.cli._client import Connection, add_verb, call_service, connect, graph_snapshot
+from actors.cli._client import (
+    Connection,
+    add_verb,
+    call_service,
+    connect,
+    graph_snapshot,
+    print_matching,
+    type_of,
+)
 
 __all__ = ["register"]
 
@@ -88,24 +96,12 @@ def action_info(args: argparse.Namespace) -> None:
 
 def action_type(args: argparse.Namespace) -> None:
     """Print the action's type; ControlError for an unknown action."""
-    from actors.errors import ControlError
-
-    name = _expand(args.action)
-    for action in _actions(args):
-        if action.name == name:
-            print(action.type)
-            return
-    raise ControlError(f"unknown action {name}")
+    print(type_of(_actions(args), args.action, "action"))
 
 
 def find_actions(args: argparse.Namespace) -> None:
     """Print the name of every action of ``TYPE`` (or their count under ``-c``)."""
-    names = [a.name for a in _actions(args) if a.type == args.type]
-    if args.count_actions:
-        print(len(names))
-    else:
-        for name in names:
-            print(name)
+    print_matching(_actions(args), args.type, args.count_actions)
 
 
 def send_goal(args: argparse.Namespace) -> int:

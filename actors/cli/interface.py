@@ -1,4 +1,4 @@
-"""``actors interface list|show|generate``: message, service and action types, as ``ros2 interface`` shows them."""
+"""``actors interface list|packages|package|show|proto|generate``: interface types, as ``ros2 interface``."""
 
 from __future__ import annotations
 
@@ -26,6 +26,26 @@ def register(subparsers: Any) -> None:
     show.add_argument("--root", action="append", default=[], type=Path, help=root_help)
     show.set_defaults(func=show_type)
 
+    packages = verbs.add_parser("packages", help="list the packages that define interfaces")
+    package = verbs.add_parser("package", help="list the interfaces of one package")
+    package.add_argument("package", metavar="PACKAGE", help="e.g. std_msgs")
+    for parser_ in (packages, package):
+        only = parser_.add_mutually_exclusive_group()
+        only.add_argument("-m", "--only-msgs", action="store_true", help="messages only")
+        only.add_argument("-s", "--only-srvs", action="store_true", help="services only")
+        only.add_argument("-a", "--only-actions", action="store_true", help="actions only")
+        parser_.add_argument("--root", action="append", default=[], type=Path, help=root_help)
+    packages.set_defaults(func=list_packages)
+    package.set_defaults(func=list_package)
+
+    proto = verbs.add_parser(
+        "proto", help="print a YAML prototype of a type (a service's request, an action's goal)"
+    )
+    proto.add_argument("type", metavar="TYPE", help="e.g. geometry_msgs/msg/Twist")
+    proto.add_argument("--no-quotes", action="store_true", help="without the outer quotes")
+    proto.add_argument("--root", action="append", default=[], type=Path, help=root_help)
+    proto.set_defaults(func=show_prototype)
+
     generate = verbs.add_parser("generate", help="generate Python modules beside .msg/.srv/.action sources")
     generate.add_argument(
         "roots", nargs="*", metavar="ROOT", type=Path,
@@ -46,6 +66,55 @@ def list_types(args: argparse.Namespace) -> None:
         for name in names:
             if kind in name:
                 print(f"    {name}")
+
+
+def list_packages(args: argparse.Namespace) -> None:
+    """Print each package that defines interfaces (of one kind with ``-m``/``-s``/``-a``), sorted."""
+    print(*sorted({name.split("/")[0] for name in _types(args)}), sep="\n")
+
+
+def list_package(args: argparse.Namespace) -> None:
+    """Print ``PACKAGE/msg/Name`` and the like for each of its interfaces (of one kind with ``-m``...).
+
+    UnknownInterfaceError for a package that defines no interface at all.
+    """
+    from actors.errors import UnknownInterfaceError
+
+    if not any(name.split("/")[0] == args.package for name in _types(args, kinds=_KINDS)):
+        raise UnknownInterfaceError(f"unknown package {args.package!r}")
+    names = [name for name in _types(args) if name.split("/")[0] == args.package]
+    order = {kind: i for i, kind in enumerate(_KINDS)}
+    for name in sorted(names, key=lambda n: (order[n.split("/")[1]], n)):
+        print(name)
+
+
+_KINDS = ("msg", "srv", "action")
+
+
+def _types(args: argparse.Namespace, kinds: tuple[str, ...] = ()) -> list[str]:
+    """Every known type of ``kinds`` (by default: those ``-m``/``-s``/``-a`` ask for, else all)."""
+    from actors import codec
+
+    _register_roots(args.root)
+    if not kinds:
+        asked = [kind for kind, flag in zip(_KINDS, (args.only_msgs, args.only_srvs, args.only_actions)) if flag]
+        kinds = tuple(asked) or _KINDS
+    return [name for name in codec.list_types() if name.split("/")[1] in kinds]
+
+
+def show_prototype(args: argparse.Namespace) -> None:
+    """Print a default instance as YAML in double quotes, ready to paste into ``topic pub``.
+
+    As ``ros2 interface proto``: a service's request, an action's goal.
+    Raises UnknownInterfaceError for an unknown type.
+    """
+    from actors import codec
+
+    _register_roots(args.root)
+    cls = codec.get_type(args.type)
+    cls = getattr(cls, "Goal", None) or getattr(cls, "Request", None) or cls
+    text = codec.to_yaml(cls())
+    print(text if args.no_quotes else f'"{text}"')
 
 
 def show_type(args: argparse.Namespace) -> None:

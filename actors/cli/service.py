@@ -1,11 +1,19 @@
-"""``actors service list|type|call``: a running graph's services, as ``ros2 service`` shows them."""
+"""``actors service list|type|find|call``: a running graph's services, as ``ros2 service`` shows them."""
 
 from __future__ import annotations
 
 import argparse
 from typing import Any
 
-from actors.cli._client import add_verb, call_service, connect, graph_snapshot, print_names
+from actors.cli._client import (
+    add_verb,
+    call_service,
+    connect,
+    graph_snapshot,
+    print_matching,
+    print_names,
+    type_of,
+)
 
 __all__ = ["register"]
 
@@ -25,6 +33,17 @@ def register(subparsers: Any) -> None:
 
     type_ = add_verb(verbs, "type", service_type, help="print a service's type")
     type_.add_argument("service", metavar="NAME")
+
+    find = add_verb(verbs, "find", find_services, help="list the services of a type")
+    find.add_argument("type", metavar="TYPE", help="e.g. rcl_interfaces/srv/ListParameters")
+    find.add_argument(
+        "-c", "--count-services", action="store_true", help="only print how many there are"
+    )
+    find.add_argument(
+        "--include-hidden-services",
+        action="store_true",
+        help="also find hidden services (an action's)",
+    )
 
     caller = add_verb(verbs, "call", call, help="call a service and print the response")
     caller.add_argument("service", metavar="NAME")
@@ -51,15 +70,19 @@ def list_services(args: argparse.Namespace) -> None:
 
 def service_type(args: argparse.Namespace) -> None:
     """Print the service's type; ControlError for an unknown service."""
-    from actors.errors import ControlError
-    from actors.names import expand
+    print(type_of(graph_snapshot(args).services, args.service, "service"))
 
-    name = expand(args.service, "/", "_", what="service name")
-    for service in graph_snapshot(args).services:
-        if service.name == name:
-            print(service.type)
-            return
-    raise ControlError(f"unknown service {name}")
+
+def find_services(args: argparse.Namespace) -> None:
+    """Print every service of ``TYPE`` (only their count under ``-c``); hidden ones only when asked."""
+    from actors.names import is_hidden_name
+
+    services = [
+        s
+        for s in graph_snapshot(args).services
+        if args.include_hidden_services or not is_hidden_name(s.name)
+    ]
+    print_matching(services, args.type, args.count_services)
 
 
 def call(args: argparse.Namespace) -> None:

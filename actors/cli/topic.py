@@ -1,11 +1,16 @@
-"""``actors topic list|info|echo|pub|hz``: a running graph's topics, shown as ``ros2 topic``."""
+"""``actors topic list|info|type|find|echo|pub|hz|bw``: a running graph's topics, as ``ros2 topic``."""
 
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
 
-from actors.cli._client import add_verb, connect, graph_snapshot, print_names
+from actors.cli._client import add_verb, connect, graph_snapshot, print_matching, print_names, type_of
+
+if TYPE_CHECKING:
+    from actors.cli._client import Connection
+    from actors.control import Sample
 
 __all__ = ["register"]
 
@@ -31,10 +36,34 @@ def register(subparsers: Any) -> None:
         "-v", "--verbose", action="store_true", help="each endpoint: node, QoS, queue, drops"
     )
 
+    type_ = add_verb(verbs, "type", topic_type, help="print a topic's type")
+    type_.add_argument("topic", metavar="TOPIC")
+
+    find = add_verb(verbs, "find", find_topics, help="list the topics of a type")
+    find.add_argument("type", metavar="TYPE", help="e.g. std_msgs/msg/String")
+    find.add_argument(
+        "-c", "--count-topics", action="store_true", help="only print how many there are"
+    )
+    find.add_argument(
+        "--include-hidden-topics", action="store_true", help="also find hidden topics (an action's)"
+    )
+
     echo = add_verb(verbs, "echo", echo_topic, help="print a topic's messages as YAML documents")
     echo.add_argument("topic", metavar="TOPIC")
+    echo.add_argument(
+        "type",
+        metavar="TYPE",
+        nargs="?",
+        help="the message type, e.g. std_msgs/msg/String: then the topic may appear later",
+    )
     echo.add_argument("--once", action="store_true", help="print one message, then exit")
     echo.add_argument("--field", metavar="A.B", help="print only this field of each message")
+    echo.add_argument(
+        "--no-arr", action="store_true", help="print each array field's type and length instead"
+    )
+    echo.add_argument(
+        "--no-str", action="store_true", help="print each string field's length instead"
+    )
 
     pub = add_verb(verbs, "pub", publish, help="publish a message, once or at a rate")
     pub.add_argument("topic", metavar="TOPIC")
@@ -61,13 +90,19 @@ def register(subparsers: Any) -> None:
     hz.add_argument(
         "-w", "--window", type=int, default=10000, help="intervals averaged (default 10000)"
     )
-    hz.add_argument(
-        "--count",
-        type=int,
-        default=0,
-        metavar="N",
-        help="exit after N reports (default: run until interrupted)",
+    bw = add_verb(verbs, "bw", topic_bw, help="print a topic's bandwidth every second")
+    bw.add_argument("topic", metavar="TOPIC")
+    bw.add_argument(
+        "-w", "--window", type=int, default=100, help="messages averaged (default 100)"
     )
+    for timed in (hz, bw):
+        timed.add_argument(
+            "--count",
+            type=int,
+            default=0,
+            metavar="N",
+            help="exit after N reports (default: run until interrupted)",
+        )
 
 
 def _positive(text: str) -> float:
@@ -123,19 +158,42 @@ def topic_info(args: argparse.Namespace) -> None:
                 print(f"Dropped: {endpoint.dropped}")
 
 
+def topic_type(args: argparse.Namespace) -> None:
+    """Print the topic's type; ControlError for an unknown topic."""
+    print(type_of(graph_snapshot(args).topics, args.topic, "topic"))
+
+
+def find_topics(args: argparse.Namespace) -> None:
+    """Print every topic of ``TYPE`` (only their count under ``-c``); hidden ones only when asked."""
+    from actors.names import is_hidden_name
+
+    topics = [
+        t for t in graph_snapshot(args).topics if args.include_hidden_topics or not is_hidden_name(t.name)
+    ]
+    print_matching(topics, args.type, args.count_topics)
+
+
 def echo_topic(args: argparse.Namespace) -> None:
-    """Print each message as a YAML document followed by ``---``, until interrupted (or once)."""
+    """Print each message as a YAML document followed by ``---``, until interrupted (or once).
+
+    With ``TYPE`` the topic need not exist yet: the command waits for its
+    first message, as ``ros2 topic echo TOPIC TYPE`` does.  ``--no-arr`` and
+    ``--no-str`` print ros2's summaries (``<sequence type: float, length:
+    360>``, ``<string length: <5>>``) in place of arrays and strings.
+    """
     from actors import codec
     from actors.cli._format import field, yaml_text
     from actors.control import Subscribe
 
+    asked = codec.ros_name(codec.get_type(args.type)) if args.type else ""
     with connect(args.graph) as conn:
-        msg_type = codec.get_type(conn.request(Subscribe(topic=args.topic))["type"])
+        msg_type = codec.get_type(conn.request(Subscribe(topic=args.topic, type=asked))["type"])
         while True:
             sample = conn.sample()
             assert sample is not None  # no timeout: waits for the next one
             msg = codec.convert(sample.msg, msg_type)
-            print(yaml_text(field(msg, args.field) if args.field else msg), end="")
+            shown = field(msg, args.field) if args.field else msg
+            print(yaml_text(shown, no_arr=args.no_arr, no_str=args.no_str), end="")
             print("---", flush=True)
             if args.once:
                 return
@@ -180,40 +238,113 @@ def topic_hz(args: argparse.Namespace) -> None:
     second without new messages.  ``--count N`` exits after N reports.
     """
     import math
-    import time
     from collections import deque
 
     from actors.control import Subscribe
 
     intervals: deque[float] = deque(maxlen=max(1, args.window))
+    last: float | None = None
+    fresh = False
+
+    def take(sample: Sample) -> None:
+        nonlocal last, fresh
+        if last is not None:
+            intervals.append(sample.stamp - last)
+            fresh = True
+        last = sample.stamp
+
+    def report() -> bool:
+        nonlocal fresh
+        if not fresh:
+            return False
+        fresh = False
+        n = len(intervals)
+        mean = sum(intervals) / n
+        std = math.sqrt(sum((x - mean) ** 2 for x in intervals) / n)
+        print(f"average rate: {1.0 / mean if mean > 0 else 0.0:.3f}")
+        print(
+            f"\tmin: {min(intervals):.3f}s max: {max(intervals):.3f}s "
+            f"std dev: {std:.5f}s window: {n + 1}",
+            flush=True,
+        )
+        return True
+
     with connect(args.graph) as conn:
         conn.request(Subscribe(topic=args.topic, content=False))
-        last: float | None = None
-        fresh = False
-        reports = 0
-        next_report = time.monotonic() + 1.0
-        while True:
-            sample = conn.sample(timeout=max(0.0, next_report - time.monotonic()))
-            if sample is not None:
-                if last is not None:
-                    intervals.append(sample.stamp - last)
-                    fresh = True
-                last = sample.stamp
-            if time.monotonic() < next_report:
-                continue
-            next_report += 1.0
-            if not fresh:
-                continue
-            fresh = False
-            n = len(intervals)
-            mean = sum(intervals) / n
-            std = math.sqrt(sum((x - mean) ** 2 for x in intervals) / n)
-            print(f"average rate: {1.0 / mean if mean > 0 else 0.0:.3f}")
-            print(
-                f"\tmin: {min(intervals):.3f}s max: {max(intervals):.3f}s "
-                f"std dev: {std:.5f}s window: {n + 1}",
-                flush=True,
-            )
+        _each_second(conn, take, report, args.count)
+
+
+def topic_bw(args: argparse.Namespace) -> None:
+    """Print ``Subscribed to [TOPIC]``, then every second the bandwidth over the last ``--window`` messages.
+
+    As ``ros2 topic bw``: ``1.23 KB/s from 10 messages`` and the mean, min and
+    max message size, in B, KB or MB by the rate's size.  A message's size is
+    its CDR encoding, header included: the bytes ROS puts on the wire and
+    counts (in one process actors passes the object itself, so nothing else
+    would be a size); its time is when the graph received it (its runtime
+    clock, so virtual time gives the graph's own rate).  Prints nothing until
+    two messages have come.  ``--count N`` exits after N reports.
+    """
+    from collections import deque
+
+    from actors import codec
+    from actors.control import Subscribe
+
+    window: deque[tuple[float, int]] = deque(maxlen=max(2, args.window))
+
+    def take(sample: Sample) -> None:
+        window.append((sample.stamp, len(codec.encode_cdr(codec.convert(sample.msg, msg_type)))))
+
+    def report() -> bool:
+        if len(window) < 2 or window[-1][0] <= window[0][0]:
+            return False
+        sizes = [size for _, size in window]
+        # Bytes after the first message over the time since it: the rate the window saw.
+        rate = sum(sizes[1:]) / (window[-1][0] - window[0][0])
+        unit = _bytes_unit(rate)
+        mean = sum(sizes) / len(sizes)
+        print(
+            f"{unit(rate)}/s from {len(sizes)} messages\n"
+            f"\tMessage size mean: {unit(mean)} min: {unit(min(sizes))} max: {unit(max(sizes))}",
+            flush=True,
+        )
+        return True
+
+    with connect(args.graph) as conn:
+        msg_type = codec.get_type(conn.request(Subscribe(topic=args.topic))["type"])
+        print(f"Subscribed to [{args.topic}]", flush=True)
+        _each_second(conn, take, report, args.count)
+
+
+def _bytes_unit(rate: float) -> Callable[[float], str]:
+    """How ``ros2 topic bw`` writes sizes: B under 1000 B/s, KB under 1 MB/s, else MB."""
+    if rate < 1000:
+        return lambda n: f"{n:.0f} B"
+    if rate < 1_000_000:
+        return lambda n: f"{n / 1000:.2f} KB"
+    return lambda n: f"{n / 1_000_000:.2f} MB"
+
+
+def _each_second(
+    conn: Connection, take: Callable[[Sample], None], report: Callable[[], bool], count: int
+) -> None:
+    """Hand each streamed sample to ``take``; once a second of wall time, ``report()``.
+
+    ``report`` returns whether it printed; after ``count`` printed reports
+    (0: never) it returns.
+    """
+    import time
+
+    reports = 0
+    next_report = time.monotonic() + 1.0
+    while True:
+        sample = conn.sample(timeout=max(0.0, next_report - time.monotonic()))
+        if sample is not None:
+            take(sample)
+        if time.monotonic() < next_report:
+            continue
+        next_report += 1.0
+        if report():
             reports += 1
-            if reports == args.count:
+            if reports == count:
                 return
