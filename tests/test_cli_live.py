@@ -97,6 +97,18 @@ def actors(
     )
 
 
+def started(graph: GraphProcess, *args: str) -> subprocess.Popen[str]:
+    """``python -m actors ARGS --graph NAME`` started in the background, its output piped."""
+    return subprocess.Popen(
+        [sys.executable, "-m", "actors", *args, "--graph", graph.name],
+        cwd=ROOT,
+        env=python_env(),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+
+
 def ok(graph: GraphProcess, *args: str, timeout: float = 30) -> str:
     """The stdout of a command that must succeed without a word on stderr."""
     result = actors(graph, *args, timeout=timeout)
@@ -178,15 +190,7 @@ def test_topic_type_and_find(graph):
 
 
 def test_topic_echo_with_a_type_waits_for_a_topic_that_does_not_exist_yet(graph):
-    echo = subprocess.Popen(
-        [sys.executable, "-m", "actors", "topic", "echo", "/cli_later", "std_msgs/msg/Int64",
-         "--once", "--graph", graph.name],
-        cwd=ROOT,
-        env=python_env(),
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-    )
+    echo = started(graph, "topic", "echo", "/cli_later", "std_msgs/msg/Int64", "--once")
     try:
         for _ in range(100):  # until the echo's subscription has made the topic
             if "/cli_later" in ok(graph, "topic", "list").splitlines():
@@ -375,14 +379,7 @@ def test_user_errors_exit_2_with_one_line(graph, args, error):
 
 
 def test_a_closed_stdout_pipe_ends_echo_quietly(graph):
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "actors", "topic", "echo", "/topic", "--graph", graph.name],
-        cwd=ROOT,
-        env=python_env(),
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-    )
+    proc = started(graph, "topic", "echo", "/topic")
     try:
         assert proc.stdout is not None and proc.stdout.readline().startswith("data:")
         proc.stdout.close()  # what `| head -1` does after its line

@@ -41,6 +41,7 @@ __all__ = [
     "print_names",
     "print_matching",
     "type_of",
+    "add_type_and_find",
     "connect",
     "query",
     "graph_snapshot",
@@ -266,3 +267,32 @@ def type_of(entries: Iterable[Any], name: str, what: str) -> str:
         if entry.name == full:
             return str(entry.type)
     raise ControlError(f"unknown {what} {full}")
+
+
+def add_type_and_find(
+    verbs: Any, what: str, example: str, entries: Callable[[GraphSnapshot], Iterable[Any]]
+) -> None:
+    """``<what> type NAME`` and ``<what> find TYPE [-c] [--include-hidden-<what>s]``, as ros2 has them.
+
+    ``entries`` picks the topics (or services...) out of the graph; ``example``
+    is a type of them, for the help.
+    """
+    from actors.names import is_hidden_name
+
+    def type_verb(args: argparse.Namespace) -> None:
+        print(type_of(entries(graph_snapshot(args)), args.name, what))
+
+    def find_verb(args: argparse.Namespace) -> None:
+        found = [e for e in entries(graph_snapshot(args)) if args.include_hidden or not is_hidden_name(e.name)]
+        print_matching(found, args.type, args.count_only)
+
+    type_ = add_verb(verbs, "type", type_verb, help=f"print a {what}'s type")
+    type_.add_argument("name", metavar="NAME")
+    find = add_verb(verbs, "find", find_verb, help=f"list the {what}s of a type")
+    find.add_argument("type", metavar="TYPE", help=f"e.g. {example}")
+    find.add_argument(
+        "-c", f"--count-{what}s", dest="count_only", action="store_true", help="only print how many"
+    )
+    find.add_argument(
+        f"--include-hidden-{what}s", dest="include_hidden", action="store_true", help="hidden ones too"
+    )

@@ -5,15 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from actors.cli._client import (
-    add_verb,
-    call_service,
-    connect,
-    graph_snapshot,
-    print_matching,
-    print_names,
-    type_of,
-)
+from actors.cli._client import add_type_and_find, add_verb, call_service, connect, graph_snapshot, print_names
 
 __all__ = ["register"]
 
@@ -31,18 +23,8 @@ def register(subparsers: Any) -> None:
         "--include-hidden-services", action="store_true", help="also list hidden services (an action's)"
     )
 
-    type_ = add_verb(verbs, "type", service_type, help="print a service's type")
-    type_.add_argument("service", metavar="NAME")
-
-    find = add_verb(verbs, "find", find_services, help="list the services of a type")
-    find.add_argument("type", metavar="TYPE", help="e.g. rcl_interfaces/srv/ListParameters")
-    find.add_argument(
-        "-c", "--count-services", action="store_true", help="only print how many there are"
-    )
-    find.add_argument(
-        "--include-hidden-services",
-        action="store_true",
-        help="also find hidden services (an action's)",
+    add_type_and_find(
+        verbs, "service", "rcl_interfaces/srv/ListParameters", lambda graph: graph.services
     )
 
     caller = add_verb(verbs, "call", call, help="call a service and print the response")
@@ -66,23 +48,6 @@ def list_services(args: argparse.Namespace) -> None:
 
     services = graph_snapshot(args).services
     print_names([s for s in services if args.include_hidden_services or not is_hidden_name(s.name)], args.show_types)
-
-
-def service_type(args: argparse.Namespace) -> None:
-    """Print the service's type; ControlError for an unknown service."""
-    print(type_of(graph_snapshot(args).services, args.service, "service"))
-
-
-def find_services(args: argparse.Namespace) -> None:
-    """Print every service of ``TYPE`` (only their count under ``-c``); hidden ones only when asked."""
-    from actors.names import is_hidden_name
-
-    services = [
-        s
-        for s in graph_snapshot(args).services
-        if args.include_hidden_services or not is_hidden_name(s.name)
-    ]
-    print_matching(services, args.type, args.count_services)
 
 
 def call(args: argparse.Namespace) -> None:

@@ -6,7 +6,7 @@ import argparse
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
-from actors.cli._client import add_verb, connect, graph_snapshot, print_matching, print_names, type_of
+from actors.cli._client import add_type_and_find, add_verb, connect, graph_snapshot, print_names
 
 if TYPE_CHECKING:
     from actors.cli._client import Connection
@@ -36,17 +36,7 @@ def register(subparsers: Any) -> None:
         "-v", "--verbose", action="store_true", help="each endpoint: node, QoS, queue, drops"
     )
 
-    type_ = add_verb(verbs, "type", topic_type, help="print a topic's type")
-    type_.add_argument("topic", metavar="TOPIC")
-
-    find = add_verb(verbs, "find", find_topics, help="list the topics of a type")
-    find.add_argument("type", metavar="TYPE", help="e.g. std_msgs/msg/String")
-    find.add_argument(
-        "-c", "--count-topics", action="store_true", help="only print how many there are"
-    )
-    find.add_argument(
-        "--include-hidden-topics", action="store_true", help="also find hidden topics (an action's)"
-    )
+    add_type_and_find(verbs, "topic", "std_msgs/msg/String", lambda graph: graph.topics)
 
     echo = add_verb(verbs, "echo", echo_topic, help="print a topic's messages as YAML documents")
     echo.add_argument("topic", metavar="TOPIC")
@@ -156,21 +146,6 @@ def topic_info(args: argparse.Namespace) -> None:
             if kind == "SUBSCRIPTION":
                 print(f"Queued: {endpoint.queued}")
                 print(f"Dropped: {endpoint.dropped}")
-
-
-def topic_type(args: argparse.Namespace) -> None:
-    """Print the topic's type; ControlError for an unknown topic."""
-    print(type_of(graph_snapshot(args).topics, args.topic, "topic"))
-
-
-def find_topics(args: argparse.Namespace) -> None:
-    """Print every topic of ``TYPE`` (only their count under ``-c``); hidden ones only when asked."""
-    from actors.names import is_hidden_name
-
-    topics = [
-        t for t in graph_snapshot(args).topics if args.include_hidden_topics or not is_hidden_name(t.name)
-    ]
-    print_matching(topics, args.type, args.count_topics)
 
 
 def echo_topic(args: argparse.Namespace) -> None:
