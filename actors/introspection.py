@@ -1,7 +1,9 @@
 """A read-only view of a running graph: nodes, topics, endpoints, drop counts, actions.
 
 The command line and ``doctor`` read the graph only through these frozen
-snapshots, which encode to msgpack as they are.  Actions are not a table of
+snapshots, which encode to msgpack as they are.  With a transport attached,
+they show the nodes and endpoints of other processes too (``process`` names
+where they run), and leave out the transport's own stand-in endpoints.  Actions are not a table of
 their own: as rcl_action does, they are read off the topics and services
 they are made of (``<action>/_action/feedback`` and the rest), so a snapshot
 of topics is enough to list them (:func:`action_infos`).
@@ -10,15 +12,18 @@ of topics is enough to list them (:func:`action_infos`).
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import Protocol
+from typing import Any, Protocol
 
 import msgspec
 
+from actors import codec
+from actors.errors import ActorsError
 from actors.names import is_hidden
 from actors.services import ServiceTable
 from actors.supervisor import Child, Supervisor
 from actors.qos import QoSSnapshot
 from actors.topics import Topic, TopicTable, type_name
+from actors.transport.seam import GraphSource, RemoteNode, is_proxy
 
 __all__ = [
     "EndpointInfo",
@@ -38,7 +43,9 @@ class EndpointInfo(msgspec.Struct, frozen=True, kw_only=True):
 
     ``refused`` counts, per reason, the messages the subscription's callback
     refused (:class:`~actors.errors.MessageRefused`); ``refused_from`` names the
-    publisher of the last one.
+    publisher of the last one.  ``process`` is empty for this process's endpoints, else where the endpoint
+    runs (a transport's id); ``type_hash`` is set where a topic has remote
+    endpoints (RIHS01), and ``why`` says why this process cannot read a remote one.
     """
 
     node: str
@@ -48,6 +55,9 @@ class EndpointInfo(msgspec.Struct, frozen=True, kw_only=True):
     dropped: int = 0
     refused: dict[str, int] = {}
     refused_from: str = ""
+    process: str = ""
+    type_hash: str = ""
+    why: str = ""
 
 
 class TopicInfo(msgspec.Struct, frozen=True, kw_only=True):
@@ -67,6 +77,7 @@ class ServiceInfo(msgspec.Struct, frozen=True, kw_only=True):
     node: str
     handled: int
     queued: int
+    process: str = ""
 
 
 class NodeInfo(msgspec.Struct, frozen=True, kw_only=True):
@@ -84,6 +95,7 @@ class NodeInfo(msgspec.Struct, frozen=True, kw_only=True):
     serves: tuple[str, ...]
     calls: tuple[str, ...]
     timers: int
+    process: str = ""
 
 
 class ActionInfo(msgspec.Struct, frozen=True, kw_only=True):
@@ -141,11 +153,14 @@ def action_infos(topics: Iterable[TopicInfo]) -> list[ActionInfo]:
 
 
 class Viewed(Protocol):
-    """The tables a graph view reads (a runtime's)."""
+    """The tables a graph view reads (a runtime's), and what runs beside them."""
 
     supervisor: Supervisor
     topics: TopicTable
     services: ServiceTable
+
+    @property
+    def attachments(self) -> tuple[Any, ...]: ...
 
 
 class GraphView:
@@ -157,48 +172,66 @@ class GraphView:
         self._rt = runtime
 
     def nodes(self) -> list[NodeInfo]:
-        """Every node of the graph, in start order, including those being restarted."""
-        return [_node_info(c) for c in self._rt.supervisor.children if c.core is not None]
+        """Every node of the graph, in start order, including those being restarted; then remote ones."""
+        local = [_node_info(c) for c in self._rt.supervisor.children if c.core is not None]
+        return local + [_remote_node_info(n) for n in self.remote_nodes()]
+
+    def remote_nodes(self) -> list[RemoteNode]:
+        """The nodes of other processes, as the attached transports see them."""
+        return [n for a in self._rt.attachments if isinstance(a, GraphSource) for n in a.remote_nodes()]
 
     def ended(self) -> list[NodeInfo]:
         """The latest nodes that ended for good (exited, or crashed and not restarted)."""
         return [_node_info(c) for c in self._rt.supervisor.ended if c.core is not None]
 
     def topics(self) -> list[TopicInfo]:
-        """Every topic with its endpoints, sorted by name."""
-        return [self._topic_info(t) for _, t in sorted(self._rt.topics.topics.items())]
+        """Every topic with its endpoints (other processes' too), sorted by name."""
+        remote = _remote_endpoints(self.remote_nodes())
+        found = {name: self._topic_info(t, remote.pop(name, None)) for name, t in self._rt.topics.topics.items()}
+        found.update((name, _remote_topic(name, *ends)) for name, ends in remote.items())
+        return [found[name] for name in sorted(found)]
 
     def services(self) -> list[ServiceInfo]:
-        """Every service with its server, sorted by name."""
-        return [
-            ServiceInfo(
-                name=name,
-                type=type_name(s.srv_type),
-                node=s.node.fqn,
-                handled=s.handled,
-                queued=s.queued,
-            )
-            for name, s in sorted(self._rt.services.servers.items())
-        ]
+        """Every service with its server (remote ones too), sorted by name."""
+        found = {
+            name: ServiceInfo(name=name, type=type_name(s.srv_type), node=s.node.fqn, handled=s.handled, queued=s.queued)
+            for name, s in self._rt.services.servers.items()
+            if not is_proxy(s)
+        }
+        for node in self.remote_nodes():
+            for e in node.endpoints:
+                if e.kind == "server" and e.name not in found:
+                    found[e.name] = ServiceInfo(
+                        name=e.name, type=e.type, node=node.name, handled=0, queued=0, process=node.process
+                    )
+        return [found[name] for name in sorted(found)]
 
     def actions(self) -> list[ActionInfo]:
         """Every action with its servers and clients, sorted by name."""
         return action_infos(self.topics())
 
     def topic(self, name: str) -> TopicInfo | None:
-        """One topic, or None."""
+        """One topic (with its remote endpoints), or None."""
+        remote = _remote_endpoints(self.remote_nodes()).get(name)
         topic = self._rt.topics.topics.get(name)
-        return None if topic is None else self._topic_info(topic)
+        if topic is not None:
+            return self._topic_info(topic, remote)
+        return None if remote is None else _remote_topic(name, *remote)
 
     @staticmethod
-    def _topic_info(topic: Topic) -> TopicInfo:
+    def _topic_info(topic: Topic, remote: tuple[list[EndpointInfo], list[EndpointInfo]] | None = None) -> TopicInfo:
+        # Type hashes only where other processes take part: they are what a transport compares.
+        hash_ = _hash_of(topic.msg_type) if remote else ""
+        pubs, subs = remote or ([], [])
         return TopicInfo(
             name=topic.name,
             type=type_name(topic.msg_type),
             publishers=tuple(
-                EndpointInfo(node=p.node.fqn, type=type_name(p.msg_type), qos=p.qos)
+                EndpointInfo(node=p.node.fqn, type=type_name(p.msg_type), qos=p.qos, type_hash=hash_)
                 for p in topic.publishers
-            ),
+                if not is_proxy(p)
+            )
+            + tuple(pubs),
             subscriptions=tuple(
                 EndpointInfo(
                     node=s.node.fqn,
@@ -208,10 +241,61 @@ class GraphView:
                     dropped=s.dropped,
                     refused=dict(s.refusals.counts) if s.refusals else {},
                     refused_from=s.refusals.last_from if s.refusals else "",
+                    type_hash=hash_,
                 )
                 for s in topic.subscriptions
-            ),
+            )
+            + tuple(subs),
         )
+
+
+def _hash_of(msg_type: type) -> str:
+    try:
+        return codec.type_hash(msg_type)
+    except (ActorsError, TypeError, ValueError):
+        return ""  # not a ROS type (a test's own class): nothing to compare
+
+
+_TOPIC_KINDS = ("publisher", "subscription")
+
+
+def _remote_endpoints(nodes: list[RemoteNode]) -> dict[str, tuple[list[EndpointInfo], list[EndpointInfo]]]:
+    """Remote publishers and subscriptions by topic name."""
+    found: dict[str, tuple[list[EndpointInfo], list[EndpointInfo]]] = {}
+    for node in nodes:
+        for e in node.endpoints:
+            if e.kind in _TOPIC_KINDS:
+                info = EndpointInfo(
+                    node=node.name, type=e.type, qos=e.qos, process=node.process, type_hash=e.type_hash, why=e.why
+                )
+                found.setdefault(e.name, ([], []))[_TOPIC_KINDS.index(e.kind)].append(info)
+    return found
+
+
+def _remote_topic(name: str, pubs: list[EndpointInfo], subs: list[EndpointInfo]) -> TopicInfo:
+    """A topic only other processes use."""
+    return TopicInfo(name=name, type=(pubs or subs)[0].type, publishers=tuple(pubs), subscriptions=tuple(subs))
+
+
+def _remote_node_info(node: RemoteNode) -> NodeInfo:
+    def names(kind: str) -> tuple[str, ...]:
+        return tuple(sorted({e.name for e in node.endpoints if e.kind == kind}))
+
+    return NodeInfo(
+        name=node.name,
+        cls="",
+        state="remote",
+        restart="",
+        restarts=0,
+        crashes=0,
+        last_error=None,
+        publishes=names("publisher"),
+        subscribes=names("subscription"),
+        serves=names("server"),
+        calls=names("client"),
+        timers=0,
+        process=node.process,
+    )
 
 
 def _node_info(child: Child) -> NodeInfo:

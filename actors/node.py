@@ -275,6 +275,7 @@ class NodeCore:
         full = self.resolver.resolve(name, what="service name")
         client = Client(self, full, srv_type, self.runtime.services)
         self.clients[client] = None
+        self.runtime.services.add_client(client)
         return client
 
     def destroy_service(self, service: Service) -> None:
@@ -284,7 +285,9 @@ class NodeCore:
 
     def destroy_client(self, client: Client) -> None:
         """Forget ``client``."""
-        self.clients.pop(client, None)
+        if client in self.clients:
+            del self.clients[client]
+            self.runtime.services.remove_client(client)
 
     def destroy_publisher(self, pub: Publisher) -> None:
         """Remove ``pub`` from this node and its topic."""
@@ -313,6 +316,8 @@ class NodeCore:
     # -- lifecycle ------------------------------------------------------------
 
     def _stop_activity(self) -> None:
+        for client in self.clients:  # a restarted instance makes its own
+            self.runtime.services.remove_client(client)
         for timer in self.timers:
             timer.cancel()
         for server in self.action_servers:

@@ -30,14 +30,14 @@ import asyncio
 from collections import deque
 from collections.abc import Awaitable, Callable
 from inspect import isawaitable
-from typing import Any
+from typing import Any, Protocol
 
 from actors.actor import Mailbox, Owner
 from actors.errors import ServiceError
 from actors.snapshot import snapshotter
 from actors.topics import type_name
 
-__all__ = ["Service", "Client", "ServiceTable"]
+__all__ = ["Service", "Client", "ServiceListener", "ServiceTable"]
 
 
 class _Call:
@@ -57,6 +57,7 @@ class Service(Mailbox):
     """A service server.  Create with ``Node.create_service``."""
 
     __slots__ = ("node", "service_name", "srv_type", "handler", "handled", "_snapshot")
+    remote = False  # a transport's stand-in for a server elsewhere, which a local server replaces
 
     def __init__(self, node: Owner, service_name: str, srv_type: type, handler: Callable[..., Any]) -> None:
         _check_srv_type(srv_type, "create_service")
@@ -242,27 +243,54 @@ def _settle(future: asyncio.Future[bool], value: bool) -> None:
         future.set_result(value)
 
 
-class ServiceTable:
-    """Every service of a runtime, and the calls waiting for services not yet there."""
+class ServiceListener(Protocol):
+    """Told when servers and clients come and go (graph events): a transport, a recorder.
 
-    __slots__ = ("servers", "_parked", "_watchers")
+    Called synchronously in the loop, after a server is registered (added) or
+    unregistered (removed), and when a node creates or forgets a client.  A
+    restarted node's server takes its predecessor's place without an event.
+    """
+
+    def service_added(self, service: Service) -> None: ...
+
+    def service_removed(self, service: Service) -> None: ...
+
+    def client_added(self, client: Client) -> None: ...
+
+    def client_removed(self, client: Client) -> None: ...
+
+
+class ServiceTable:
+    """Every service of a runtime, and the calls waiting for services not yet there.
+
+    ``listeners`` hear of every server and client added or removed (never of a call).
+    """
+
+    __slots__ = ("servers", "listeners", "_parked", "_watchers")
 
     def __init__(self) -> None:
         self.servers: dict[str, Service] = {}
+        self.listeners: list[ServiceListener] = []
         self._parked: dict[str, list[_Call]] = {}
         # Futures of wait_for_service() callers, by service name (insertion-ordered sets).
         self._watchers: dict[str, dict[asyncio.Future[bool], None]] = {}
 
     def add(self, service: Service, *, replacing: Service | None = None) -> None:
-        """Register ``service``; raise ServiceError if another server has the name."""
+        """Register ``service``; raise ServiceError if another server has the name.
+
+        A transport's stand-in for a server in another process gives way to it.
+        """
         name = service.service_name
         existing = self.servers.get(name)
-        if existing is not None and existing is not replacing:
+        if existing is not None and existing is not replacing and not existing.remote:
             raise ServiceError(
                 f"cannot serve {name} from {service.node.fqn}: {existing.node.fqn} already serves it "
                 f"({type_name(existing.srv_type)})"
             )
         self.servers[name] = service
+        if existing is None or existing is not replacing:  # a restart takes its place unheard
+            for listener in self.listeners:
+                listener.service_added(service)
         for call in self._parked.pop(name, ()):
             if not call.future.done():
                 service._push(call)
@@ -273,10 +301,22 @@ class ServiceTable:
         """Unregister ``service``; its queued calls fail."""
         if self.servers.get(service.service_name) is service:
             del self.servers[service.service_name]
+            for listener in self.listeners:
+                listener.service_removed(service)
         while service._queue:
             call = service._queue.popleft()
             if not call.future.done():
                 call.future.set_exception(ServiceError(f"service {service.service_name} was destroyed"))
+
+    def add_client(self, client: Client) -> None:
+        """Tell the listeners of a new client (clients need no registration to call)."""
+        for listener in self.listeners:
+            listener.client_added(client)
+
+    def remove_client(self, client: Client) -> None:
+        """Tell the listeners that ``client`` is gone."""
+        for listener in self.listeners:
+            listener.client_removed(client)
 
     def park(self, name: str, call: _Call) -> None:
         """Keep ``call`` until a server for ``name`` appears."""

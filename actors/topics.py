@@ -42,7 +42,7 @@ import sys
 from collections import deque
 from collections.abc import Awaitable, Callable
 from inspect import isawaitable
-from typing import Any
+from typing import Any, Protocol
 
 import msgspec
 
@@ -81,6 +81,7 @@ __all__ = [
     "Publisher",
     "Subscription",
     "Topic",
+    "TopicListener",
     "TopicTable",
 ]
 
@@ -363,13 +364,32 @@ class Topic:
         self.subscriptions: dict[Subscription, None] = {}
 
 
-class TopicTable:
-    """Every topic of a runtime; matches publishers to subscriptions and tells them of it."""
+class TopicListener(Protocol):
+    """Told when endpoints come and go (graph events): a recorder, a transport.
 
-    __slots__ = ("topics",)
+    Called synchronously in the loop, after the endpoint is matched (added) or
+    before an empty topic is dropped (removed).  A listener may add endpoints
+    of its own from the call (it hears of them too), but must not remove any.
+    A restarted node's subscription takes its predecessor's place without an
+    event.
+    """
+
+    def endpoint_added(self, topic: Topic, endpoint: Publisher | Subscription) -> None: ...
+
+    def endpoint_removed(self, topic: Topic, endpoint: Publisher | Subscription) -> None: ...
+
+
+class TopicTable:
+    """Every topic of a runtime; matches publishers to subscriptions and tells them of it.
+
+    ``listeners`` hear of every endpoint added or removed (never of a publish).
+    """
+
+    __slots__ = ("topics", "listeners")
 
     def __init__(self) -> None:
         self.topics: dict[str, Topic] = {}
+        self.listeners: list[TopicListener] = []
 
     def _topic_for(self, name: str, msg_type: type, endpoint: str, node: str) -> Topic:
         topic = self.topics.get(name)
@@ -391,6 +411,8 @@ class TopicTable:
         topic.publishers[pub] = None
         for sub in topic.subscriptions:
             self._match(pub, sub)
+        for listener in self.listeners:
+            listener.endpoint_added(topic, pub)
 
     def add_subscription(self, sub: Subscription, *, replay: bool = True) -> None:
         """Register ``sub``, connect it, and replay transient-local history if it asks for it."""
@@ -403,6 +425,8 @@ class TopicTable:
                 if sub.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL:
                     for msg in pub._history:
                         sub._push(msg)
+        for listener in self.listeners:
+            listener.endpoint_added(topic, sub)
 
     def _match(self, pub: Publisher, sub: Subscription) -> bool:
         refused = incompatible_policies(pub.qos, sub.qos)
@@ -452,6 +476,8 @@ class TopicTable:
                 _tell(pub, sub, -1, to_pub=False)  # the publisher itself is gone: only its subscriptions hear
             pub._subs = {}
             pub._tracked = {}
+            for listener in self.listeners:
+                listener.endpoint_removed(topic, pub)
             self._drop_if_empty(topic)
 
     def remove_subscription(self, sub: Subscription) -> None:
@@ -468,6 +494,8 @@ class TopicTable:
                 pub._tracked.pop(sub, None)
                 if pub._subs.pop(sub, False) is None:
                     _tell(pub, sub, -1, to_sub=False)
+            for listener in self.listeners:
+                listener.endpoint_removed(topic, sub)
             self._drop_if_empty(topic)
 
     def _drop_if_empty(self, topic: Topic) -> None:
