@@ -19,6 +19,7 @@ Every key is optional except each node's ``use``::
     name = "talker"
     namespace = ""
     params = { }
+    params_file = "params.yaml"   # ROS parameter file (node_name: ros__parameters:), under params
     remap = { topic = "chatter" }
     restart = "transient"     # permanent, temporary
     delay = 0.0               # start this node so many seconds later (launch's TimerAction)
@@ -35,9 +36,10 @@ from typing import Annotated, Any, Literal
 import msgspec
 
 from actors.config import load_toml
-from actors.errors import GraphFileError, InvalidNameError
-from actors.names import expand, normalize_namespace, validate_node_name
+from actors.errors import GraphFileError, InvalidNameError, RosArgsError
+from actors.names import expand, fully_qualified, normalize_namespace, validate_node_name
 from actors.node import Node
+from actors.rosargs import load_params_file, node_key_matches, values_for
 from actors.supervisor import RestartType, Strategy, SupervisorPolicy
 
 __all__ = ["RuntimeSection", "SupervisorSection", "NodeEntry", "GraphFile", "load_graph", "import_node_class"]
@@ -74,6 +76,7 @@ class NodeEntry(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields
     name: str | None = None
     namespace: str = ""
     params: dict[str, Any] = {}
+    params_file: str | None = None  # a ROS parameter file, relative to the graph file; params win over it
     remap: dict[str, str] = {}
     restart: RestartType = RestartType.TRANSIENT
     delay: NonNegative = 0.0  # seconds after the graph starts, as launch's TimerAction
@@ -114,6 +117,7 @@ def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
     """
     graph = load_toml(path, GraphFile, GraphFileError)
     classes = []
+    nodes = list(graph.nodes)
     for i, entry in enumerate(graph.nodes):
         key = f"nodes[{i}]"
         try:
@@ -133,4 +137,30 @@ def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
                 expand(target, namespace, entry.name or "node", what="remap target")
             except InvalidNameError as exc:
                 raise GraphFileError(f"{path}: {key}.remap.{source}: {exc}") from None
-    return graph, classes
+        if entry.params_file is not None:
+            params = _file_params(Path(path).parent / entry.params_file, entry, namespace, f"{path}: {key}")
+            nodes[i] = msgspec.structs.replace(entry, params={**params, **entry.params})
+    return msgspec.structs.replace(graph, nodes=nodes), classes
+
+
+def _file_params(file: Path, entry: NodeEntry, namespace: str, where: str) -> dict[str, Any]:
+    """What a ROS parameter file gives the node of ``entry``: matched by its full name, as rcl does."""
+    try:
+        rules = load_params_file(file)
+    except RosArgsError as exc:
+        raise GraphFileError(f"{where}.params_file: {exc}") from None
+    if entry.name is not None:
+        return values_for(rules, fully_qualified(namespace, entry.name))
+    # Without a name the node's own default decides, known only once it runs: only keys that
+    # match any node name (wildcards) can be applied here.
+    named = [rule.node_key for rule in rules if not _any_name(rule.node_key, namespace)]
+    if named:
+        raise GraphFileError(
+            f"{where}.params_file: {file} has parameters for {', '.join(named)}: give the node a `name` "
+            f"so that they can be matched"
+        )
+    return values_for(rules, fully_qualified(namespace, "any"))
+
+
+def _any_name(node_key: str, namespace: str) -> bool:
+    return all(node_key_matches(node_key, fully_qualified(namespace, name)) for name in ("a", "b"))

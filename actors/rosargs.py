@@ -53,6 +53,7 @@ __all__ = [
     "remove_ros_args",
     "load_params_file",
     "parameters_for",
+    "values_for",
     "node_key_matches",
 ]
 
@@ -134,7 +135,7 @@ class RosArgs:
         final_name = remap.pop("__node", name)
         ns = normalize_namespace(remap.pop("__ns", namespace))
         fqn = f"/{final_name}" if ns == "/" else f"{ns}/{final_name}"
-        return NodeArgs(final_name, ns, remap, _values_for(self.params, fqn))
+        return NodeArgs(final_name, ns, remap, values_for(self.params, fqn))
 
 
 def parse(argv: Sequence[str]) -> tuple[RosArgs, list[str]]:
@@ -355,10 +356,11 @@ def node_key_matches(node_key: str, node_fqn: str) -> bool:
 
 def parameters_for(path: str | Path, node_fqn: str) -> dict[str, Any]:
     """The parameters a ROS parameter file gives the node ``node_fqn`` (later keys win)."""
-    return _values_for(load_params_file(path), node_fqn)
+    return values_for(load_params_file(path), node_fqn)
 
 
-def _values_for(rules: Iterable[ParamRule], node_fqn: str) -> dict[str, Any]:
+def values_for(rules: Iterable[ParamRule], node_fqn: str) -> dict[str, Any]:
+    """The values ``rules`` give the node ``node_fqn``, later rules winning."""
     values: dict[str, Any] = {}
     for rule in rules:
         if node_key_matches(rule.node_key, node_fqn):

@@ -369,3 +369,27 @@ def test_parameter_requests_wait_for_the_spin(session):
     rclpy.spin_once(node, timeout_sec=0)
     assert answer.done() and answer.result().results[0].successful
     assert node.get_parameter("speed").value == 2.0
+
+
+def test_a_raw_subscription_gets_the_cdr_bytes_rmw_fastrtps_delivers(session):
+    from actors import cdr
+
+    node = rclpy.create_node("raw")
+    got: list[bytes] = []
+    node.create_subscription(String, "chatter", got.append, 10, raw=True)
+    node.create_publisher(String, "chatter", 10).publish(String(data="Hello World: 0"))
+    rclpy.spin_once(node, timeout_sec=0)
+    # What rclpy's listener_serialized prints for this message (CDR header, length, text, padding to 4).
+    assert got == [b"\x00\x01\x00\x00\x0f\x00\x00\x00Hello World: 0\x00\x00"]
+    assert cdr.decode(got[0], String).data == "Hello World: 0"
+
+
+def test_a_two_argument_callback_gets_message_info(session):
+    node = rclpy.create_node("informed")
+    got: list[Any] = []
+    node.create_subscription(String, "t", lambda msg, info: got.append((msg.data, info)), 10)
+    session.sleep(1.5)
+    node.create_publisher(String, "t", 10).publish(String(data="x"))
+    rclpy.spin_once(node, timeout_sec=0)
+    ((data, info),) = got
+    assert data == "x" and info["received_timestamp"] == 1_500_000_000 and info["reception_sequence_number"] == 1

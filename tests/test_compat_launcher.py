@@ -112,3 +112,16 @@ def test_ctrl_c_stops_a_spinning_script_gracefully():
     _, err = proc.communicate(timeout=30)
     assert proc.returncode == 0, err
     assert "Traceback" not in err
+
+
+def test_ros_arguments_give_parameters_names_and_log_levels(tmp_path):
+    params = tmp_path / "params.yaml"
+    params.write_text("/**:\n  ros__parameters: {speed: 0.5}\n/robot/tuned:\n  ros__parameters: {label: from_file}\n")
+    done = actors_run(script("params.py"), "--ros-args", "-r", "__ns:=/robot", "--params-file", str(params),
+                      "-p", "speed:=2.5", "--log-level", "debug")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines() == ["/robot/tuned speed=2.5 label=from_file"]
+    assert "[DEBUG]" in done.stderr and "[robot.tuned]: debug is on" in done.stderr
+    quiet = actors_run(script("params.py"))
+    assert quiet.stdout.splitlines() == ["/tuned speed=1.0 label=none"]
+    assert "debug is on" not in quiet.stderr

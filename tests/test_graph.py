@@ -79,3 +79,61 @@ def test_mistakes_name_the_file_and_key_path(tmp_path, text, expected):
 def test_a_missing_file(tmp_path):
     with pytest.raises(GraphFileError, match="cannot read"):
         load_graph(tmp_path / "absent.toml")
+
+
+PARAMS_YAML = """\
+/**:
+  ros__parameters: {everyone: 1}
+talker:
+  ros__parameters: {rate: 2.0, limits: {max: 3}}
+/robot1/talker:
+  ros__parameters: {rate: 5.0}
+"""
+
+
+def test_a_params_file_gives_each_node_what_its_full_name_matches(tmp_path):
+    (tmp_path / "params.yaml").write_text(PARAMS_YAML)
+    path = write(
+        tmp_path,
+        """
+[[nodes]]
+use = "nodes.talker:MinimalPublisher"
+name = "talker"
+params_file = "params.yaml"
+params = { everyone = 7 }
+
+[[nodes]]
+use = "nodes.talker:MinimalPublisher"
+name = "talker"
+namespace = "robot1"
+params_file = "params.yaml"
+""",
+    )
+    graph, _ = load_graph(path)
+    assert graph.nodes[0].params == {"everyone": 7, "rate": 2.0, "limits.max": 3}  # params win over the file
+    assert graph.nodes[1].params == {"everyone": 1, "rate": 5.0}
+
+
+@pytest.mark.parametrize(
+    ("yaml", "name", "expected"),
+    [
+        (PARAMS_YAML, None, "has parameters for /talker, /robot1/talker: give the node a `name`"),
+        ("talker: 3", '"talker"', "params.yaml: talker: expected a namespace or a node holding ros__parameters"),
+        (None, '"talker"', "cannot read the parameter file"),
+    ],
+)
+def test_params_file_mistakes_name_the_key(tmp_path, yaml, name, expected):
+    if yaml is not None:
+        (tmp_path / "params.yaml").write_text(yaml)
+    name_line = f"name = {name}\n" if name else ""
+    path = write(tmp_path, f'[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n{name_line}params_file = "params.yaml"\n')
+    with pytest.raises(GraphFileError) as info:
+        load_graph(path)
+    assert str(info.value).startswith(f"{path}: nodes[0].params_file: ")
+    assert expected in str(info.value)
+
+
+def test_a_params_file_of_wildcards_needs_no_name(tmp_path):
+    (tmp_path / "params.yaml").write_text("/**:\n  ros__parameters: {everyone: 1}\n")
+    path = write(tmp_path, '[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nparams_file = "params.yaml"\n')
+    assert load_graph(path)[0].nodes[0].params == {"everyone": 1}

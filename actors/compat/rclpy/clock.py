@@ -1,7 +1,7 @@
-"""``rclpy.clock``: actors' Clock (the runtime's clock: virtual or wall time)."""
+"""``rclpy.clock``: actors' clocks (the runtime's clock: virtual or wall time)."""
 
 from __future__ import annotations
 
-from actors.clock import Clock
+from actors.clock import Clock, ClockType, ROSClock
 
-__all__ = ["Clock"]
+__all__ = ["Clock", "ClockType", "ROSClock"]

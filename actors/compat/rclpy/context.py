@@ -19,7 +19,7 @@ from inspect import ismethod
 from typing import Any, Protocol
 
 from actors.compat.session import Session
-from actors.log import ROOT_LOGGER, NodeLogger
+from actors.log import ROOT_LOGGER, set_logger_level
 from actors.rosargs import RosArgs, parse
 
 __all__ = ["Context", "use_session", "current_session"]
@@ -190,6 +190,6 @@ class Context:
 def _apply_log_levels(levels: dict[str, int]) -> None:
     for name, level in levels.items():
         if name:
-            NodeLogger(name, lambda: 0).set_level(level)
+            set_logger_level(name, level)
         else:
             logging.getLogger(ROOT_LOGGER).setLevel(level)

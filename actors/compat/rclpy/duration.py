@@ -1,7 +1,7 @@
-"""``rclpy.duration``: actors' Duration."""
+"""``rclpy.duration``: actors' Duration, and ``Infinite``."""
 
 from __future__ import annotations
 
-from actors.clock import Duration
+from actors.clock import Duration, Infinite
 
-__all__ = ["Duration"]
+__all__ = ["Duration", "Infinite"]

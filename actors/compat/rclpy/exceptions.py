@@ -2,7 +2,22 @@
 
 from __future__ import annotations
 
-from actors.errors import InvalidNameError, ParameterError, RosArgsError
+from actors.errors import (
+    InvalidNameError,
+    InvalidNamespaceException,
+    InvalidNodeNameException,
+    InvalidParameterException,
+    InvalidParameterTypeException,
+    InvalidParameterValueException,
+    InvalidServiceNameException,
+    InvalidTopicNameException,
+    ParameterAlreadyDeclaredException,
+    ParameterException,
+    ParameterImmutableException,
+    ParameterNotDeclaredException,
+    ParameterUninitializedException,
+    RosArgsError,
+)
 
 __all__ = [
     "InvalidHandle",
@@ -13,17 +28,19 @@ __all__ = [
     "InvalidNamespaceException",
     "InvalidTopicNameException",
     "InvalidServiceNameException",
-    "ParameterException",
     "InvalidROSArgsException",
+    "ParameterException",
+    "ParameterNotDeclaredException",
+    "ParameterAlreadyDeclaredException",
+    "InvalidParameterException",
+    "InvalidParameterTypeException",
+    "InvalidParameterValueException",
+    "ParameterImmutableException",
+    "ParameterUninitializedException",
     "TimerCancelledError",
 ]
 
 NameValidationException = InvalidNameError
-InvalidNodeNameException = InvalidNameError
-InvalidNamespaceException = InvalidNameError
-InvalidTopicNameException = InvalidNameError
-InvalidServiceNameException = InvalidNameError
-ParameterException = ParameterError
 InvalidROSArgsException = RosArgsError
 
 

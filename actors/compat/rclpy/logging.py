@@ -1,7 +1,26 @@
-"""``rclpy.logging``: actors' logging levels and node loggers."""
+"""``rclpy.logging``: loggers outside nodes, severities and levels, as actors' logging has them."""
 
 from __future__ import annotations
 
-from actors.log import DEBUG, ERROR, FATAL, INFO, WARN, NodeLogger
+from actors.log import (
+    LoggingSeverity,
+    NodeLogger,
+    get_logger,
+    get_logger_effective_level,
+    get_logger_level,
+    get_logging_severity_from_string,
+    set_logger_level,
+)
 
-__all__ = ["DEBUG", "INFO", "WARN", "ERROR", "FATAL", "NodeLogger"]
+__all__ = [
+    "LoggingSeverity",
+    "NodeLogger",
+    "RcutilsLogger",
+    "get_logger",
+    "get_logger_effective_level",
+    "get_logger_level",
+    "get_logging_severity_from_string",
+    "set_logger_level",
+]
+
+RcutilsLogger = NodeLogger

@@ -286,12 +286,11 @@ class Node(NativeNode):
         raw: bool = False,
         **options: Any,
     ) -> Subscription:
-        """Call ``callback(msg)`` (or ``callback(msg, info)``) for each message, while spun."""
-        if raw:
-            raise NotImplementedError(
-                "raw=True subscriptions are not supported: messages travel as Python objects here"
-            )
-        subscription = Subscription(self, msg_type, callback, None)
+        """Call ``callback(msg)`` (or ``callback(msg, info)``) for each message, while spun.
+
+        With ``raw=True`` the callback gets the message's CDR bytes, as ROS serializes it.
+        """
+        subscription = Subscription(self, msg_type, callback, None, raw)
         subscription.callback_group = self._group(callback_group, subscription)
         self._create(subscription, NativeNode.create_subscription, msg_type, topic, subscription._catch,
                      qos_profile, **options)

@@ -14,12 +14,13 @@ from collections import deque
 from collections.abc import Callable
 from typing import Any, TypedDict
 
+from actors import cdr
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
 from actors.compat.rclpy.task import await_or_execute
 from actors.topics import HistoryPolicy
 
 
-__all__ = ["Subscription", "MessageInfo"]
+__all__ = ["Subscription", "MessageInfo", "serialized"]
 
 
 class MessageInfo(TypedDict):
@@ -44,13 +45,15 @@ def _wants_info(callback: Callable[..., Any]) -> bool:
 class Subscription(WorkSource, NativeProxy):
     """Receives one topic (``Node.create_subscription``); other attributes are the native one's."""
 
-    def __init__(self, node: ScriptNode, msg_type: type, callback: Callable[..., Any], callback_group: Any) -> None:
+    def __init__(
+        self, node: ScriptNode, msg_type: type, callback: Callable[..., Any], callback_group: Any, raw: bool = False
+    ) -> None:
         self._node = node
         self._session = node._rclpy.session
         self.msg_type = msg_type
         self.callback = callback
         self.callback_group = callback_group
-        self.raw = False
+        self.raw = raw
         self._native: Any = None
         self._queue: deque[tuple[Any, int]] = deque()
         self._limit = sys.maxsize
@@ -80,6 +83,8 @@ class Subscription(WorkSource, NativeProxy):
             return None
         msg, stamp = self._queue.popleft()
         self._received += 1
+        if self.raw:
+            msg = serialized(msg)
         args: tuple[Any, ...] = (msg,)
         if self._with_info:
             info: MessageInfo = {
@@ -110,3 +115,9 @@ class Subscription(WorkSource, NativeProxy):
         """Stop receiving."""
         self._node.destroy_subscription(self)
 
+
+
+def serialized(msg: Any) -> bytes:
+    """``msg`` as a ``raw=True`` subscription receives it from rmw_fastrtps: CDR, padded to 4 bytes."""
+    data = cdr.encode(msg)
+    return data + bytes(-len(data) % 4)

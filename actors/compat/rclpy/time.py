@@ -1,7 +1,7 @@
-"""``rclpy.time``: actors' Time."""
+"""``rclpy.time``: actors' Time (and the ClockType it carries)."""
 
 from __future__ import annotations
 
-from actors.clock import Time
+from actors.clock import ClockType, Time
 
-__all__ = ["Time"]
+__all__ = ["Time", "ClockType"]

@@ -1,0 +1,7 @@
+"""``rclpy.clock_type``: which clock a Time comes from."""
+
+from __future__ import annotations
+
+from actors.clock import ClockType
+
+__all__ = ["ClockType"]
