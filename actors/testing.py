@@ -14,6 +14,11 @@ share one virtual clock.  The mark works on a test, a class or a module
 (``pytestmark = pytest.mark.virtual_time``).  Unmarked tests are left to
 pytest-asyncio as they are: nothing is marked for them, and their loop is the
 ordinary one.
+
+It also holds the grading helpers for rclpy exercises: :func:`run_script` runs
+a student's unmodified rclpy program (:func:`run_node`, one node class of it)
+beside a graph on the virtual clock, and lets the test wait, read topics,
+publish and call services (:mod:`actors.compat.grading`).
 """
 
 from __future__ import annotations
@@ -21,13 +26,19 @@ from __future__ import annotations
 import asyncio
 import inspect
 from collections.abc import Callable, Generator, Mapping
-from typing import Any
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import pytest
 
 from actors.clock import VirtualTimeLoop
 
+if TYPE_CHECKING:
+    from actors.compat.grading import ScriptRun
+
 __all__ = [
+    "run_script",
+    "run_node",
     "pytest_configure",
     "pytest_pycollect_makeitem",
     "pytest_runtest_setup",
@@ -103,3 +114,20 @@ def pytest_asyncio_loop_factories(
 ) -> Mapping[str, Callable[[], Any]]:
     """An ordinary asyncio loop (from the current event loop policy) for every other async test."""
     return {"asyncio": asyncio.new_event_loop}
+
+
+def run_script(script: str | Path, *args: str, graph: str | Path | None = None, clock: str = "virtual") -> ScriptRun:
+    """Run a student's rclpy program, unmodified, beside ``graph``: ``with run_script(...) as run:``.
+
+    See :class:`actors.compat.grading.ScriptRun` for what the test can do with ``run``.
+    """
+    from actors.compat.grading import run_script as run
+
+    return run(script, *args, graph=graph, clock=clock)
+
+
+def run_node(node: str | type, *args: str, graph: str | Path | None = None, clock: str = "virtual") -> ScriptRun:
+    """Spin one node of a student's rclpy node class (``"file.py:Class"``) beside ``graph``."""
+    from actors.compat.grading import run_node as run
+
+    return run(node, *args, graph=graph, clock=clock)

@@ -35,7 +35,7 @@ from interfaces.std_msgs.msg import Int64, String
 
 @pytest.fixture
 def session():
-    with Session(clock="virtual") as session, use_session(session):
+    with Session(clock="virtual") as session, use_session(session), session.timekeeping():
         rclpy.init(args=[])
         try:
             yield session

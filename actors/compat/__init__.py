@@ -61,8 +61,11 @@ wait, ``Rate.sleep``, ``time.sleep`` under the launcher on virtual time).
 handed to an executor until it has run (it may run on a pool thread); whoever
 wakes a waiting thread marks it busy first, and every timeout is a loop timer,
 so all waits are measured on the runtime clock and a wake-up is never lost to
-a jump.  A thread blocked elsewhere (``thread.join()``, a lock) counts as busy
-and holds virtual time still.
+a jump.  A thread a script starts is busy from ``start()`` until it first waits
+on the runtime (``threading.Thread(target=rclpy.spin)`` must not miss a tick);
+one that never does (a pool's idle worker) stops counting after a short
+real-time grace.  A thread blocked elsewhere (``thread.join()``, a lock) counts
+as busy and holds virtual time still.
 
 **What it costs native users: nothing.**  Native nodes, publish, delivery and
 timers run exactly the code they ran before; the hooks the overlay uses are a

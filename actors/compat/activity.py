@@ -23,7 +23,10 @@ whether anyone is busy before it jumps.
 from __future__ import annotations
 
 import threading
+import time
 import weakref
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any
 
 from actors.clock import VirtualTimeLoop
@@ -32,13 +35,19 @@ __all__ = ["Activity", "Token", "Waiter", "ScriptTimeLoop"]
 
 
 class Token:
-    """One party's share of the activity: busy or idle; bound to a thread or not."""
+    """One party's share of the activity: busy or idle; bound to a thread or not.
 
-    __slots__ = ("busy", "thread", "__weakref__")
+    ``until`` (a ``time.monotonic()`` deadline) makes a new thread's token count
+    as busy only for a while, unless the thread waits on the runtime first:
+    see :meth:`Activity.starting`.
+    """
 
-    def __init__(self, thread: threading.Thread | None) -> None:
+    __slots__ = ("busy", "thread", "until", "__weakref__")
+
+    def __init__(self, thread: threading.Thread | None, until: float | None = None) -> None:
         self.busy = True
         self.thread = thread
+        self.until = until
 
 
 class Activity:
@@ -49,6 +58,7 @@ class Activity:
         self._tokens: set[Token] = set()
         self._local = threading.local()
         self._loop: Any = None
+        self._watchers: set[Waiter] = set()
 
     def attach(self, loop: Any) -> None:
         """The loop to wake when someone goes idle (so it may jump)."""
@@ -56,10 +66,45 @@ class Activity:
 
     def busy(self) -> bool:
         """Whether any live thread or pending callback is busy."""
+        now = time.monotonic()
         with self.lock:
-            dead = [t for t in self._tokens if t.thread is not None and not t.thread.is_alive()]
-            self._tokens.difference_update(dead)
+            gone = [
+                t for t in self._tokens
+                if (t.thread is not None and not t.thread.is_alive()) or (t.until is not None and now >= t.until)
+            ]
+            self._tokens.difference_update(gone)
             return any(t.busy for t in self._tokens)
+
+    @contextmanager
+    def starting_workers(self) -> Iterator[None]:
+        """Threads started by this thread inside the block are pool workers: the callbacks they run
+        hold their own tokens, so the threads themselves take no part."""
+        self._local.workers = True
+        try:
+            yield
+        finally:
+            self._local.workers = False
+
+    def starts_workers(self) -> bool:
+        """Whether the calling thread is inside :meth:`starting_workers`."""
+        return bool(getattr(self._local, "workers", False))
+
+    def starting(self, grace: float) -> Token:
+        """A busy token for a thread a script thread is starting (adopted by it with :meth:`adopt`).
+
+        A thread may start and then wait on the runtime at once (``rclpy.spin`` on
+        a thread of its own): it must hold virtual time still until it waits.
+        But it may also never wait on the runtime (a pool's idle worker), so its
+        token lapses after ``grace`` real seconds unless it waits first.
+        """
+        token = Token(None, time.monotonic() + grace)
+        with self.lock:
+            self._tokens.add(token)
+        lapse = threading.Timer(grace, self.poke)  # let the loop look again when it lapses
+        lapse.daemon = True
+        lapse._actors_token = False  # type: ignore[attr-defined]  # not a script thread: no token
+        lapse.start()
+        return token
 
     def current(self) -> Token:
         """The token of the calling thread (made, busy, on first use)."""
@@ -86,6 +131,7 @@ class Activity:
         """``token``'s work is over."""
         with self.lock:
             self._tokens.discard(token)
+            token.busy = False
         self.poke()
 
     def running(self, token: Token) -> _Running:
@@ -113,8 +159,23 @@ class Activity:
         """End ``token`` if ``owner`` is garbage collected before its work ran."""
         weakref.finalize(owner, self.done, token)
 
+    def watch(self, waiter: Waiter) -> None:
+        """Wake ``waiter`` whenever a token goes idle (until :meth:`unwatch`)."""
+        with self.lock:
+            self._watchers.add(waiter)
+
+    def unwatch(self, waiter: Waiter) -> None:
+        """Stop waking ``waiter``."""
+        with self.lock:
+            self._watchers.discard(waiter)
+
     def poke(self) -> None:
-        """Someone went idle: wake the loop, which may wait in real time while anyone is busy."""
+        """Someone went idle: wake the watchers, and the loop, which may wait in real time while
+        anyone is busy."""
+        with self.lock:
+            watchers = list(self._watchers)
+        for waiter in watchers:
+            waiter.wake()
         loop = self._loop
         if isinstance(loop, VirtualTimeLoop) and not loop.is_closed():
             try:
@@ -177,7 +238,11 @@ class Waiter:
 
     def wait(self) -> None:
         """Block until :meth:`wake` (at once if it came already); KeyboardInterrupt gets through."""
-        with self._activity.lock:
+        activity = self._activity
+        with activity.lock:
+            if self._token.until is not None:  # a new thread that waits on the runtime: tracked for good
+                self._token.until = None
+                activity._tokens.add(self._token)
             if self._event.is_set():
                 return
             self._token.busy = False

@@ -99,6 +99,7 @@ class WorkSource:
     """
 
     callback_group: Any = None
+    catcher: Callable[..., Any] | None = None  # the callback the native entity calls, if any
     _executor_event = False  # handed to an executor and not taken yet (rclpy's flag)
 
     def _ready(self) -> bool:
@@ -185,6 +186,11 @@ class Dispatcher:
             actor, entity = due.popleft()
             actor._drive(entity)
 
+    def publish(self, publisher: Any, msg: Any) -> None:
+        """``publisher.publish(msg)`` for a script (on the loop thread): its subscribers have it after."""
+        publisher.publish(msg)
+        self.flush()
+
 
 class ScriptActor(Actor):
     """A script node's actor: it runs the overlay's catchers and hands everything else to executors."""
@@ -205,18 +211,24 @@ class ScriptActor(Actor):
         self._on_error = on_error
         self._tasks: set[asyncio.Task[None]] = set()
 
-    def drive(self, entity: Any) -> None:
-        """Run ``entity`` as soon as it is scheduled: its callbacks are the overlay's catchers."""
-        self._driven.add(entity)
+    def drive(self, catcher: Callable[..., Any]) -> None:
+        """Run at once the entities whose callback is ``catcher`` (one of the overlay's).
 
-    def forget(self, entity: Any) -> None:
-        """``entity`` was destroyed."""
-        self._driven.discard(entity)
+        Called before the native entity exists: it may be scheduled while it is
+        created (a parked service call, a latched message).
+        """
+        self._driven.add(catcher)
+
+    def forget(self, catcher: Callable[..., Any]) -> None:
+        """The entity of ``catcher`` was destroyed."""
+        self._driven.discard(catcher)
 
     def schedule(self, entity: Entity) -> None:
         if not self._running:
             return
-        if entity in self._driven:
+        # A subscription's or timer's callback, a service's handler.
+        callback = getattr(entity, "callback", None) or getattr(entity, "handler", None)
+        if callback is not None and callback in self._driven:
             self._dispatcher.add(self, entity)
         else:
             self._gated(entity)

@@ -25,7 +25,6 @@ import runpy
 import signal
 import sys
 import threading
-import time
 import traceback
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
@@ -44,7 +43,7 @@ from actors.graph import load_graph
 from actors.log import INFO, LEVELS, configure_console
 from actors.rosargs import parse
 
-__all__ = ["run_script", "virtual_sleep"]
+__all__ = ["run_script"]
 
 
 def run_script(
@@ -97,7 +96,7 @@ def run_script(
         print(f"[FATAL] {graph}: {_one_line(exc)}", file=sys.stderr)
         return 1
     try:
-        with use_session(session), overlaid(), stop.handling_signals(), _sleeping_on(session):
+        with use_session(session), overlaid(), stop.handling_signals(), session.timekeeping():
             code = _run(path, argv, stop)
     finally:
         get_default_context().finish()
@@ -191,31 +190,3 @@ def _one_line(exc: BaseException) -> str:
     if isinstance(exc, ActorsError):
         return str(exc)
     return f"{type(exc).__name__}: {exc}"
-
-
-@contextmanager
-def _sleeping_on(session: Session) -> Iterator[None]:
-    """On the virtual clock, ``time.sleep`` in script threads sleeps on the runtime clock."""
-    if not session.virtual:
-        yield
-        return
-    real = time.sleep
-    time.sleep = virtual_sleep(session, real)
-    try:
-        yield
-    finally:
-        time.sleep = real
-
-
-def virtual_sleep(session: Session, real: Any) -> Any:
-    """A ``time.sleep`` that waits ``seconds`` of the session's clock in the script's threads."""
-
-    def sleep(seconds: float) -> None:
-        if seconds < 0:
-            raise ValueError("sleep length must be non-negative")
-        if session.running and not session.in_loop_thread() and session.activity.has_token():
-            session.sleep(seconds)
-        else:
-            real(seconds)
-
-    return sleep

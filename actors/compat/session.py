@@ -19,9 +19,10 @@ from __future__ import annotations
 import asyncio
 import functools
 import threading
-from collections.abc import Awaitable, Callable, Sequence
+import time
+from collections.abc import Awaitable, Callable, Iterator, Sequence
 from concurrent.futures import Future
-from contextlib import ExitStack
+from contextlib import ExitStack, contextmanager
 from typing import Any, TypeVar
 
 import anyio
@@ -37,9 +38,12 @@ from actors.node import Node
 from actors.run import spawn_graph
 from actors.runtime import Attachment, Runtime
 
-__all__ = ["Session"]
+__all__ = ["Session", "THREAD_GRACE"]
 
 T = TypeVar("T")
+
+# Real seconds a thread started by a script counts as busy before it first waits on the runtime.
+THREAD_GRACE = 0.25
 
 
 class Session:
@@ -211,6 +215,65 @@ class Session:
     def sleep(self, seconds: float) -> None:
         """Wait ``seconds`` of runtime clock (virtual under virtual time), waiting, not busy."""
         self.wait_until(lambda: False, seconds)
+
+    @contextmanager
+    def timekeeping(self) -> Iterator[None]:
+        """Inside the block, on the virtual clock, script threads keep virtual time honest.
+
+        ``time.sleep`` in a script thread sleeps runtime time (threads that never
+        waited on the runtime, and the loop's, sleep in real time), and a thread
+        that a script thread starts counts as busy until it first waits on the
+        runtime (or :data:`THREAD_GRACE` real seconds, if it never does).
+        """
+        if not self.virtual:
+            yield
+            return
+        real_sleep, real_start = time.sleep, threading.Thread.start
+        activity = self.activity
+
+        def sleep(seconds: float) -> None:
+            if seconds < 0:
+                raise ValueError("sleep length must be non-negative")
+            if self.running and not self.in_loop_thread() and activity.has_token():
+                self.sleep(seconds)
+            else:
+                real_sleep(seconds)
+
+        def start(thread: threading.Thread) -> None:
+            if (
+                self.running
+                and activity.has_token()
+                and not activity.starts_workers()
+                and getattr(thread, "_actors_token", None) is None
+            ):
+                token, run = activity.starting(THREAD_GRACE), thread.run
+
+                def adopting_run() -> None:
+                    activity.adopt(token)
+                    run()
+
+                thread.run = adopting_run  # type: ignore[method-assign]
+            real_start(thread)
+
+        time.sleep, threading.Thread.start = sleep, start  # type: ignore[method-assign]
+        try:
+            yield
+        finally:
+            time.sleep, threading.Thread.start = real_sleep, real_start  # type: ignore[method-assign]
+
+    def start_thread(self, target: Callable[[], Any], name: str) -> tuple[threading.Thread, Any]:
+        """Start a daemon thread running ``target()``, busy from now until it first waits; its token."""
+        activity = self.activity
+        token = activity.work()
+
+        def run() -> None:
+            activity.adopt(token)
+            target()
+
+        thread = threading.Thread(target=run, name=name, daemon=True)
+        thread._actors_token = token  # type: ignore[attr-defined]
+        thread.start()
+        return thread, token
 
     def wait_until(self, done: Callable[[], Any], timeout: float | None, waiter: Waiter | None = None) -> Any:
         """Wait until ``done()`` (checked with :attr:`lock` held) returns something true; return it.

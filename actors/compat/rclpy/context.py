@@ -56,6 +56,7 @@ class Context:
         self._nodes: list[weakref.ReferenceType[_Node]] = []
         self._initialized = False
         self._ok = False
+        self._interrupted = False
         self._own_session = False
         self.session: Session | None = None
         self.ros_args = RosArgs()
@@ -88,7 +89,7 @@ class Context:
             self.session = session
             self._domain_id = domain_id or 0
             self._initialized = True
-            self._ok = True
+            self._ok = not self._interrupted  # interrupted before init: it starts shut down
 
     def ok(self) -> bool:
         """Whether it is initialized and not shut down."""
@@ -133,6 +134,7 @@ class Context:
         wakes (spins raise ExternalShutdownException), but nothing is destroyed or called back yet."""
         with self._lock:
             self._ok = False
+            self._interrupted = True
             wakers = list(self._wakers)
         for waker in wakers:
             waker.wake()

@@ -381,9 +381,11 @@ class MultiThreadedExecutor(Executor):
         except (ExternalShutdownException, ShutdownException, TimeoutException, ConditionReachedException):
             pass
         else:
-            with self._session.lock:
+            session = self._session
+            with session.lock:
                 self._in_pool += 1
-            self._executor.submit(self._run, handler)
+            with session.activity.starting_workers():
+                self._executor.submit(self._run, handler)
             self._futures.append(handler)
         for future in self._futures[:]:
             if future.done():

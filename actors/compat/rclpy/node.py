@@ -292,7 +292,7 @@ class Node(NativeNode):
         """
         subscription = Subscription(self, msg_type, callback, None, raw)
         subscription.callback_group = self._group(callback_group, subscription)
-        self._create(subscription, NativeNode.create_subscription, msg_type, topic, subscription._catch,
+        self._create(subscription, NativeNode.create_subscription, msg_type, topic, subscription.catcher,
                      qos_profile, **options)
         self._rclpy.subscriptions.append(subscription)
         self._wake_executor()
@@ -311,7 +311,7 @@ class Node(NativeNode):
         timer.callback_group = self._group(callback_group, timer)
         if clock is not None:
             options["clock"] = clock
-        self._create(timer, NativeNode.create_timer, timer_period_sec, timer._catcher(), **options)
+        self._create(timer, NativeNode.create_timer, timer_period_sec, timer.catcher, **options)
         self._rclpy.timers.append(timer)
         self._wake_executor()
         return timer
@@ -328,7 +328,7 @@ class Node(NativeNode):
         """Answer ``srv_name`` with ``callback(request, response)``, while spun."""
         service = Service(self, srv_type, callback, None)
         service.callback_group = self._group(callback_group, service)
-        self._create(service, NativeNode.create_service, srv_type, srv_name, service._catch)
+        self._create(service, NativeNode.create_service, srv_type, srv_name, service.catcher)
         self._rclpy.services.append(service)
         self._wake_executor()
         return service
@@ -376,12 +376,11 @@ class Node(NativeNode):
         with self._rclpy.lock:
             _discard(self._rclpy.waitables, waitable)
 
-    def _create(self, source: Any, create: Callable[..., Any], *args: Any, **options: Any) -> None:
-        # On the runtime's thread: the native entity, attached and driven before it can fire.
+    def _create(self, source: WorkSource, create: Callable[..., Any], *args: Any, **options: Any) -> None:
+        # On the runtime's thread: the native entity, its catcher driven before it can fire.
         def build() -> None:
-            native = create(self, *args, **options)
-            source._attach(native)
-            self._rclpy.actor.drive(native)
+            self._rclpy.actor.drive(source.catcher)  # type: ignore[arg-type]
+            source._attach(create(self, *args, **options))
 
         self._rclpy.session.call(build)
 
@@ -397,7 +396,8 @@ class Node(NativeNode):
         if destroy is not None and native is not None and not self._rclpy.destroyed:
             def drop() -> None:
                 destroy(self, native)
-                self._rclpy.actor.forget(native)
+                if entity.catcher is not None:
+                    self._rclpy.actor.forget(entity.catcher)
 
             self._rclpy.session.call(drop)
         return True

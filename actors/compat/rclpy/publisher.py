@@ -24,7 +24,7 @@ class Publisher(NativeProxy):
         Returns once every subscription in the runtime has it, so the script may
         reuse or change ``msg`` afterwards.
         """
-        self._session.call(_publish, self._native, msg, self._session.dispatcher)
+        self._session.call(self._session.dispatcher.publish, self._native, msg)
 
     @property
     def topic_name(self) -> str:
@@ -56,7 +56,3 @@ class Publisher(NativeProxy):
         """Stop publishing."""
         self._node.destroy_publisher(self)
 
-
-def _publish(native: Any, msg: Any, dispatcher: Any) -> None:
-    native.publish(msg)
-    dispatcher.flush()  # the script subscribers' queues have it now

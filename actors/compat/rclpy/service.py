@@ -30,6 +30,7 @@ class Service(WorkSource, NativeProxy):
         self.callback_group = callback_group
         self._native: Any = None
         self._requests: deque[tuple[Any, Any, asyncio.Future[Any]]] = deque()
+        self.catcher = self._catch
 
     async def _catch(self, request: Any, response: Any) -> Any:
         # On the runtime's thread: the native service's handler.

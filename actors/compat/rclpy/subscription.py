@@ -60,6 +60,7 @@ class Subscription(WorkSource, NativeProxy):
         self._received = 0
         self._with_info = _wants_info(callback)
         self._notify = node._rclpy.notify
+        self.catcher = self._catch
 
     def _attach(self, native: Any) -> None:
         self._native = native

@@ -31,8 +31,9 @@ class Timer(WorkSource, NativeProxy):
         self.callback_group = callback_group
         self._native: Any = None
         self._fired: tuple[Any, ...] | None = None
+        self.catcher = self._make_catcher()
 
-    def _catcher(self) -> Callable[..., None]:
+    def _make_catcher(self) -> Callable[..., None]:
         def catch(*args: Any) -> None:
             with self._session.lock:
                 self._fired = args

@@ -25,7 +25,7 @@ def wait_for_message(
     waiter = Waiter(session.activity)
     subscription = Subscription(node, msg_type, lambda _msg: None, None)
     subscription._notify = waiter.wake
-    node._create(subscription, NativeNode.create_subscription, msg_type, topic, subscription._catch, qos_profile)
+    node._create(subscription, NativeNode.create_subscription, msg_type, topic, subscription.catcher, qos_profile)
     context.add_waker(waiter)
 
     def arrived() -> Any:
