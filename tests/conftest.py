@@ -55,3 +55,18 @@ def generated_package(root: Path, package: str, messages: dict[str, str]) -> Non
         (folder / f"{name}.msg").write_text(text)
     idl_gen.generate([root])
     codec.register_root(root)
+
+
+@pytest.fixture
+def rclpy_session():
+    """A virtual-clock Session with rclpy initialized on it: the test's thread is the script."""
+    import actors.compat.rclpy as rclpy
+    from actors.compat import Session, use_session
+
+    with Session(clock="virtual") as session, use_session(session), session.timekeeping():
+        rclpy.init(args=[])
+        try:
+            yield session
+        finally:
+            rclpy.get_default_context().finish()
+            rclpy.try_shutdown()

@@ -13,7 +13,7 @@ from typing import Any
 import pytest
 
 import actors.compat.rclpy as rclpy
-from actors.compat import Session, use_session
+from actors.compat import Session
 from actors.compat.rclpy.callback_groups import (
     CallbackGroup,
     MutuallyExclusiveCallbackGroup,
@@ -34,15 +34,8 @@ from interfaces.std_msgs.msg import Int64, String
 
 
 @pytest.fixture
-def session():
-    with Session(clock="virtual") as session, use_session(session), session.timekeeping():
-        rclpy.init(args=[])
-        try:
-            yield session
-        finally:
-            rclpy.get_default_context().finish()
-            rclpy.try_shutdown()
-
+def session(rclpy_session):
+    return rclpy_session
 
 def now(session: Session) -> float:
     return session.loop.time()

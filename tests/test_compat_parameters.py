@@ -7,7 +7,6 @@ from typing import Any
 import pytest
 
 import actors.compat.rclpy as rclpy
-from actors.compat import Session, use_session
 from actors.compat.rclpy.parameter import (
     Parameter,
     get_parameter_value,
@@ -28,15 +27,8 @@ other:
 
 
 @pytest.fixture
-def session():
-    with Session(clock="virtual") as session, use_session(session):
-        rclpy.init(args=[])
-        try:
-            yield session
-        finally:
-            rclpy.get_default_context().finish()
-            rclpy.try_shutdown()
-
+def session(rclpy_session):
+    return rclpy_session
 
 class Blackboard(NativeNode):
     def __init__(self) -> None:
