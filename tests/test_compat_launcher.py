@@ -64,9 +64,12 @@ def test_a_service_answers_a_graph_client():
 
 
 def test_the_wall_clock_works_too():
-    done = actors_run("--duration", "0.6", script("talker.py"))
+    done = actors_run("--duration", "1.0", script("talker.py"))
     assert done.returncode == 0, done.stderr
-    assert [line.split("]: ")[1] for line in done.stderr.splitlines()] == ["sent count 0", "sent count 1"]
+    sent = [line.split("]: ")[1] for line in done.stderr.splitlines()]
+    # How many ticks fit depends on the machine's load: the timing itself is tested on virtual time.
+    assert sent and sent == [f"sent count {i}" for i in range(len(sent))]
+    assert float(done.stderr.split("] [")[1]) > 1e9  # wall-clock stamps: seconds since 1970
 
 
 def test_script_arguments_exit_code_and_ros_arguments():
