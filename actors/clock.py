@@ -27,6 +27,7 @@ import asyncio
 import math
 import selectors
 import time
+from collections.abc import Callable
 from enum import IntEnum
 from typing import Any
 
@@ -42,6 +43,8 @@ __all__ = [
     "Rate",
     "VirtualTimeLoop",
     "precise_loop",
+    "uvloop_loop",
+    "WALL_LOOPS",
 ]
 
 _NS = 1_000_000_000
@@ -444,6 +447,33 @@ def precise_loop() -> asyncio.AbstractEventLoop:
     clients.  ``python -m actors.run`` uses this loop on the wall clock.
     """
     return asyncio.SelectorEventLoop(selectors.SelectSelector())
+
+
+def uvloop_loop() -> asyncio.AbstractEventLoop:
+    """A uvloop event loop (the ``fast`` extra: ``pip install 'actors[fast]'``), for the wall clock only.
+
+    Faster per wake-up than asyncio's loops (BENCHMARKS.md shows both), but
+    its clock counts whole milliseconds: ``loop.time()`` is libuv's time,
+    read once per loop iteration, so a timer's deadlines start from a
+    millisecond-rounded time and fire up to a millisecond late, and stamps
+    taken within one iteration are equal.  Fine for 10-100 Hz control loops;
+    use :func:`precise_loop` for kHz timers.  Virtual time stays on
+    :class:`VirtualTimeLoop`.  Raises ImportError with the install hint when
+    uvloop is missing.
+    """
+    try:
+        import uvloop
+    except ImportError:
+        raise ImportError("uvloop is not installed: pip install 'actors[fast]'") from None
+    return uvloop.new_event_loop()
+
+
+#: The wall-clock loops ``python -m actors.run --loop NAME`` offers, by name.
+WALL_LOOPS: dict[str, Callable[[], asyncio.AbstractEventLoop]] = {
+    "select": precise_loop,
+    "asyncio": asyncio.new_event_loop,
+    "uvloop": uvloop_loop,
+}
 
 
 class _JumpingSelector(selectors.DefaultSelector):

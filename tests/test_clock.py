@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import asyncio
+import sys
 import threading
 import time
 
@@ -291,3 +292,37 @@ async def test_a_nodes_rate_and_destroying_it():
             node.create_rate(0)
         with pytest.raises(ValueError):
             node.create_rate(1.0, clock=Clock())
+
+
+def test_uvloop_loop_without_uvloop_names_the_extra(monkeypatch):
+    from actors.clock import uvloop_loop
+
+    monkeypatch.setitem(sys.modules, "uvloop", None)  # as if not installed
+    with pytest.raises(ImportError, match=r"uvloop is not installed: pip install 'actors\[fast\]'"):
+        uvloop_loop()
+
+
+def test_a_runtime_runs_on_uvloop():
+    uvloop = pytest.importorskip("uvloop")
+    from actors.clock import uvloop_loop
+
+    class Ticker(Node):
+        def __init__(self) -> None:
+            super().__init__("ticker")
+            self.third = anyio.Event()
+            self.ticks = 0
+            self.create_timer(0.005, self.tick)
+
+        def tick(self) -> None:
+            self.ticks += 1
+            if self.ticks == 3:
+                self.third.set()
+
+    async def main() -> None:
+        async with Runtime() as rt:
+            assert isinstance(asyncio.get_running_loop(), uvloop.Loop)
+            node = rt.spawn(Ticker)
+            with anyio.fail_after(5):
+                await node.third.wait()
+
+    anyio.run(main, backend_options={"loop_factory": uvloop_loop})

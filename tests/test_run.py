@@ -178,10 +178,10 @@ def test_virtual_time_without_a_duration_is_refused_with_a_hint(run_module, tmp_
 
 
 @contextlib.contextmanager
-def running_demo() -> Iterator[subprocess.Popen[str]]:
-    """``python -m actors.run graph.toml`` on the wall clock, once the talker has published."""
+def running_demo(*options: str) -> Iterator[subprocess.Popen[str]]:
+    """``python -m actors.run graph.toml [OPTIONS]`` on the wall clock, once the talker has published."""
     proc = subprocess.Popen(
-        [sys.executable, "-m", "actors.run", "graph.toml"],
+        [sys.executable, "-m", "actors.run", "graph.toml", *options],
         cwd=ROOT,
         env=python_env(),
         stdout=subprocess.PIPE,
@@ -207,6 +207,30 @@ def test_a_signal_on_the_wall_clock_stops_gracefully_without_traceback(signum):
         out, err = proc.communicate(timeout=5)
     assert proc.returncode == 0, err
     assert "Traceback" not in out + err
+
+
+@pytest.mark.parametrize("loop", ["uvloop", "asyncio"])
+def test_the_demo_runs_on_the_loop_asked_for_and_stops_gracefully(loop):
+    pytest.importorskip(loop)
+    with running_demo("--loop", loop) as proc:
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=5)
+    assert proc.returncode == 0, err
+    assert "I heard" in out and "Traceback" not in out + err
+
+
+def test_a_loop_on_virtual_time_is_refused(run_module):
+    result = run_module("actors.run", "graph.toml", "--clock", "virtual", "--duration", "1", "--loop", "uvloop")
+    assert (result.returncode, result.stdout) == (2, "")
+    assert result.stderr == "error: --loop uvloop is for the wall clock; virtual time runs on its own loop\n"
+
+
+def test_uvloop_missing_is_exit_2_with_the_install_hint(monkeypatch, capsys):
+    from actors import run
+
+    monkeypatch.setattr(run.importlib.util, "find_spec", lambda name: None)
+    assert run.main(["graph.toml", "--loop", "uvloop"]) == 2
+    assert capsys.readouterr().err == "error: --loop uvloop: uvloop is not installed: pip install 'actors[fast]'\n"
 
 
 def test_the_services_graph_waits_for_its_servers_then_succeeds(run_module):

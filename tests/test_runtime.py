@@ -139,3 +139,19 @@ async def test_a_node_built_under_spawning_runs_on_the_actor_it_is_given():
         with pytest.raises(RuntimeError, match="must be started by a runtime"):
             Collector()  # outside the block again
         node.destroy_node()
+
+
+def test_frozen_startup_pauses_collection_then_freezes_what_was_built():
+    import gc
+
+    from actors.runtime import frozen_startup
+
+    assert gc.isenabled()
+    frozen = gc.get_freeze_count()
+    try:
+        with frozen_startup():
+            assert not gc.isenabled()
+            built = [[i] for i in range(100)]
+        assert gc.isenabled() and gc.get_freeze_count() >= frozen + len(built)
+    finally:
+        gc.unfreeze()
