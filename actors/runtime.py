@@ -91,8 +91,8 @@ class Runtime:
         self.loop: asyncio.AbstractEventLoop = asyncio.get_running_loop()
         console_unless_configured()  # INFO on stderr as rclpy prints it, unless the app chose
         self.clock = ROSClock(self.loop)
-        self.deadlines = Deadlines(self.loop)
         self.scheduler = Scheduler(self.loop)
+        self.deadlines = Deadlines(self.loop, self.scheduler)
         self._rosout = self._runtime_publisher("/rosout", "Log")
         self.parameter_events = self._runtime_publisher("/parameter_events", "ParameterEvent")
         self.logger = self.make_logger("actors")

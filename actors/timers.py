@@ -12,7 +12,9 @@ log2(n) of them per push and per pop), which made the loop's heap a third of
 a tick's cost with 10,000 timers; tuples compare in C.  Timers whose deadlines
 have come when the loop timer fires all fire from it, so timers that share a
 deadline (every node started in the same instant, under virtual time) cost one
-loop timer between them.  Timers due together fire in the order they were armed.
+loop timer between them.  Timers due together fire in the order they were armed,
+and their nodes' rounds run right away, in the same loop iteration
+(:meth:`Scheduler.run_now`), not one iteration later.
 
 As in rclpy, a callback with a parameter annotated ``TimerInfo`` is called with
 the tick's expected and actual times; ``autostart=False`` makes a timer that
@@ -31,7 +33,7 @@ from heapq import heapify, heappop, heappush
 from inspect import isawaitable
 from typing import Any
 
-from actors.actor import CallbackFailed, Owner
+from actors.actor import CallbackFailed, Owner, Scheduler
 from actors.clock import Clock, ClockType, Time
 
 __all__ = ["Timer", "TimerInfo", "Deadlines"]
@@ -92,10 +94,11 @@ class Deadlines:
     time never jumps to a deadline nobody waits for.
     """
 
-    __slots__ = ("_loop", "_heap", "_handle", "_armed", "_order", "_stale")
+    __slots__ = ("_loop", "_scheduler", "_heap", "_handle", "_armed", "_order", "_stale")
 
-    def __init__(self, loop: asyncio.AbstractEventLoop) -> None:
+    def __init__(self, loop: asyncio.AbstractEventLoop, scheduler: Scheduler | None = None) -> None:
         self._loop = loop
+        self._scheduler = scheduler
         self._heap: list[tuple[float, int, Timer]] = []
         self._handle: asyncio.TimerHandle | None = None
         self._armed = float("inf")  # the deadline the loop timer is set for
@@ -160,6 +163,8 @@ class Deadlines:
         self._prune()
         if heap:
             self._arm(heap[0][0])
+        if self._scheduler is not None:
+            self._scheduler.run_now()
 
 
 class Timer:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import asyncio
 import json
 import os
 import statistics
@@ -16,7 +17,42 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, TypeVar
 
-__all__ = ["ROOT", "Result", "repeat", "fmt", "table", "standalone", "child_env", "run_child", "time_to_line"]
+__all__ = [
+    "ROOT",
+    "Result",
+    "repeat",
+    "fmt",
+    "table",
+    "standalone",
+    "child_env",
+    "run_child",
+    "time_to_line",
+    "uvloop_factory",
+    "UVLOOP_HINT",
+    "Loop",
+    "run_on",
+]
+
+Loop = Callable[[], Any]  # an event loop factory
+
+UVLOOP_HINT = "uvloop: not installed — pip install -e '.[fast]'"
+
+
+def uvloop_factory() -> Callable[[], Any] | None:
+    """actors' uvloop loop factory when uvloop is installed (the ``fast`` extra), else None."""
+    try:
+        import uvloop  # noqa: F401
+    except ImportError:
+        return None
+    from actors.clock import uvloop_loop
+
+    return uvloop_loop
+
+
+def run_on(main: Callable[[], Any], loop: Loop | None) -> Any:
+    """Run the coroutine function ``main`` on a new event loop from ``loop`` (asyncio's if None)."""
+    with asyncio.Runner(loop_factory=loop) as runner:
+        return runner.run(main())
 
 ROOT = Path(__file__).resolve().parent.parent
 T = TypeVar("T")

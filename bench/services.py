@@ -12,10 +12,11 @@ from __future__ import annotations
 import asyncio
 import functools
 import time
+from collections.abc import Callable
 
 from actors import Node, Runtime
 from bench import ros
-from bench.harness import Result, repeat, standalone
+from bench.harness import UVLOOP_HINT, Loop, Result, repeat, run_on, standalone, uvloop_factory
 from interfaces.std_srvs.srv import SetBool
 
 CONCURRENT = 100
@@ -28,9 +29,10 @@ def handle(request: SetBool.Request, response: SetBool.Response) -> SetBool.Resp
     return response
 
 
-def actors_call_time(n: int, callers: int, timeout: float | None = None) -> float:
+def actors_call_time(n: int, callers: int, timeout: float | None = None, loop: Loop | None = None) -> float:
     """Microseconds per completed call through actors (server and clients in one runtime),
-    each call with ``timeout`` seconds when given (how the README and careful users call)."""
+    each call with ``timeout`` seconds when given (how the README and careful users call),
+    on the event loop ``loop`` makes (asyncio's by default)."""
 
     class Server(Node):
         def __init__(self) -> None:
@@ -57,14 +59,14 @@ def actors_call_time(n: int, callers: int, timeout: float | None = None) -> floa
             await asyncio.gather(*(one_caller() for _ in range(callers)))
             return (time.perf_counter() - start) / n * 1e6
 
-    return asyncio.run(main())
+    return run_on(main, loop)
 
 
-def future_call_time(n: int, callers: int) -> float:
+def future_call_time(n: int, callers: int, loop: Loop | None = None) -> float:
     """Microseconds per call with a bare asyncio.Queue of (request, future) and one server task."""
 
     async def main() -> float:
-        loop = asyncio.get_running_loop()
+        running = asyncio.get_running_loop()
         queue: asyncio.Queue = asyncio.Queue()
 
         async def server() -> None:
@@ -75,7 +77,7 @@ def future_call_time(n: int, callers: int) -> float:
         async def one_caller() -> None:
             request = SetBool.Request(data=True)
             for _ in range(n // callers):
-                future = loop.create_future()
+                future = running.create_future()
                 queue.put_nowait((request, future))
                 await future
 
@@ -86,7 +88,7 @@ def future_call_time(n: int, callers: int) -> float:
         task.cancel()
         return elapsed / n * 1e6
 
-    return asyncio.run(main())
+    return run_on(main, loop)
 
 
 def floor_call_time(n: int, callers: int) -> float:
@@ -105,13 +107,22 @@ def run(quick: bool = False) -> list[Result]:
     results = []
     for scenario, callers in (("c. service sequential", 1), (f"c. service {CONCURRENT} callers", CONCURRENT)):
         bases = {"future": "future+Queue", "floor": "direct call (floor)", **ros.baselines()}
-        cases = (
+        cases: list[tuple[str, Callable[[int, int], float] | None, dict[str, str]]] = [
             ("actors", actors_call_time, bases),
             (f"actors, timeout={TIMEOUT:g}", functools.partial(actors_call_time, timeout=TIMEOUT), bases),
             ("future+Queue", future_call_time, {}),
             ("direct call (floor)", floor_call_time, {}),
-        )
+        ]
+        uvloop = uvloop_factory()
+        cases += [
+            ("actors, uvloop", uvloop and functools.partial(actors_call_time, loop=uvloop),
+             {"asyncio's loop": "actors", "future": "future+Queue, uvloop"}),
+            ("future+Queue, uvloop", uvloop and functools.partial(future_call_time, loop=uvloop), {}),
+        ]
         for case, fn, baselines in cases:
+            if fn is None:
+                results.append(Result(scenario, case, "µs/call", [], higher_better=False, note=UVLOOP_HINT))
+                continue
             samples = repeat(lambda: fn(n, callers), reps)
             results.append(Result(scenario, case, "µs/call", samples, higher_better=False, baselines=baselines))
         results += ros.measured(scenario, "service", "µs/call", reps, higher_better=False, n=n, callers=callers)

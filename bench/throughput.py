@@ -3,7 +3,8 @@
 Run: ``python -m bench.throughput [--quick]``.  Ratios are "× faster than the
 baseline" (higher is better).  The floor is calling the callback directly, no
 delivery at all.  ``actors_rate`` and ``queue_rate`` also spread the messages
-over several topics, for ``bench.topics_scale``.
+over several topics, for ``bench.topics_scale``, and run on another event
+loop when given one (uvloop, for the ``fast`` extra's rows).
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ import time
 
 from actors import Node, QoSProfile, Runtime
 from bench import ros
-from bench.harness import Result, repeat, standalone
+from bench.harness import UVLOOP_HINT, Loop, Result, repeat, run_on, standalone, uvloop_factory
 from interfaces.std_msgs.msg import String
 
 BATCH = 100  # messages published between yields to the loop
@@ -38,13 +39,24 @@ class Talker(Node):
         super().__init__("talker")
 
 
-def actors_rate(n: int, subscribers: int, topics: int = 1) -> float:
+def _batch(topics: int) -> int:
+    # Messages between yields: 100, or one per topic when there are more topics than that.
+    batch = max(BATCH, topics)
+    if batch % topics:
+        raise ValueError(f"{topics} topics do not divide a batch of {batch}")
+    return batch
+
+
+def actors_rate(n: int, subscribers: int, topics: int = 1, loop: Loop | None = None) -> float:
     """Deliveries per second: ``n`` messages published round-robin over ``topics`` topics,
     each topic with one publisher and ``subscribers`` subscriptions (each in its own node).
 
-    ``n`` is rounded down to whole batches; ``topics`` must divide the batch size.
+    ``n`` is rounded down to whole batches (100 messages, or one per topic when
+    there are more); ``topics`` must divide the batch.  ``loop`` makes the
+    event loop (asyncio's by default).
     """
-    n = n // BATCH * BATCH
+    batch_size = _batch(topics)
+    n = n // batch_size * batch_size
 
     async def main() -> float:
         async with Runtime() as rt:
@@ -56,11 +68,11 @@ def actors_rate(n: int, subscribers: int, topics: int = 1) -> float:
                     listeners.append(node)
             talker = rt.spawn(Talker)
             pubs = [talker.create_publisher(String, f"topic{t}", QoSProfile(depth=DEPTH)) for t in range(topics)]
-            batch = [pubs[i % topics].publish for i in range(BATCH)]
+            batch = [pubs[i % topics].publish for i in range(batch_size)]
             msg = String(data="Hello World")
             await asyncio.sleep(0)
             start = time.perf_counter()
-            for _ in range(n // BATCH):
+            for _ in range(n // batch_size):
                 for publish in batch:
                     publish(msg)
                 await asyncio.sleep(0)
@@ -68,12 +80,13 @@ def actors_rate(n: int, subscribers: int, topics: int = 1) -> float:
                 await asyncio.sleep(0)
             return n * subscribers / (time.perf_counter() - start)
 
-    return asyncio.run(main())
+    return run_on(main, loop)
 
 
-def queue_rate(n: int, subscribers: int, topics: int = 1) -> float:
+def queue_rate(n: int, subscribers: int, topics: int = 1, loop: Loop | None = None) -> float:
     """The same with bare asyncio.Queues: one producer ``await put`` per message per consumer."""
-    n = n // BATCH * BATCH
+    batch_size = _batch(topics)
+    n = n // batch_size * batch_size
 
     async def main() -> float:
         queues = [[asyncio.Queue(maxsize=DEPTH) for _ in range(subscribers)] for _ in range(topics)]
@@ -89,9 +102,9 @@ def queue_rate(n: int, subscribers: int, topics: int = 1) -> float:
 
         msg = String(data="Hello World")
         consumers = [asyncio.ensure_future(consume(q)) for group in queues for q in group]
-        batch = [queues[i % topics] for i in range(BATCH)]
+        batch = [queues[i % topics] for i in range(batch_size)]
         start = time.perf_counter()
-        for _ in range(n // BATCH):
+        for _ in range(n // batch_size):
             for group in batch:
                 for q in group:
                     await q.put(msg)
@@ -99,7 +112,7 @@ def queue_rate(n: int, subscribers: int, topics: int = 1) -> float:
         await asyncio.gather(*consumers)
         return n * subscribers / (time.perf_counter() - start)
 
-    return asyncio.run(main())
+    return run_on(main, loop)
 
 
 def floor_rate(n: int, subscribers: int) -> float:
@@ -135,7 +148,21 @@ def run(quick: bool = False, *, fan_out: tuple[int, ...] = (1, 10)) -> list[Resu
             Result(scenario, "direct call (floor)", "deliveries/s", repeat(lambda: floor_rate(count, subs), reps))
         )
         results += ros.measured(scenario, "one_way", "deliveries/s", reps, n=count, subscribers=subs)
+        if subs == 1:
+            results += on_uvloop(scenario, count, reps)
     return results
+
+
+def on_uvloop(scenario: str, count: int, reps: int) -> list[Result]:
+    """One-way on uvloop (the ``fast`` extra), actors beside the bare queue on the same loop."""
+    loop = uvloop_factory()
+    if loop is None:
+        return [Result(scenario, "actors, uvloop", "deliveries/s", [], note=UVLOOP_HINT)]
+    return [
+        Result(scenario, "actors, uvloop", "deliveries/s", repeat(lambda: actors_rate(count, 1, loop=loop), reps),
+               baselines={"asyncio's loop": "actors", "queue": "asyncio.Queue, uvloop"}),
+        Result(scenario, "asyncio.Queue, uvloop", "deliveries/s", repeat(lambda: queue_rate(count, 1, loop=loop), reps)),
+    ]
 
 
 if __name__ == "__main__":
