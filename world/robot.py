@@ -28,8 +28,6 @@ from __future__ import annotations
 
 import math
 
-import msgspec
-
 from actors import DurabilityPolicy, Node, QoSProfile
 from actors.errors import MessageRefused, WorldError
 from interfaces.geometry_msgs.msg import PoseStamped, Quaternion, Twist
@@ -82,7 +80,13 @@ class TurtleBot(Node):
                 raise WorldError(f"{self.name}: {exc}") from None
         self._start = (x, y, theta)
         lidar = self.robot.model.lidar
+        # One message of each kind, refilled and published again each tick: publish() takes a
+        # snapshot, so reusing them is safe, and building a fresh Odometry tree each time
+        # (nested structs, two 36-float covariances) cost as much as the physics step.
+        self._odom = Odometry(header=Header(frame_id="odom"), child_frame_id="base_footprint")
+        self._ground = PoseStamped(header=Header(frame_id="world"))
         self._scan = LaserScan(
+            header=Header(frame_id="base_scan"),
             angle_min=0.0,
             angle_max=2 * math.pi * (lidar.beams - 1) / lidar.beams,
             angle_increment=2 * math.pi / lidar.beams,
@@ -122,8 +126,8 @@ class TurtleBot(Node):
         # Odometry starts at the start pose: express the pose in that frame.
         c, s = math.cos(theta0), math.sin(theta0)
         dx, dy = x - x0, y - y0
-        msg = Odometry(child_frame_id="base_footprint")
-        msg.header.stamp, msg.header.frame_id = stamp, "odom"
+        msg = self._odom
+        msg.header.stamp = stamp
         pose = msg.pose.pose
         pose.position.x, pose.position.y = c * dx + s * dy, -s * dx + c * dy
         pose.orientation = yaw_quaternion(math.remainder(theta - theta0, math.tau))
@@ -131,8 +135,8 @@ class TurtleBot(Node):
         self.odom_pub.publish(msg)
 
         truth = self.robot.pose
-        ground = PoseStamped()
-        ground.header.stamp, ground.header.frame_id = stamp, "world"
+        ground = self._ground
+        ground.header.stamp = stamp
         ground.pose.position.x, ground.pose.position.y = truth.x, truth.y
         ground.pose.orientation = yaw_quaternion(truth.theta)
         self.pose_pub.publish(ground)
@@ -144,6 +148,7 @@ class TurtleBot(Node):
 
     def publish_scan(self) -> None:
         """Publish the lidar scan."""
-        header = Header(stamp=self.get_clock().now().to_msg(), frame_id="base_scan")
-        ranges = self.world.scan(self.name).tolist()
-        self.scan_pub.publish(msgspec.structs.replace(self._scan, header=header, ranges=ranges))
+        scan = self._scan
+        scan.header.stamp = self.get_clock().now().to_msg()
+        scan.ranges = self.world.scan(self.name).tolist()
+        self.scan_pub.publish(scan)
