@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import asyncio
 import functools
+import inspect
 from collections import deque
 from collections.abc import Mapping
 from enum import StrEnum
@@ -188,6 +189,10 @@ class Supervisor:
         actor.on_exit = None  # stopped by us: not an exit to handle
         task = actor.task
         if task is not None and not task.done() and task is not asyncio.current_task():
+            if inspect.getcoroutinestate(task.get_coro()) == inspect.CORO_CREATED:
+                # Its callback has not started yet: let it start (as it would have in its
+                # round) so that cancelling unwinds it, instead of leaving it never awaited.
+                await asyncio.sleep(0)
             task.cancel()
             await asyncio.wait((task,))
         actor.stop()
