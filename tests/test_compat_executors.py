@@ -386,3 +386,19 @@ def test_a_two_argument_callback_gets_message_info(session):
     rclpy.spin_once(node, timeout_sec=0)
     ((data, info),) = got
     assert data == "x" and info["received_timestamp"] == 1_500_000_000 and info["reception_sequence_number"] == 1
+
+
+def test_a_timer_callback_taking_timer_info(session):
+    from actors.compat.rclpy.timer import TimerInfo
+
+    node = rclpy.create_node("informed_timer")
+    got: list[TimerInfo] = []
+
+    def tick(info: TimerInfo) -> None:
+        got.append(info)
+
+    node.create_timer(0.5, tick)
+    session.sleep(0.7)  # due at 0.5, taken at 0.7
+    rclpy.spin_once(node, timeout_sec=0)
+    assert got[0].expected_call_time.nanoseconds == 500_000_000
+    assert got[0].actual_call_time.nanoseconds == 700_000_000  # when the spin called it, as rclpy's

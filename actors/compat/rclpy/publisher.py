@@ -38,8 +38,8 @@ class Publisher(NativeProxy):
 
     @property
     def qos_profile(self) -> Any:
-        """The QoS the publisher offers."""
-        return self._native.qos
+        """The QoS the publisher offers (rclpy's QoSProfile)."""
+        return self._native.qos_profile
 
     def get_subscription_count(self) -> int:
         """How many subscriptions it feeds."""

@@ -1,28 +1,63 @@
-"""``rclpy.qos``: actors' QoS profiles and policies, under rclpy's names."""
+"""``rclpy.qos``: actors' QoS (:mod:`actors.qos`), which is rclpy's."""
 
 from __future__ import annotations
 
-from actors.topics import (
-    DurabilityPolicy,
+from actors.qos import (
+    QoSPolicyEnum,
     HistoryPolicy,
-    QoSProfile,
     ReliabilityPolicy,
-    qos_profile_sensor_data,
+    DurabilityPolicy,
+    LivelinessPolicy,
+    QoSHistoryPolicy,
+    QoSReliabilityPolicy,
+    QoSDurabilityPolicy,
+    QoSLivelinessPolicy,
+    QoSPolicyKind,
+    qos_policy_name_from_kind,
+    QoSProfile,
+    DeadlineBestAvailable,
+    LivelinessLeaseDurationeBestAvailable,
+    qos_profile_unknown,
+    qos_profile_default,
     qos_profile_system_default,
+    qos_profile_sensor_data,
+    qos_profile_services_default,
+    qos_profile_parameters,
+    qos_profile_parameter_events,
+    qos_profile_best_available,
+    qos_profile_action_status_default,
+    qos_profile_rosout_default,
+    QoSPresetProfiles,
+    QoSCompatibility,
+    qos_check_compatible,
 )
 
 __all__ = [
-    "QoSProfile",
+    "QoSPolicyEnum",
     "HistoryPolicy",
     "ReliabilityPolicy",
     "DurabilityPolicy",
+    "LivelinessPolicy",
     "QoSHistoryPolicy",
     "QoSReliabilityPolicy",
     "QoSDurabilityPolicy",
-    "qos_profile_sensor_data",
+    "QoSLivelinessPolicy",
+    "QoSPolicyKind",
+    "qos_policy_name_from_kind",
+    "QoSProfile",
+    "DeadlineBestAvailable",
+    "LivelinessLeaseDurationeBestAvailable",
+    "qos_profile_unknown",
+    "qos_profile_default",
     "qos_profile_system_default",
+    "qos_profile_sensor_data",
+    "qos_profile_services_default",
+    "qos_profile_parameters",
+    "qos_profile_parameter_events",
+    "qos_profile_best_available",
+    "qos_profile_action_status_default",
+    "qos_profile_rosout_default",
+    "QoSPresetProfiles",
+    "QoSCompatibility",
+    "qos_check_compatible",
 ]
-
-QoSHistoryPolicy = HistoryPolicy
-QoSReliabilityPolicy = ReliabilityPolicy
-QoSDurabilityPolicy = DurabilityPolicy

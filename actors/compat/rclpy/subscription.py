@@ -109,8 +109,8 @@ class Subscription(WorkSource, NativeProxy):
 
     @property
     def qos_profile(self) -> Any:
-        """The QoS the subscription requests."""
-        return self._native.qos
+        """The QoS the subscription requests (rclpy's QoSProfile)."""
+        return self._native.qos_profile
 
     def destroy(self) -> None:
         """Stop receiving."""

@@ -16,9 +16,10 @@ from actors.compat.activity import Waiter
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
 from actors.compat.rclpy.exceptions import ROSInterruptException
 from actors.compat.rclpy.task import await_or_execute
+from actors.timers import TimerInfo
 
 
-__all__ = ["Timer", "Rate"]
+__all__ = ["Timer", "Rate", "TimerInfo"]
 
 
 class Timer(WorkSource, NativeProxy):
@@ -30,13 +31,13 @@ class Timer(WorkSource, NativeProxy):
         self.callback = callback
         self.callback_group = callback_group
         self._native: Any = None
-        self._fired: tuple[Any, ...] | None = None
+        self._fired: tuple[tuple[Any, ...], dict[str, Any]] | None = None  # a tick not taken yet
         self.catcher = self._make_catcher()
 
     def _make_catcher(self) -> Callable[..., None]:
-        def catch(*args: Any) -> None:
+        def catch(*args: Any, **kwargs: Any) -> None:
             with self._session.lock:
-                self._fired = args
+                self._fired = (args, kwargs)
                 self._node._rclpy.notify()
 
         # The native timer reads the callback's signature (a TimerInfo parameter): show it the script's.
@@ -46,15 +47,23 @@ class Timer(WorkSource, NativeProxy):
         return self._fired is not None
 
     def _take(self) -> Handler | None:
-        args, self._fired = self._fired, None
+        fired, self._fired = self._fired, None
         callback = self.callback
-        if args is None or callback is None:
+        if fired is None or callback is None:
             return None
+        args, kwargs = fired
+        # The tick is called now, not when it came: rclpy's actual_call_time is the take's.
+        kwargs = {name: self._restamped(v) if isinstance(v, TimerInfo) else v for name, v in kwargs.items()}
 
         async def run() -> None:
-            await await_or_execute(callback, *args)
+            await await_or_execute(functools.partial(callback, *args, **kwargs))
 
         return run
+
+    def _restamped(self, info: TimerInfo) -> TimerInfo:
+        expected = info.expected_call_time
+        return TimerInfo(expected_call_time=expected.nanoseconds, actual_call_time=self._native.clock.now_ns(),
+                         clock_type=expected.clock_type)
 
     @property
     def timer_period_ns(self) -> int:
