@@ -128,3 +128,102 @@ def test_ros_arguments_give_parameters_names_and_log_levels(tmp_path):
     quiet = actors_run(script("params.py"))
     assert quiet.stdout.splitlines() == ["/tuned speed=1.0 label=none"]
     assert "debug is on" not in quiet.stderr
+
+
+def stderr_lines(done: subprocess.CompletedProcess[str], node: str | None = None) -> list[str]:
+    return [line for line in done.stderr.splitlines() if node is None or f"[{node}]" in line]
+
+
+def messages(done: subprocess.CompletedProcess[str], node: str) -> list[str]:
+    return [line.split(f"[{node}]: ", 1)[1] for line in stderr_lines(done, node)]
+
+
+@pytest.mark.parametrize("style", ["closure", "sleep"])
+def test_publishing_from_a_closure_or_a_sleep_loop(style):
+    # A reused message changed by a nested function, or time.sleep() between publishes: on the
+    # virtual clock, time.sleep sleeps virtual time, so both publish every half second.
+    done = actors_run("--clock", "virtual", "--duration", "1.6", script("publishers.py"), style)
+    assert done.returncode == 0, done.stderr
+    first = 0.5 if style == "closure" else 0.0
+    assert stderr_lines(done) == [
+        f"[INFO] [{first + 0.5 * i:.9f}] [words]: publishing word {i}" for i in range(3 if first else 4)
+    ]
+
+
+def test_a_service_spun_once_at_a_time_from_a_module_level_node():
+    done = actors_run("--graph", str(SCRIPTS / "with_client.toml"), "--clock", "virtual", "--duration", "1",
+                      script("service_loop.py"))
+    assert done.returncode == 0, done.stderr
+    assert messages(done, "loop_server") == ["sum of 20 and 22"]
+
+
+@pytest.mark.parametrize("style", ["until", "poll", "coroutine"])
+def test_three_ways_a_client_waits_for_its_answer(style):
+    done = actors_run("--graph", str(SCRIPTS / "with_server.toml"), "--clock", "virtual",
+                      script("client_styles.py"), style)
+    assert done.returncode == 0, done.stderr
+    # The server comes up at 2.5 s; the coroutine's timer asks at the next half second after it.
+    assert messages(done, f"client_{style}") == ["waiting for add_two_ints"] * 2 + ["41 + 1 = 42"]
+    answered = stderr_lines(done, f"client_{style}")[-1]
+    assert answered.startswith("[INFO] [3.000000000]" if style == "coroutine" else "[INFO] [2.500000000]")
+
+
+@pytest.mark.parametrize("mode", ["multi", "composed"])
+def test_two_timers_in_a_mutually_exclusive_group_and_a_listener(mode):
+    done = actors_run("--clock", "virtual", "--duration", "2.1", script("executors_demo.py"), mode)
+    assert done.returncode == 0, done.stderr
+    assert messages(done, "hearer") == [f"heard tick {i}" for i in range(6)]
+
+
+def test_a_callback_group_of_the_scripts_own_throttles_a_timer():
+    done = actors_run("--clock", "virtual", "--duration", "1.6", script("executors_demo.py"), "throttled")
+    assert done.returncode == 0, done.stderr
+    stamps = [line.split("] [")[1] for line in stderr_lines(done, "throttled")]
+    # Three tokens at once, then one per refill every half second.
+    assert stamps == ["0.100000000", "0.200000000", "0.300000000", "0.500000000", "1.000000000", "1.500000000"]
+
+
+def test_an_executor_subclass_of_the_scripts_own(tmp_path):
+    graph = tmp_path / "alarm.toml"
+    graph.write_text('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nname = "alarm_talker"\n'
+                     'remap = { topic = "alarm" }\n')
+    done = actors_run("--graph", str(graph), "--clock", "virtual", "--duration", "1.1",
+                      script("executors_demo.py"), "priority")
+    assert done.returncode == 0, done.stderr
+    assert messages(done, "alarm") == ["ALARM Hello World: 0", "ALARM Hello World: 1"]
+    assert messages(done, "hearer") == ["heard tick 0", "heard tick 1", "heard tick 2"]
+
+
+def test_sigterm_stops_a_script_gracefully():
+    # SIGTERM shuts the context down without a KeyboardInterrupt, as rclpy's handler does: the
+    # listener's spin_once raises ExternalShutdownException, which it catches.
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "actors", "run", "--graph", str(SCRIPTS / "with_talker.toml"), script("listener.py")],
+        cwd=ROOT, env=python_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )
+    assert proc.stderr is not None
+    while "[listener]: got" not in proc.stderr.readline():
+        pass
+    os.kill(proc.pid, signal.SIGTERM)
+    _, err = proc.communicate(timeout=30)
+    assert proc.returncode == 0, err
+    assert "Traceback" not in err
+
+
+def test_a_guard_condition_whose_callback_shuts_rclpy_down():
+    done = actors_run("--clock", "virtual", script("guard.py"))
+    assert done.returncode == 0, done.stderr
+    assert messages(done, "guarded") == [
+        "spinning once", "timer: triggered", "spinning once", "guard: shut down", "done"
+    ]
+
+
+def test_qos_and_argparse_beside_ros_arguments():
+    talker = actors_run("--clock", "virtual", script("qos_pair.py"), "talker", "-n", "3")
+    assert talker.returncode == 0, talker.stderr
+    assert messages(talker, "qos_talker") == ["best effort talker", "sent msg 0", "sent msg 1", "sent msg 2"]
+    listener = actors_run("--graph", str(SCRIPTS / "with_talker.toml"), "--clock", "virtual",
+                          script("qos_pair.py"), "listener", "--reliable", "-n", "2", "--ros-args",
+                          "-r", "__node:=ear")
+    assert listener.returncode == 0, listener.stderr
+    assert messages(listener, "ear") == ["reliable listener", "got Hello World: 0", "got Hello World: 1"]

@@ -87,3 +87,21 @@ def test_recording_a_topic_nobody_uses_needs_its_type():
         heard = run.record("/chatter")
         run.wait(0.6)
     assert [m.data for m in heard] == ["count 0", "count 1"]
+
+
+def test_set_parameters_callbacks_of_a_students_node():
+    from interfaces.rcl_interfaces.srv import SetParameters
+
+    from actors.params import Parameter
+
+    def request(**values: float) -> SetParameters.Request:
+        return SetParameters.Request(parameters=[Parameter(k, value=v).to_parameter_msg() for k, v in values.items()])
+
+    with run_script(TEST_SCRIPTS / "param_callbacks.py") as run:
+        answer = run.call("/tunable/set_parameters", request(speed=3.0))
+        assert [r.successful for r in answer.results] == [True]
+        refused = run.call("/tunable/set_parameters", request(speed=-1.0))
+        assert [(r.successful, r.reason) for r in refused.results] == [(False, "no negatives")]
+        run.wait(1.0)
+    # The pre-set callback added gain=2.0 to the accepted set; the post-set one kept both.
+    assert run.log[-1] == "[INFO] [1.000000000] [tunable]: speed=3.0 gain=2.0"

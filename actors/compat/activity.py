@@ -75,6 +75,11 @@ class Activity:
             self._tokens.difference_update(gone)
             return any(t.busy for t in self._tokens)
 
+    def busy_besides(self, token: Token) -> bool:
+        """Whether anyone but ``token``'s holder is busy."""
+        with self.lock:
+            return any(t.busy for t in self._tokens if t is not token)
+
     @contextmanager
     def starting_workers(self) -> Iterator[None]:
         """Threads started by this thread inside the block are pool workers: the callbacks they run

@@ -137,12 +137,17 @@ class ScriptRun:
                     self._done = True
                 activity.done(activity.current())  # wakes whoever waits for the script to settle or end
 
-        self._thread, token = self._session.start_thread(main, "student script")
-        # Run the script until it first waits (spins, mostly) or ends: its nodes exist then.
+        self._thread, _ = self._session.start_thread(main, "student script")
+        self._settle()  # the script runs until it first waits (spins, mostly): its nodes exist then
+
+    def _settle(self) -> None:
+        """Wait (the clock standing still) until every thread of the script waits or the script has ended."""
+        activity = self._session.activity
+        mine = activity.current()
         waiter = Waiter(activity)
         activity.watch(waiter)
         try:
-            self._session.wait_until(lambda: self._done or not token.busy, None, waiter)
+            self._session.wait_until(lambda: self._done or not activity.busy_besides(mine), None, waiter)
         finally:
             activity.unwatch(waiter)
 
@@ -206,8 +211,14 @@ class ScriptRun:
         return self._session.loop.time()
 
     def wait(self, seconds: float) -> None:
-        """Let ``seconds`` of simulated time pass (the script runs meanwhile)."""
+        """Let ``seconds`` of simulated time pass; the script runs meanwhile.
+
+        What falls due at the very end (a timer of the script at exactly that
+        time) has run when it returns.
+        """
         self._session.sleep(seconds)
+        self._session.call(_nothing)  # after what the loop had due at this instant (it runs in order)
+        self._settle()
 
     def record(self, topic: str, msg_type: type | None = None) -> list[Any]:
         """A list that receives every message on ``topic`` from now on, in order.
@@ -251,6 +262,10 @@ class ScriptRun:
             if info.name == name:
                 return get_type(info.type)
         raise LookupError(f"nobody uses {name} yet: give its type, e.g. record({name!r}, Twist)")
+
+
+def _nothing() -> None:
+    return None
 
 
 def _spin_one(target: str | type) -> None:
