@@ -402,3 +402,15 @@ def test_a_timer_callback_taking_timer_info(session):
     rclpy.spin_once(node, timeout_sec=0)
     assert got[0].expected_call_time.nanoseconds == 500_000_000
     assert got[0].actual_call_time.nanoseconds == 700_000_000  # when the spin called it, as rclpy's
+
+
+def test_what_differs_node_names_are_unique_and_a_node_cannot_call_its_own_service(session):
+    from actors.errors import InvalidNameError, ServiceError
+
+    node = rclpy.create_node("only_one")
+    with pytest.raises(InvalidNameError, match="already runs"):
+        rclpy.create_node("only_one")
+    node.create_service(AddTwoInts, "mine", lambda req, res: res)
+    client = node.create_client(AddTwoInts, "mine")
+    with pytest.raises(ServiceError, match="calls its own service"):
+        client.call_async(AddTwoInts.Request())
