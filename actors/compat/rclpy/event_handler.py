@@ -5,32 +5,7 @@ A script node's event callbacks run when the script spins it, as its other callb
 
 from __future__ import annotations
 
-from actors.qos_events import (
-    QoSRequestedDeadlineMissedInfo,
-    QoSOfferedDeadlineMissedInfo,
-    QoSLivelinessChangedInfo,
-    QoSLivelinessLostInfo,
-    QoSMessageLostInfo,
-    QoSRequestedIncompatibleQoSInfo,
-    QoSOfferedIncompatibleQoSInfo,
-    QoSSubscriptionMatchedInfo,
-    QoSPublisherMatchedInfo,
-    IncompatibleTypeInfo,
-    SubscriptionEventCallbacks,
-    PublisherEventCallbacks,
-)
+from actors import qos_events as _events
+from actors.qos_events import *  # noqa: F403 - the whole of actors.qos_events, under rclpy's name
 
-__all__ = [
-    "QoSRequestedDeadlineMissedInfo",
-    "QoSOfferedDeadlineMissedInfo",
-    "QoSLivelinessChangedInfo",
-    "QoSLivelinessLostInfo",
-    "QoSMessageLostInfo",
-    "QoSRequestedIncompatibleQoSInfo",
-    "QoSOfferedIncompatibleQoSInfo",
-    "QoSSubscriptionMatchedInfo",
-    "QoSPublisherMatchedInfo",
-    "IncompatibleTypeInfo",
-    "SubscriptionEventCallbacks",
-    "PublisherEventCallbacks",
-]
+__all__ = list(_events.__all__)

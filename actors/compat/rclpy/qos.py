@@ -1,63 +1,8 @@
-"""``rclpy.qos``: actors' QoS (:mod:`actors.qos`), which is rclpy's."""
+"""``rclpy.qos``: actors' QoS (:mod:`actors.qos`), which has rclpy's names and semantics."""
 
 from __future__ import annotations
 
-from actors.qos import (
-    QoSPolicyEnum,
-    HistoryPolicy,
-    ReliabilityPolicy,
-    DurabilityPolicy,
-    LivelinessPolicy,
-    QoSHistoryPolicy,
-    QoSReliabilityPolicy,
-    QoSDurabilityPolicy,
-    QoSLivelinessPolicy,
-    QoSPolicyKind,
-    qos_policy_name_from_kind,
-    QoSProfile,
-    DeadlineBestAvailable,
-    LivelinessLeaseDurationeBestAvailable,
-    qos_profile_unknown,
-    qos_profile_default,
-    qos_profile_system_default,
-    qos_profile_sensor_data,
-    qos_profile_services_default,
-    qos_profile_parameters,
-    qos_profile_parameter_events,
-    qos_profile_best_available,
-    qos_profile_action_status_default,
-    qos_profile_rosout_default,
-    QoSPresetProfiles,
-    QoSCompatibility,
-    qos_check_compatible,
-)
+from actors import qos as _qos
+from actors.qos import *  # noqa: F403 - the whole of actors.qos, under rclpy's module name
 
-__all__ = [
-    "QoSPolicyEnum",
-    "HistoryPolicy",
-    "ReliabilityPolicy",
-    "DurabilityPolicy",
-    "LivelinessPolicy",
-    "QoSHistoryPolicy",
-    "QoSReliabilityPolicy",
-    "QoSDurabilityPolicy",
-    "QoSLivelinessPolicy",
-    "QoSPolicyKind",
-    "qos_policy_name_from_kind",
-    "QoSProfile",
-    "DeadlineBestAvailable",
-    "LivelinessLeaseDurationeBestAvailable",
-    "qos_profile_unknown",
-    "qos_profile_default",
-    "qos_profile_system_default",
-    "qos_profile_sensor_data",
-    "qos_profile_services_default",
-    "qos_profile_parameters",
-    "qos_profile_parameter_events",
-    "qos_profile_best_available",
-    "qos_profile_action_status_default",
-    "qos_profile_rosout_default",
-    "QoSPresetProfiles",
-    "QoSCompatibility",
-    "qos_check_compatible",
-]
+__all__ = list(_qos.__all__)

@@ -2,32 +2,7 @@
 
 from __future__ import annotations
 
-from actors.qos_events import (
-    QoSRequestedDeadlineMissedInfo,
-    QoSOfferedDeadlineMissedInfo,
-    QoSLivelinessChangedInfo,
-    QoSLivelinessLostInfo,
-    QoSMessageLostInfo,
-    QoSRequestedIncompatibleQoSInfo,
-    QoSOfferedIncompatibleQoSInfo,
-    QoSSubscriptionMatchedInfo,
-    QoSPublisherMatchedInfo,
-    IncompatibleTypeInfo,
-    SubscriptionEventCallbacks,
-    PublisherEventCallbacks,
-)
+from actors.compat.rclpy import event_handler as _event_handler
+from actors.compat.rclpy.event_handler import *  # noqa: F403 - the same names
 
-__all__ = [
-    "QoSRequestedDeadlineMissedInfo",
-    "QoSOfferedDeadlineMissedInfo",
-    "QoSLivelinessChangedInfo",
-    "QoSLivelinessLostInfo",
-    "QoSMessageLostInfo",
-    "QoSRequestedIncompatibleQoSInfo",
-    "QoSOfferedIncompatibleQoSInfo",
-    "QoSSubscriptionMatchedInfo",
-    "QoSPublisherMatchedInfo",
-    "IncompatibleTypeInfo",
-    "SubscriptionEventCallbacks",
-    "PublisherEventCallbacks",
-]
+__all__ = list(_event_handler.__all__)
