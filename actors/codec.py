@@ -33,6 +33,7 @@ import msgspec.inspect as mi
 
 from actors import cdr, typehash
 from actors.errors import InterfaceError, MessageValidationError, UnknownInterfaceError
+from actors.explain import explain
 from actors.idl import PRIMITIVES
 
 __all__ = [
@@ -207,8 +208,21 @@ def _resolve(type_: type[T] | str) -> type[T]:
 
 
 def _invalid(type_: Any, problem: object) -> MessageValidationError:
-    name = getattr(type_, "__ros_type__", getattr(type_, "__name__", repr(type_)))
-    return MessageValidationError(f"{name}: {problem}")
+    return MessageValidationError(f"{_name(type_)}: {problem}")
+
+
+def _name(type_: Any) -> str:
+    return str(getattr(type_, "__ros_type__", getattr(type_, "__name__", repr(type_))))
+
+
+def _misfit(type_: Any, exc: msgspec.MsgspecError, data: Any) -> MessageValidationError:
+    """A value that does not fit, in our words: ``field 'data' of std_msgs/msg/Bool: expected a bool, ...``."""
+    path, problem, unknown = explain(exc, type_, data)
+    if unknown:
+        return MessageValidationError(f"{_name(type_)} has no field '{path}'{problem.removeprefix('unknown field')}")
+    if path:
+        return MessageValidationError(f"field '{path}' of {_name(type_)}: {problem}")
+    return _invalid(type_, problem)
 
 
 # --------------------------------------------------------------------------- binary codecs
@@ -274,7 +288,11 @@ def _decode(decoders: dict[Any, Any], factory: Callable[[type], Any], data: Any,
     try:
         return decoder.decode(data)
     except msgspec.DecodeError as exc:
-        raise _invalid(decoder.type, exc) from None
+        try:  # the value as it came, to say what was wrong with it
+            plain = msgspec.msgpack.decode(data) if factory is msgspec.msgpack.Decoder else msgspec.json.decode(data)
+        except (msgspec.DecodeError, RecursionError):
+            raise _invalid(decoder.type, f"malformed data: {exc}") from None
+        raise _misfit(decoder.type, exc, plain) from None
 
 
 # --------------------------------------------------------------------------- plain data and YAML
@@ -289,10 +307,11 @@ def convert(obj: Any, type_: type[T] | str) -> T:
     MessageValidationError naming the type and the field path.
     """
     cls = _resolve(type_)
+    data = _coerce(obj, _info(cls))
     try:
-        return msgspec.convert(_coerce(obj, _info(cls)), cls)
+        return msgspec.convert(data, cls)
     except msgspec.ValidationError as exc:
-        raise _invalid(cls, exc) from None
+        raise _misfit(cls, exc, data) from None
 
 
 def from_yaml(text: str, type_: type[T] | str) -> T:

@@ -13,21 +13,30 @@ Names are claimed under a lock file, so two graphs starting at once cannot
 steal each other's socket.
 
 Frames.  A 4-byte big-endian length, then a msgpack body (msgspec, never
-pickle).  A request body over :data:`MAX_FRAME` bytes, or not msgpack, closes
-that connection and nothing else; replies are not capped (a large message may
-be streamed to a subscriber).  A body is one request, tagged by its
-``op`` field (the Structs below); the reply is a :class:`Reply` whose ``result``
-has the type each request names.  A request that fails gets ``ok=False`` and
-the reason; it never stops the graph.
+pickle).  A request body over :data:`MAX_FRAME` bytes, or not msgpack, is
+answered with an error and closes that connection and nothing else; replies
+are not capped (a large message may be streamed to a subscriber).  A body is
+one request, tagged by its ``op`` field (the Structs below); the reply is a
+:class:`Reply` whose ``result`` has the type each request names.  A request
+that fails gets ``ok=False`` and the reason; it never stops the graph.  A
+malformed request (a bad frame, an unknown operation, a value that does not
+fit its type) is logged once per connection, as one line.
+
+Limits.  Connections are bounded in number, in time and in what they may
+make the graph hold (:mod:`actors.connections`): one more than
+:attr:`ConnectionLimits.connections` is refused with an error reply; idle
+ones and half-sent frames time out; a slow subscriber loses samples, counted,
+instead of growing the graph; running out of file descriptors refuses
+connections without harming the graph.  ``doctor`` reports what was hit.
 
 Sessions.  One connection is one session.  The publishers, subscriptions and
 clients its requests create belong to a hidden owner ``/_actors_cli_<n>``
 (hidden as ROS hides names starting with ``_``: ``node list`` and ``doctor``
 leave them out, ``topic info`` shows them) and are removed when the connection
 closes.  After a :class:`Subscribe` reply the server streams :class:`Sample`
-frames until the client disconnects.  The owner has its own actor, so a slow
-reader only fills its own mailbox (KEEP_LAST: the oldest samples drop) and
-never holds up the graph.
+frames until the client disconnects.  Samples are encoded as they arrive and
+wait in the connection's bounded outbox, so a slow reader never holds up the
+graph nor makes it hold more than the outbox.
 
 The server runs in the runtime's task group; sockets are non-blocking, so it
 never blocks the loop.  With it, on a wall-clock runtime, runs doctor's
@@ -43,16 +52,18 @@ import struct
 from collections.abc import Iterable, Iterator
 from contextlib import contextmanager, suppress
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import anyio
 import anyio.abc
 import msgspec
-from anyio.streams.buffered import BufferedByteReceiveStream
 
 from actors import codec
 from actors.actor import Actor, CallbackFailed
-from actors.errors import ActorsError, ControlError
+from actors.config import MAX_SECONDS
+from actors.connections import Connection, ConnectionLimits, ConnectionPool, ConnectionStats
+from actors.errors import ActorsError, ControlError, InterfaceError
+from actors.explain import explain
 from actors.introspection import NodeInfo, ServiceInfo, TopicInfo
 from actors.names import expand
 from actors.services import Client
@@ -84,6 +95,7 @@ __all__ = [
     "NodeDetail",
     "ControlServer",
     "ControlEndpoint",
+    "ConnectionLimits",
     "endpoint_dir",
     "endpoint_paths",
     "is_alive",
@@ -138,7 +150,7 @@ class Subscribe(Request, tag="subscribe"):
 
     topic: str
     content: bool = True
-    depth: int = 100
+    depth: Annotated[int, msgspec.Meta(ge=1, le=10_000)] = 100
     type: str = ""
 
 
@@ -152,7 +164,7 @@ class Call(Request, tag="call"):
     service: str
     type: str
     request: dict[str, Any] = {}
-    timeout: float = 10.0
+    timeout: Annotated[float, msgspec.Meta(gt=0, le=MAX_SECONDS)] = 10.0
 
 
 class Diagnose(Request, tag="doctor"):
@@ -163,11 +175,16 @@ _Requests = GetGraph | GetNode | Publish | Subscribe | Call | Diagnose
 
 
 class Reply(msgspec.Struct, kw_only=True, omit_defaults=True):
-    """The answer to one request: ``ok`` and ``result``, or the ``error`` text."""
+    """The answer to one request: ``ok`` and ``result``, or the ``error`` text.
+
+    ``busy`` marks the answer a refused connection gets (too many open, no
+    descriptor left): the same request on a new connection may succeed soon.
+    """
 
     ok: bool = True
     result: Any = None
     error: str = ""
+    busy: bool = False
 
 
 class Sample(msgspec.Struct, kw_only=True, omit_defaults=True):
@@ -308,13 +325,17 @@ def _bind(name: str) -> tuple[socket.socket, Path]:
 
 
 class ControlServer:
-    """A running endpoint: its socket ``path``, its loop-lag ``monitor`` (None on virtual time)."""
+    """A running endpoint: its socket ``path``, its loop-lag ``monitor`` (None on virtual time).
 
-    def __init__(self, runtime: Runtime, path: Path) -> None:
+    ``pool`` holds its connections, within ``limits``; ``pool.stats()`` is
+    what doctor reports.
+    """
+
+    def __init__(self, runtime: Runtime, path: Path, limits: ConnectionLimits | None = None) -> None:
         self.runtime = runtime
         self.path = path
         self.monitor: LagMonitor | None = None
-        self._sessions = 0
+        self.pool = ConnectionPool(limits or ConnectionLimits(), self.serve, _refusal, runtime.logger.warning)
 
     def snapshot(self) -> GraphSnapshot:
         """The graph now."""
@@ -328,23 +349,34 @@ class ControlServer:
             services=tuple(graph.services()),
         )
 
+    def stats(self) -> ConnectionStats:
+        """What the endpoint's connections did so far."""
+        return self.pool.stats()
+
     def diagnose(self) -> Report:
         """Doctor's report on the graph now."""
         from actors.doctor import diagnose
 
-        return diagnose(self.runtime, self.monitor)
+        return diagnose(self.runtime, self.monitor, self.stats())
 
-    async def handle(self, stream: anyio.abc.SocketStream) -> None:
-        """Serve one connection until it closes or sends a bad frame; never raises."""
-        self._sessions += 1
-        session = _Session(self, self._sessions, stream)
+    async def serve(self, connection: Connection) -> None:
+        """Serve one connection until it closes or sends a bad frame."""
+        session = _Session(self, connection)
         try:
-            async with stream, anyio.create_task_group() as tg:
+            async with anyio.create_task_group() as tg:
                 tg.start_soon(session.run_actor, tg.cancel_scope)
-                await session.serve(BufferedByteReceiveStream(stream))
+                tg.start_soon(session.write_samples, tg.cancel_scope)
+                await session.serve()
                 tg.cancel_scope.cancel()
         finally:
             session.close()
+
+
+def _refusal(why: str) -> bytes:
+    return frame(Reply(ok=False, error=why, busy=True))
+
+
+_GONE = (anyio.EndOfStream, anyio.BrokenResourceError, anyio.ClosedResourceError)
 
 
 class _Session:
@@ -354,59 +386,92 @@ class _Session:
     ``loop``, ``actor``) without being a node of the graph.
     """
 
-    def __init__(self, server: ControlServer, number: int, stream: anyio.abc.SocketStream) -> None:
+    def __init__(self, server: ControlServer, connection: Connection) -> None:
         rt = server.runtime
         self.server = server
         self.runtime = rt
-        self.fqn = f"/_actors_cli_{number}"
+        self.connection = connection
+        self.fqn = f"/_actors_cli_{connection.number}"
         self.loop = rt.loop
         self.actor = Actor(rt.loop)
-        self._stream = stream
-        self._send_lock = anyio.Lock()
         self._publishers: dict[str, Publisher] = {}
         self._subscriptions: list[Subscription] = []
         self._clients: dict[str, Client] = {}
 
+    @property
+    def logger(self) -> Any:
+        """The runtime's logger (what an entity of the session would log through)."""
+        return self.runtime.logger
+
     async def run_actor(self, scope: anyio.CancelScope) -> None:
-        """Run the session's callbacks; a failed stream (client gone) ends the session."""
+        """Run the session's callbacks; a failed one ends the session."""
         try:
             await self.actor.run()
         except CallbackFailed:
             scope.cancel()
 
-    async def serve(self, receive: BufferedByteReceiveStream) -> None:
+    async def write_samples(self, scope: anyio.CancelScope) -> None:
+        """Send the streamed samples; the client gone ends the session."""
+        try:
+            await self.connection.write_outbox()
+        except _GONE:
+            scope.cancel()
+
+    async def serve(self) -> None:
         """Answer requests until the client goes away or sends a bad frame."""
+        connection = self.connection
+        buffer = bytearray()
         try:
             while True:
-                (size,) = _HEADER.unpack(await receive.receive_exactly(_HEADER.size))
-                if size > MAX_FRAME:
-                    return  # oversized: drop this connection only
-                body = await receive.receive_exactly(size)
-                try:
-                    request: Any = msgspec.msgpack.decode(body)
-                except msgspec.DecodeError:
-                    return  # not msgpack: drop this connection only
-                await self.send(await self.answer(request))
-        except (anyio.IncompleteRead, anyio.BrokenResourceError, anyio.ClosedResourceError):
+                while len(buffer) >= _HEADER.size:
+                    (size,) = _HEADER.unpack_from(buffer)
+                    if size > MAX_FRAME:
+                        await self._fail(f"a request of {size} bytes is over the limit of {MAX_FRAME}")
+                        return
+                    if len(buffer) < _HEADER.size + size:
+                        break
+                    body = bytes(buffer[_HEADER.size : _HEADER.size + size])
+                    del buffer[: _HEADER.size + size]
+                    try:
+                        request: Any = msgspec.msgpack.decode(body)
+                    except (msgspec.DecodeError, RecursionError) as exc:
+                        await self._fail(f"a request must be a msgpack map ({exc})")
+                        return
+                    with connection.busy():
+                        await connection.send(await self.answer(request))
+                if buffer:
+                    connection.frame_begun()
+                else:
+                    connection.frame_done()
+                buffer += await connection.stream.receive(1 << 16)
+        except _GONE:
             pass  # the client went away
 
-    async def send(self, data: bytes) -> None:
-        """Send one frame; replies and samples never interleave."""
-        async with self._send_lock:
-            await self._stream.send(data)
+    async def _fail(self, problem: str) -> None:
+        """Answer a frame that cannot be read, then leave: the stream can no longer be trusted."""
+        self.connection.report(problem)
+        with suppress(*_GONE):
+            await self.connection.send(frame(Reply(ok=False, error=problem)))
 
     async def answer(self, raw: Any) -> bytes:
         """The reply frame to one decoded request body; errors become ``ok=False`` replies."""
         try:
             request = msgspec.convert(raw, _Requests)
         except msgspec.ValidationError as exc:
-            return frame(Reply(ok=False, error=f"bad request: {exc}"))
+            key, problem, _ = explain(exc, _Requests, raw)
+            text = f"bad request: {key}: {problem}" if key else f"bad request: {problem}"
+            self.connection.report(text)
+            return frame(Reply(ok=False, error=text))
         try:
             return frame(Reply(result=await self._dispatch(request)))
+        except InterfaceError as exc:  # a message or type that does not fit: malformed
+            self.connection.report(str(exc))
+            return frame(Reply(ok=False, error=str(exc)))
         except (ActorsError, TimeoutError) as exc:
             return frame(Reply(ok=False, error=str(exc)))
-        except Exception as exc:
-            self.runtime.logger.error(f"control request {request!r} failed: {exc!r}", exc_info=exc)
+        except Exception as exc:  # noqa: BLE001 - a bug here must not end the graph
+            self.connection.report(f"{type(request).__name__} failed: {type(exc).__name__}: {exc}")
+            self.runtime.logger.debug(f"control request {request!r} failed", exc_info=exc)
             return frame(Reply(ok=False, error=f"internal error in the graph: {exc!r}"))
 
     async def _dispatch(self, request: Request) -> Any:
@@ -451,12 +516,13 @@ class _Session:
     def _publish(self, request: Publish) -> dict[str, int]:
         name = expand(request.topic, "/", "_")
         _, msg_type = self._topic(name, request.type)
+        msg = codec.convert(request.msg, msg_type)  # before anything is made: a bad one leaves no trace
         pub = self._publishers.get(name)
         if pub is None:
             pub = Publisher(self, name, msg_type, QoSProfile(depth=10))  # type: ignore[arg-type]
             self.runtime.topics.add_publisher(pub)
             self._publishers[name] = pub
-        pub.publish(codec.convert(request.msg, msg_type))
+        pub.publish(msg)
         return {"subscribers": pub.get_subscription_count()}
 
     def _subscribe(self, request: Subscribe) -> dict[str, str]:
@@ -476,13 +542,15 @@ class _Session:
         )
         clock = self.runtime.clock
         content = request.content
+        post = self.connection.post
 
-        async def forward(msg: Any) -> None:
-            await self.send(frame(Sample(stamp=clock.monotonic(), msg=msg if content else None)))
+        def forward(msg: Any) -> None:  # encoded at once: the outbox bounds what waits
+            post(frame(Sample(stamp=clock.monotonic(), msg=msg if content else None)))
 
         sub = Subscription(self, name, msg_type, forward, qos)  # type: ignore[arg-type]
         self.runtime.topics.add_subscription(sub)
         self._subscriptions.append(sub)
+        self.connection.streaming = True
         return {"type": type_name(msg_type)}
 
     async def _call(self, request: Call) -> Any:
@@ -532,10 +600,12 @@ class ControlEndpoint:
     started, or None when no endpoint could be made: no Unix sockets on this
     platform, or an unsafe or unusable directory (a warning is logged; the
     graph runs either way).  When the runtime stops, the socket file is removed.
+    ``limits`` bound its connections (:class:`ConnectionLimits`' defaults).
     """
 
-    def __init__(self) -> None:
+    def __init__(self, limits: ConnectionLimits | None = None) -> None:
         self.server: ControlServer | None = None
+        self.limits = limits
 
     async def __call__(
         self, runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any] = anyio.TASK_STATUS_IGNORED
@@ -553,16 +623,15 @@ class ControlEndpoint:
         inode = -1  # the socket file is ours only once we know its inode
         try:
             inode = os.stat(path).st_ino
-            self.server = server = ControlServer(runtime, path)
-            listener = await anyio.abc.SocketListener.from_socket(sock)
-            async with listener, anyio.create_task_group() as tg:
+            self.server = server = ControlServer(runtime, path, self.limits)
+            async with anyio.create_task_group() as tg:
                 if not runtime.clock.virtual:
                     from actors.doctor import LagMonitor
 
                     server.monitor = LagMonitor(runtime)
                     tg.start_soon(server.monitor.run)
                 task_status.started()
-                await listener.serve(server.handle, tg)
+                await server.pool.run(sock)
         finally:
             sock.close()
             _unlink_if_same(path, inode)

@@ -20,6 +20,9 @@ check passes or fails with one reason per problem found:
   their counts per reason and the last sender;
 - callbacks that block the loop, named by node and callback (wall clock only:
   on virtual time the loop's clock stands still while a callback runs);
+- the control endpoint's limits (asked through the endpoint): running out of
+  file descriptors fails the check; connections refused at the limit, closed
+  for idleness, malformed requests and samples a slow reader lost are warnings;
 - required packages installed.
 
 ``/rosout``, ``/parameter_events`` and hidden endpoints (the command line's
@@ -38,6 +41,7 @@ from typing import TYPE_CHECKING, Any
 import anyio
 import msgspec
 
+from actors.connections import ConnectionStats
 from actors.introspection import ActionInfo, EndpointInfo, NodeInfo, TopicInfo
 from actors.names import is_hidden, is_hidden_name
 from actors.topics import qos_incompatibility
@@ -96,11 +100,14 @@ class Report(msgspec.Struct, frozen=True, kw_only=True):
         return [check for check in self.checks if check.failed(include_warnings)]
 
 
-def diagnose(runtime: Runtime, monitor: LagMonitor | None = None) -> Report:
+def diagnose(
+    runtime: Runtime, monitor: LagMonitor | None = None, control: ConnectionStats | None = None
+) -> Report:
     """Run every check on ``runtime``'s graph now.
 
     The loop-lag check runs only with a ``monitor`` (the control endpoint starts
-    one on wall-clock runtimes).  Never raises for what it finds.
+    one on wall-clock runtimes), the endpoint's check with its ``control``
+    statistics.  Never raises for what it finds.
     """
     graph = runtime.graph
     topics = [t for t in graph.topics() if t.name not in IGNORED_TOPICS]
@@ -119,6 +126,8 @@ def diagnose(runtime: Runtime, monitor: LagMonitor | None = None) -> Report:
     events = tuple(monitor.events) if monitor is not None else ()
     if monitor is not None:
         checks.append(_lag(events))
+    if control is not None:
+        checks.append(_control(control))
     missing = [
         f"{name} is not installed" for name in _REQUIRED if versions[name] == "not installed"
     ]
@@ -241,6 +250,27 @@ def _lag(events: tuple[LagEvent, ...]) -> Check:
         for (node, callback), lags in sorted(worst.items())
     )
     return Check(name="callbacks blocking the loop", passed=not reasons, reasons=reasons)
+
+
+def _control(stats: ConnectionStats) -> Check:
+    reasons = []
+    if stats.out_of_descriptors:
+        reasons.append(
+            f"the graph ran out of file descriptors (limit {stats.descriptor_limit}): "
+            f"{stats.out_of_descriptors} connection(s) refused; something holds too many open"
+        )
+    warnings = [
+        f"{count} {what}"
+        for count, what in (
+            (stats.refused, f"connection(s) refused at the limit of {stats.connection_limit} open at once"),
+            (stats.evicted, "idle connection(s) closed to let others in"),
+            (stats.timed_out, "connection(s) closed for idleness or a half-sent request"),
+            (stats.bad_requests, "connection(s) sent malformed requests (see the graph's log)"),
+            (stats.dropped, "streamed message(s) dropped for readers that did not keep up"),
+        )
+        if count
+    ]
+    return Check(name="control endpoint", passed=not reasons, reasons=tuple(reasons), warnings=tuple(warnings))
 
 
 @functools.cache  # fixed for the process; importlib.metadata scans the path

@@ -24,34 +24,51 @@ Every key is optional except each node's ``use``::
     restart = "transient"     # permanent, temporary
     delay = 0.0               # start this node so many seconds later (launch's TimerAction)
 
-Any error names the file, the key path and the problem, as one line.
+Any error names the file, the key path and the problem, as one line.  Beyond
+each key's type, the file must name at least one node; numbers must be finite
+and in range (durations, periods and delays at most :data:`~actors.config.MAX_SECONDS`,
+``intensity`` at most 1,000,000, ``max_backoff`` at least ``backoff``); and
+no two nodes may have the same full name, delayed or not (a node without a
+``name`` has the one its class gives ``super().__init__``, when the class
+says it plainly).
 """
 
 from __future__ import annotations
 
+import ast
 import importlib
+import inspect
+import textwrap
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
 import msgspec
 
-from actors.config import load_toml
+from actors.config import MAX_SECONDS, load_toml
 from actors.errors import GraphFileError, InvalidNameError, RosArgsError
 from actors.names import expand, fully_qualified, normalize_namespace, validate_node_name
 from actors.node import Node
 from actors.rosargs import load_params_file, node_key_matches, values_for
 from actors.supervisor import RestartType, Strategy, SupervisorPolicy
 
-__all__ = ["RuntimeSection", "SupervisorSection", "NodeEntry", "GraphFile", "load_graph", "import_node_class"]
+__all__ = [
+    "RuntimeSection",
+    "SupervisorSection",
+    "NodeEntry",
+    "GraphFile",
+    "load_graph",
+    "import_node_class",
+    "default_node_name",
+]
 
-NonNegative = Annotated[float, msgspec.Meta(ge=0)]
+Seconds = Annotated[float, msgspec.Meta(ge=0, le=MAX_SECONDS)]
 
 
 class RuntimeSection(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
     """``[runtime]``: how the graph runs."""
 
     clock: Literal["wall", "virtual"] = "wall"
-    duration: NonNegative = 0.0
+    duration: Seconds = 0.0
     log_level: Literal["debug", "info", "warn", "warning", "error", "fatal"] = "info"
 
 
@@ -59,10 +76,14 @@ class SupervisorSection(msgspec.Struct, frozen=True, kw_only=True, forbid_unknow
     """``[supervisor]``: restart strategy, intensity and backoff."""
 
     strategy: Strategy = Strategy.ONE_FOR_ONE
-    intensity: Annotated[int, msgspec.Meta(ge=0)] = 3
-    period: Annotated[float, msgspec.Meta(gt=0)] = 5.0
-    backoff: NonNegative = 0.1
-    max_backoff: NonNegative = 2.0
+    intensity: Annotated[int, msgspec.Meta(ge=0, le=1_000_000)] = 3
+    period: Annotated[float, msgspec.Meta(gt=0, le=MAX_SECONDS)] = 5.0
+    backoff: Seconds = 0.1
+    max_backoff: Seconds = 2.0
+
+    def __post_init__(self) -> None:
+        if self.max_backoff < self.backoff:
+            raise ValueError(f"max_backoff ({self.max_backoff:g}) must be at least backoff ({self.backoff:g})")
 
     def policy(self) -> SupervisorPolicy:
         """These settings as the runtime's SupervisorPolicy."""
@@ -79,7 +100,7 @@ class NodeEntry(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields
     params_file: str | None = None  # a ROS parameter file, relative to the graph file; params win over it
     remap: dict[str, str] = {}
     restart: RestartType = RestartType.TRANSIENT
-    delay: NonNegative = 0.0  # seconds after the graph starts, as launch's TimerAction
+    delay: Seconds = 0.0  # seconds after the graph starts, as launch's TimerAction
 
 
 class GraphFile(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
@@ -110,20 +131,27 @@ def import_node_class(use: str) -> type[Node]:
 
 
 def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
-    """Load and check a graph file: schema, names, and that every ``use`` imports.
+    """Load and check a graph file: schema, values, names, and that every ``use`` imports.
 
     Returns the decoded file and the node classes, in file order.  Raises
-    GraphFileError naming the file, the key path and the problem.
+    GraphFileError naming the file, the key path and the problem; nothing has
+    started then, so a graph with a mistake anywhere never starts half-way.
     """
     graph = load_toml(path, GraphFile, GraphFileError)
+    if not graph.nodes:
+        raise GraphFileError(
+            f'{path}: no nodes: a graph needs at least one [[nodes]] table with use = "module:Class"'
+        )
     classes = []
     nodes = list(graph.nodes)
+    taken: dict[str, int] = {}  # full node names known before start, and the entry that has each
     for i, entry in enumerate(graph.nodes):
         key = f"nodes[{i}]"
         try:
-            classes.append(import_node_class(entry.use))
+            cls = import_node_class(entry.use)
         except ValueError as exc:
             raise GraphFileError(f"{path}: {key}.use: {exc}") from None
+        classes.append(cls)
         try:
             if entry.name is not None:
                 validate_node_name(entry.name)
@@ -140,6 +168,16 @@ def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
         if entry.params_file is not None:
             params = _file_params(Path(path).parent / entry.params_file, entry, namespace, f"{path}: {key}")
             nodes[i] = msgspec.structs.replace(entry, params={**params, **entry.params})
+        name = entry.name or default_node_name(cls)
+        if name is not None:
+            fqn = fully_qualified(namespace, name)
+            if fqn in taken:
+                where = "name" if entry.name else "use"
+                raise GraphFileError(
+                    f"{path}: {key}.{where}: a node named {fqn} is already nodes[{taken[fqn]}]; "
+                    "give one of them another name"
+                )
+            taken[fqn] = i
     return msgspec.structs.replace(graph, nodes=nodes), classes
 
 

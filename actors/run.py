@@ -25,6 +25,7 @@ import anyio
 import anyio.abc
 
 from actors.clock import WALL_LOOPS, VirtualTimeLoop
+from actors.config import MAX_SECONDS
 from actors.control import ControlEndpoint
 from actors.errors import ActorsError, Escalation, GraphFileError
 from actors.graph import GraphFile, NodeEntry, load_graph
@@ -64,8 +65,8 @@ def _seconds(text: str) -> float:
         value = float(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"not a number of seconds: {text!r}") from None
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"duration must be >= 0, got {value}")
+    if not 0 <= value <= MAX_SECONDS:  # also refuses nan and inf, on which a virtual clock stands still
+        raise argparse.ArgumentTypeError(f"duration must be from 0 to {MAX_SECONDS:g} seconds, got {text}")
     return value
 
 

@@ -353,7 +353,7 @@ def test_graph_writes_a_dot_file(graph, tmp_path):
         ),
         (
             ("topic", "pub", "/kill", "std_msgs/msg/Bool", "data: 3"),
-            "std_msgs/msg/Bool: Expected `bool`",
+            "field 'data' of std_msgs/msg/Bool: expected a bool, got the integer 3",
         ),
         (
             ("service", "call", "/add_two_ints", "example_interfaces/srv/AddTwoInts", "{a: [1"),

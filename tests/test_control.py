@@ -79,16 +79,18 @@ async def ask(path: os.PathLike[str], *frames: bytes) -> Reply:
         return decode_reply(await receive.receive_exactly(size))
 
 
-async def closed_by_server(path: os.PathLike[str], data: bytes) -> bool:
-    """Whether the server hangs up after ``data`` without replying."""
+async def refused_and_closed(path: os.PathLike[str], data: bytes) -> str:
+    """The error the server answers ``data`` with, checking that it then hangs up."""
     async with await anyio.connect_unix(path) as stream:
         await stream.send(data)
+        receive = BufferedByteReceiveStream(stream)
         with anyio.fail_after(5):
-            try:
-                await stream.receive()
-            except (anyio.EndOfStream, anyio.BrokenResourceError):
-                return True  # a hang-up, or a reset when it left our bytes unread
-    return False
+            (size,) = struct.unpack(">I", await receive.receive_exactly(4))
+            reply = decode_reply(await receive.receive_exactly(size))
+            with pytest.raises((anyio.EndOfStream, anyio.IncompleteRead, anyio.BrokenResourceError)):
+                await receive.receive_exactly(1)  # a hang-up, or a reset when it left our bytes unread
+    assert not reply.ok
+    return reply.error
 
 
 async def test_the_socket_is_0600_in_a_0700_directory_of_this_user_and_goes_away_on_exit(name):
@@ -102,14 +104,24 @@ async def test_the_socket_is_0600_in_a_0700_directory_of_this_user_and_goes_away
     assert not path.exists()
 
 
-async def test_garbage_and_an_oversized_length_close_only_that_connection(name):
+async def test_garbage_and_an_oversized_length_are_answered_and_close_only_that_connection(name, caplog):
     async with Runtime(name=name, attach=[ControlEndpoint()]) as rt:
         rt.spawn(Talker)
         listener = rt.spawn(Listener)
         path = server(rt).path
-        assert await closed_by_server(path, b"\xc1 this is not msgpack at all")
-        assert await closed_by_server(path, struct.pack(">I", MAX_FRAME + 1) + b"x" * 64)
-        assert await closed_by_server(path, struct.pack(">I", 3) + b"\xc1\xc1\xc1")
+        assert (await refused_and_closed(path, b"\xc1 this is not msgpack at all")).startswith(
+            "a request of 3240129640 bytes is over the limit of 1048576"
+        )
+        assert await refused_and_closed(path, struct.pack(">I", MAX_FRAME + 1) + b"x" * 64) == (
+            f"a request of {MAX_FRAME + 1} bytes is over the limit of {MAX_FRAME}"
+        )
+        assert (await refused_and_closed(path, struct.pack(">I", 3) + b"\xc1\xc1\xc1")).startswith(
+            "a request must be a msgpack map"
+        )
+        deep = b"\x91" * 200_000 + b"\xc0"  # nesting deeper than any decoder recurses
+        assert (await refused_and_closed(path, struct.pack(">I", len(deep)) + deep)).startswith(
+            "a request must be a msgpack map"
+        )
         heard = len(listener.heard)
         reply = await ask(path, frame(GetGraph()))
         assert reply.ok
@@ -118,6 +130,10 @@ async def test_garbage_and_an_oversized_length_close_only_that_connection(name):
         with anyio.fail_after(5):
             while len(listener.heard) == heard:  # the graph still runs
                 await anyio.sleep(0.01)
+        assert server(rt).stats().bad_requests == 4
+    # One line each, no traceback.
+    logged = [r for r in caplog.records if "control endpoint" in r.getMessage()]
+    assert len(logged) == 4 and not any(r.exc_info for r in logged)
 
 
 async def test_a_bad_request_gets_an_error_reply_and_the_connection_stays_open(name):

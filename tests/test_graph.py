@@ -52,9 +52,12 @@ restart = "permanent"
 @pytest.mark.parametrize(
     ("text", "expected"),
     [
-        ('[runtime]\nclok = "wall"\n', "runtime.clok: unknown key"),
-        ("[supervisor]\nintensity = \"three\"\n", "supervisor.intensity: expected an integer, got a string"),
-        ('[runtime]\nclock = "sundial"\n', "runtime.clock: invalid enum value 'sundial'"),
+        ('[runtime]\nclok = "wall"\n', "runtime.clok: unknown key (did you mean 'clock'?)"),
+        ("[supervisor]\nintensity = \"three\"\n", "supervisor.intensity: expected an integer, got the string 'three'"),
+        ('[runtime]\nclock = "sundial"\n', "runtime.clock: 'sundial' is not one of "),
+        ('[supervisor]\nstrategy = "one_for_al"\n',
+         "supervisor.strategy: 'one_for_al' is not one of one_for_one, one_for_all, rest_for_one "
+         "(did you mean 'one_for_all'?)"),
         ("[runtime]\nduration = -1\n", "runtime.duration: expected a number >= 0"),
         ('[[nodes]]\nname = "x"\n', "nodes[0].use: missing required key"),
         ('[[nodes]]\nuse = "nodes.nope:Missing"\n', "nodes[0].use: cannot import 'nodes.nope'"),
@@ -62,7 +65,9 @@ restart = "permanent"
         ('[[nodes]]\nuse = "nodes.talker"\n', "nodes[0].use: expected 'module:Class'"),
         ('[[nodes]]\nuse = "actors:Runtime"\n', "nodes[0].use: 'actors:Runtime' is not a subclass"),
         ('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nname = "bad name"\n', "nodes[0].name: invalid node name"),
-        ('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nrestart = "always"\n', "nodes[0].restart: invalid enum value"),
+        ('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nrestart = "always"\n',
+         "nodes[0].restart: 'always' is not one of permanent, transient, temporary"),
+        ('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nparms = {}\n', "nodes[0].parms: unknown key (did you mean 'params'?)"),
         ("[runtime\n", "TOML syntax error"),
     ],
 )

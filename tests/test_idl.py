@@ -289,11 +289,11 @@ def test_user_root_actions_have_rclpys_shape(user_root):
 @pytest.mark.parametrize(
     ("change", "path"),
     [
-        ({"tag": "toolong"}, "$.tag"),
-        ({"weights": [1.0]}, "$.weights"),
-        ({"raw": [1, 2]}, "$.raw"),
-        ({"labels": ["a", "b", "c"]}, "$.labels"),
-        ({"part": {"id": 40000}}, "$.part.id"),
+        ({"tag": "toolong"}, "tag"),
+        ({"weights": [1.0]}, "weights"),
+        ({"raw": [1, 2]}, "raw"),
+        ({"labels": ["a", "b", "c"]}, "labels"),
+        ({"part": {"id": 40000}}, "part.id"),
     ],
 )
 def test_user_root_bounds_are_enforced_on_decode(user_root, change, path):
@@ -301,8 +301,7 @@ def test_user_root_bounds_are_enforced_on_decode(user_root, change, path):
 
     with pytest.raises(MessageValidationError) as caught:
         codec.convert(change, Thing)
-    assert str(caught.value).startswith("my_pkg/msg/Thing: ")
-    assert f"at `{path}`" in str(caught.value)
+    assert str(caught.value).startswith(f"field '{path}' of my_pkg/msg/Thing: expected ")
 
 
 def test_user_root_is_found_by_name_once_registered(user_root, monkeypatch):

@@ -16,11 +16,11 @@ ROOT = Path(actors.__file__).resolve().parent
 # Lowest first.  A module may import its own layer and those below it, never above.
 LAYERS: list[set[str]] = [
     {"errors", "log", "names", "clock", "actor", "config", "idl", "idl_gen", "codec", "rosargs", "layout", "cdr",
-     "typehash", "snapshot", "qos"},
+     "typehash", "snapshot", "qos", "explain"},
     {"topics", "services", "timers", "params", "actions", "endpoint_info", "refusals", "qos_events", "transport"},
     {"node", "node_params", "node_graph", "param_client"},
     {"supervisor", "runtime", "introspection", "graph"},
-    {"control", "doctor", "transport.zenoh"},
+    {"control", "connections", "doctor", "transport.zenoh"},
     {"run", "testing", "cli", "__main__", "__init__", "compat"},
 ]
 

@@ -29,7 +29,7 @@ def test_a_malformed_graph_exits_2_with_one_line(run_module, tmp_path):
     bad.write_text('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nparms = {}\n')
     result = run_module("actors.run", str(bad))
     assert result.returncode == 2
-    assert result.stderr.strip() == f"error: {bad}: nodes[0].parms: unknown key"
+    assert result.stderr.strip() == f"error: {bad}: nodes[0].parms: unknown key (did you mean 'params'?)"
     assert result.stdout == ""
 
 

@@ -49,14 +49,15 @@ def test_empty_world_is_a_10_m_square_around_the_origin() -> None:
     ("text", "expected"),
     [
         (MINIMAL + "colour = 1\n", "colour: unknown key"),
+        (MINIMAL + "[[boxs]]\n", "boxs: unknown key (did you mean 'boxes'?)"),
         (MINIMAL + BOX + BOX + "colour = 'red'\n", "boxes[1].colour: unknown key"),
         (
             MINIMAL + BOX + BOX.replace("[1, 1]", "[1, 2, 3]"),
-            "boxes[1].size: expected an array of 2 numbers, got 3 items",
+            "boxes[1].size: expected an array of 2 items, got 3",
         ),
         (
             MINIMAL + "[[boxes]]\ncenter = [0, 0]\nsize = 'big'\n",
-            "boxes[0].size: expected an array, got a string",
+            "boxes[0].size: expected an array, got the string 'big'",
         ),
         (MINIMAL + "[[boxes]]\nsize = [1, 1]\n", "boxes[0].center: missing required key"),
         (
@@ -73,7 +74,7 @@ def test_empty_world_is_a_10_m_square_around_the_origin() -> None:
         ),
         (
             MINIMAL + "[[stop_signs]]\nposition = [0, 'north']\n",
-            "stop_signs[0].position[1]: expected a number, got a string",
+            "stop_signs[0].position[1]: expected a number, got the string 'north'",
         ),
         (
             MINIMAL + "[[polygons]]\nvertices = [[0, 0], [1, 1], [1, 0], [0, 1]]\n",
@@ -81,7 +82,7 @@ def test_empty_world_is_a_10_m_square_around_the_origin() -> None:
         ),
         (
             MINIMAL + "[[polygons]]\nvertices = [[0, 0], [1, 1]]\n",
-            "polygons[0].vertices: expected an array of length >= 3",
+            "polygons[0].vertices: expected at least 3 items, got 2",
         ),
         (
             "bounds = { min = [1, -1], max = [1, 1] }\n",
@@ -105,8 +106,15 @@ def test_missing_world_file(tmp_path: Path) -> None:
         WorldFileError, match=r"nowhere\.toml: cannot read: No such file"
     ):
         load_world(tmp_path / "nowhere.toml")
-    with pytest.raises(WorldFileError, match=r"worlds/nowhere\.toml: cannot read"):
-        load_world("nowhere")
+
+
+def test_an_unknown_world_name_lists_the_shipped_ones() -> None:
+    with pytest.raises(WorldFileError) as caught:
+        load_world("sign")
+    assert str(caught.value) == (
+        "unknown world 'sign' (did you mean 'signs'?); the shipped worlds are empty, signs "
+        "(or give the path of a world file)"
+    )
 
 
 def test_defaults_and_frozen(tmp_path: Path) -> None:

@@ -178,7 +178,7 @@ def test_a_bad_world_file_exits_2_naming_file_and_key(run_module, tmp_path):
     graph.write_text(f'[[nodes]]\nuse = "world.sim:World"\nparams = {{ world = "{world}" }}\n')
     result = run_module("actors.run", str(graph), "--clock", "virtual", "--duration", "1")
     assert result.returncode == 2
-    assert result.stderr.strip().endswith(f"{world}: boxes[0].size: expected an array of 2 numbers, got 3 items")
+    assert result.stderr.strip().endswith(f"{world}: boxes[0].size: expected an array of 2 items, got 3")
 
 
 class BadCommands(Node):

@@ -50,7 +50,7 @@ def test_add_and_remove_robots() -> None:
     ("kwargs", "message"),
     [
         ({"name": "a"}, "a robot named 'a' already exists"),
-        ({"name": "c", "model": "waffle"}, "unknown robot model 'waffle'; known: burger, asl_tb3"),
+        ({"name": "c", "model": "waffle"}, "unknown robot model 'waffle'; the models are burger, asl_tb3"),
         ({"name": "c", "x": 1.7}, "would start overlapping obstacle 'box_east'"),
         ({"name": "c", "x": 0.1, "y": -2.0}, "would start overlapping obstacle 'stop_sign'"),
         ({"name": "c", "x": 3.0}, "would start overlapping a wall"),

@@ -42,6 +42,7 @@ import msgspec
 
 from actors.config import load_toml
 from actors.errors import WorldFileError
+from actors.explain import did_you_mean
 
 __all__ = [
     "WORLDS_DIR",
@@ -54,6 +55,7 @@ __all__ = [
     "Wall",
     "World",
     "load_world",
+    "shipped_worlds",
     "posts",
     "solids",
 ]
@@ -151,8 +153,19 @@ def load_world(source: str | os.PathLike[str]) -> World:
     """
     path = Path(source)
     if path.suffix == "" and path.parent == Path("."):
+        known = shipped_worlds()
+        if path.name not in known:
+            raise WorldFileError(
+                f"unknown world {path.name!r}{did_you_mean(path.name, known)}; the shipped worlds are "
+                f"{', '.join(known)} (or give the path of a world file)"
+            )
         path = WORLDS_DIR / f"{path.name}.toml"
     return load_toml(path, World, WorldFileError)
+
+
+def shipped_worlds() -> list[str]:
+    """The names of the shipped worlds, sorted."""
+    return sorted(p.stem for p in WORLDS_DIR.glob("*.toml"))
 
 
 # --- static geometry -------------------------------------------------------------

@@ -16,6 +16,8 @@ import numpy as np
 import pymunk
 import pymunk.autogeometry
 
+from actors.explain import did_you_mean
+
 from .arena import Post, Solid, World, load_world, posts, solids
 from .drive import MODELS, Contact, Pose, Robot, RobotModel
 from .lidar import Lidar, LidarSpec, finish_ranges
@@ -92,7 +94,10 @@ class Simulation:
             raise ValueError(f"a robot named {name!r} already exists")
         if isinstance(model, str):
             if model not in MODELS:
-                raise ValueError(f"unknown robot model {model!r}; known: {', '.join(MODELS)}")
+                raise ValueError(
+                    f"unknown robot model {model!r}{did_you_mean(model, MODELS)}; the models are "
+                    f"{', '.join(MODELS)}"
+                )
             model = MODELS[model]
         if not all(math.isfinite(value) for value in (x, y, theta)):
             raise ValueError(f"robot {name!r}: start pose must be finite, got ({x}, {y}, {theta})")

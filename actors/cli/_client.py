@@ -36,6 +36,7 @@ from actors.errors import ControlError
 
 __all__ = [
     "NO_GRAPH",
+    "BUSY_RETRY",
     "Connection",
     "add_verb",
     "print_names",
@@ -51,6 +52,8 @@ __all__ = [
 T = TypeVar("T")
 
 NO_GRAPH = "no running actors graph found (start one with: python -m actors.run graph.toml)"
+BUSY_RETRY = 2.0
+"""Seconds the command line keeps asking a graph that refused it as too busy."""
 _sample_decoder = msgspec.msgpack.Decoder(Sample)
 
 
@@ -72,12 +75,17 @@ class Connection:
     """A connection to one graph's endpoint: requests, then possibly a stream of samples.
 
     ``name`` is the endpoint's name.  Use as a context manager; closing the
-    connection removes whatever its requests created in the graph.
+    connection removes whatever its requests created in the graph.  A graph
+    too busy to take the connection says so at once; then its first request
+    is sent again on a new connection (to ``path``) for up to :data:`BUSY_RETRY` s.
     """
 
-    def __init__(self, sock: socket.socket, name: str) -> None:
+    def __init__(self, sock: socket.socket, name: str, path: Path | None = None) -> None:
         self.name = name
         self._sock = sock
+        self._path = path
+        self._answered = False
+        self._busy_until: float | None = None
         self._buffer = bytearray()
 
     def __enter__(self) -> Connection:
@@ -101,19 +109,43 @@ class Connection:
         try:
             self._sock.sendall(frame(request))
         except OSError as exc:  # not BrokenPipeError: that means our stdout was closed
-            raise ControlError(
-                f"lost the connection to graph {self.name}: {exc.strerror or exc}"
-            ) from None
-        body = self._read(timeout)
+            # A graph too busy to take us answers before we speak, and hangs up.
+            body = None if self._answered else self._read(0.5, quiet=True)
+            if body is None:
+                raise ControlError(
+                    f"lost the connection to graph {self.name}: {exc.strerror or exc}"
+                ) from None
+        else:
+            body = self._read(timeout)
         if body is None:
             raise ControlError(f"graph {self.name} did not answer within {timeout:g} s")
         with self._readable():
             reply = decode_reply(body)
+            if reply.busy and not self._answered and self._reconnect():
+                return self.request(request, result_type, timeout=timeout)
+            self._answered = True
             if not reply.ok:
                 raise ControlError(reply.error)
             if result_type is Any:
                 return reply.result  # type: ignore[no-any-return]
             return msgspec.convert(reply.result, result_type)
+
+    def _reconnect(self) -> bool:
+        """A new socket to the same graph after a refusal, a little later; False once time is up."""
+        if self._path is None:
+            return False
+        now = time.monotonic()
+        if self._busy_until is None:
+            self._busy_until = now + BUSY_RETRY
+        if now >= self._busy_until:
+            return False
+        time.sleep(min(0.05, self._busy_until - now))  # the graph asked for a moment
+        sock = _open(self._path)
+        if sock is None:
+            return False
+        self._sock.close()
+        self._sock, self._buffer = sock, bytearray()
+        return True
 
     def graph(self) -> GraphSnapshot:
         """The graph as it is now."""
@@ -138,8 +170,11 @@ class Connection:
                 f"do both run the same version of actors?"
             ) from None
 
-    def _read(self, timeout: float | None) -> bytes | None:
-        """One frame body, or None on timeout; a partial frame stays buffered for the next call."""
+    def _read(self, timeout: float | None, *, quiet: bool = False) -> bytes | None:
+        """One frame body, or None on timeout (or, ``quiet``, a lost connection).
+
+        A partial frame stays buffered for the next call.
+        """
         deadline = None if timeout is None else time.monotonic() + timeout
         buffer = self._buffer
         while True:
@@ -158,8 +193,12 @@ class Connection:
             except TimeoutError:
                 return None
             except OSError as exc:
+                if quiet:
+                    return None
                 raise ControlError(f"lost the connection to graph {self.name}: {exc.strerror or exc}") from None
             if not chunk:
+                if quiet:
+                    return None
                 raise ControlError(f"graph {self.name} closed the connection (did it stop?)")
             buffer += chunk
 
@@ -188,11 +227,11 @@ def connect(graph: str | None) -> Connection:
             others = [name for name, path in paths.items() if is_alive(path)]
             running = f" (running: {', '.join(others)})" if others else ""
             raise ControlError(f"no running actors graph named {graph!r}{running}")
-        return Connection(sock, graph)
+        return Connection(sock, graph, paths[graph])
     live = {name: sock for name, path in paths.items() if (sock := _open(path)) is not None}
     if len(live) == 1:
         ((name, sock),) = live.items()
-        return Connection(sock, name)
+        return Connection(sock, name, paths[name])
     for sock in live.values():
         sock.close()
     if not live:
