@@ -202,3 +202,36 @@ def _file_params(file: Path, entry: NodeEntry, namespace: str, where: str) -> di
 
 def _any_name(node_key: str, namespace: str) -> bool:
     return all(node_key_matches(node_key, fully_qualified(namespace, name)) for name in ("a", "b"))
+
+
+def default_node_name(cls: type[Node]) -> str | None:
+    """The name ``cls`` gives ``super().__init__`` when its source says it plainly, else None.
+
+    ``super().__init__("talker")`` or ``super().__init__(node_name="talker")``
+    in the class's own ``__init__`` (or the nearest base that has one).  A name
+    computed at run time is None: the runtime still refuses a duplicate when
+    it starts the node.
+    """
+    for klass in cls.__mro__:
+        if klass is Node or "__init__" not in vars(klass):
+            continue
+        try:
+            tree = ast.parse(textwrap.dedent(inspect.getsource(vars(klass)["__init__"])))
+        except (OSError, TypeError, SyntaxError):
+            return None
+        for node in ast.walk(tree):
+            if (
+                isinstance(node, ast.Call)
+                and isinstance(node.func, ast.Attribute)
+                and node.func.attr == "__init__"
+                and isinstance(node.func.value, ast.Call)
+                and getattr(node.func.value.func, "id", None) == "super"
+            ):
+                given = node.args[0] if node.args else next(
+                    (k.value for k in node.keywords if k.arg == "node_name"), None
+                )
+                if isinstance(given, ast.Constant) and isinstance(given.value, str):
+                    return given.value
+                return None
+        return None
+    return None

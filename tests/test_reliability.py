@@ -215,7 +215,7 @@ async def test_3_stalled_scan_readers_lose_scans_instead_of_growing_the_graph(na
         pool = endpoint.server.pool
         assert all(c._outbox_bytes <= limits.outbox_bytes for c in pool.connections)
         scans = [t for t in rt.graph.topics() if t.name == "/scan"][0]
-        assert all(s.queued == 0 for s in scans.subscriptions)  # nothing piles up before the outbox
+        assert all(s.queued <= 1 for s in scans.subscriptions)  # nothing piles up before the outbox
         assert pool.stats().dropped > 5 * 500  # 600 scans each, most of them lost
         for stream in readers:
             await stream.aclose()
