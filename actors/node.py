@@ -28,6 +28,7 @@ from actors.log import NodeLogger
 from actors.names import Resolver, fully_qualified, normalize_namespace, validate_node_name
 from actors.node_graph import GraphQueries
 from actors.node_params import ParameterMethods
+from actors.param_services import serve as serve_parameters
 from actors.params import Parameter, ParameterStore
 from actors.services import Client, Service, ServiceTable
 from actors.timers import Deadlines, Timer
@@ -157,7 +158,7 @@ class NodeCore:
             # simulated (virtual) time or wall time for every node alike.
             self.params.declare("use_sim_time", False)
         if start_parameter_services:
-            self.params.serve()
+            serve_parameters(self.params, self)
 
     # -- entities -------------------------------------------------------------
 

@@ -16,17 +16,16 @@ declared (and int lists for double arrays), and stored as a float, so that
 ``param set /node speed 1`` and a graph's ``speed = 1`` just work; rclpy refuses
 them as the wrong type.
 
-The store also answers the node's parameter services (``~/get_parameters``,
-``~/set_parameters``, ``~/set_parameters_atomically``, ``~/list_parameters``,
-``~/describe_parameters``, ``~/get_parameter_types``) with the
-``rcl_interfaces`` types, for the command line and parameter clients.
+A parameter's value and type (``Parameter``, ``Parameter.Type``) are in
+``actors.parameter``, re-exported here; the node's parameter services, which
+answer the command line and parameter clients from a store, are in
+``actors.param_services``.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping, Sequence
-from enum import IntEnum
 from typing import Any, Protocol
 
 import msgspec
@@ -37,10 +36,18 @@ from actors.errors import (
     InvalidParameterTypeException,
     InvalidParameterValueException,
     ParameterAlreadyDeclaredException,
-    ParameterError,
     ParameterImmutableException,
     ParameterNotDeclaredException,
     ParameterUninitializedException,
+)
+from actors.parameter import (
+    PARAMETER_SEPARATOR_STRING,
+    TYPES,
+    Parameter,
+    ParameterType,
+    value_from_msg,
+    value_to_msg,
+    widen,
 )
 from interfaces.rcl_interfaces.msg import (
     ListParametersResult,
@@ -49,193 +56,22 @@ from interfaces.rcl_interfaces.msg import (
     ParameterValue,
     SetParametersResult,
 )
-from interfaces.rcl_interfaces.msg import Parameter as ParameterMsg
 
 __all__ = [
+    # Defined in actors.parameter, imported from here by code written before it.
     "Parameter",
     "ParameterType",
-    "ParameterHost",
-    "ParameterStore",
     "PARAMETER_SEPARATOR_STRING",
     "value_to_msg",
     "value_from_msg",
+    "OnSet",
+    "PreSet",
+    "PostSet",
+    "ParameterHost",
+    "ParameterStore",
 ]
 
-PARAMETER_SEPARATOR_STRING = "."
-
-
-class ParameterType(IntEnum):
-    """Parameter types, numbered as ``rcl_interfaces/msg/ParameterType`` (rclpy's ``Parameter.Type``)."""
-
-    NOT_SET = 0
-    BOOL = 1
-    INTEGER = 2
-    DOUBLE = 3
-    STRING = 4
-    BYTE_ARRAY = 5
-    BOOL_ARRAY = 6
-    INTEGER_ARRAY = 7
-    DOUBLE_ARRAY = 8
-    STRING_ARRAY = 9
-
-    @classmethod
-    def from_parameter_value(cls, value: Any) -> ParameterType:
-        """The type of ``value``; TypeError for a value no parameter can hold.
-
-        As in rclpy an empty list is a BYTE_ARRAY (declare ``Parameter.Type.X``
-        to say which kind of empty list is meant), and a list mixing ints and
-        floats is a DOUBLE_ARRAY.
-        """
-        if value is None:
-            return cls.NOT_SET
-        if isinstance(value, bool):
-            return cls.BOOL
-        if isinstance(value, int):
-            return cls.INTEGER
-        if isinstance(value, float):
-            return cls.DOUBLE
-        if isinstance(value, str):
-            return cls.STRING
-        if isinstance(value, (bytes, bytearray)):
-            return cls.BYTE_ARRAY
-        if isinstance(value, (list, tuple)):
-            kinds = {type(v) for v in value}
-            if kinds <= {bytes}:
-                return cls.BYTE_ARRAY
-            if kinds <= {int, float} and float in kinds:
-                return cls.DOUBLE_ARRAY
-            if len(kinds) == 1 and (kind := kinds.pop()) in _ELEMENT:
-                return _ELEMENT[kind]
-        raise TypeError(
-            f"a parameter holds bool, int, float, str, bytes or a list of one of "
-            f"bool/int/float/str; got {value!r}"
-        )
-
-    def check(self, value: Any) -> bool:
-        """Whether ``value`` fits this type (an int fits DOUBLE, int lists fit DOUBLE_ARRAY)."""
-        if self is ParameterType.NOT_SET:
-            return value is None
-        try:
-            actual = ParameterType.from_parameter_value(value)
-        except TypeError:
-            return False
-        return actual is self or (actual, self) in _WIDENED or (
-            # An empty list fits every array type.
-            self >= ParameterType.BYTE_ARRAY and isinstance(value, (list, tuple)) and not value
-        )
-
-
-_TYPES = tuple(ParameterType)  # by number: a tuple lookup costs far less than ParameterType(n)
-_ELEMENT = {
-    bool: ParameterType.BOOL_ARRAY,
-    int: ParameterType.INTEGER_ARRAY,
-    float: ParameterType.DOUBLE_ARRAY,
-    str: ParameterType.STRING_ARRAY,
-}
-# (given, declared) pairs accepted by widening ints to floats.
-_WIDENED = {
-    (ParameterType.INTEGER, ParameterType.DOUBLE),
-    (ParameterType.INTEGER_ARRAY, ParameterType.DOUBLE_ARRAY),
-}
-# ParameterValue's field for each type.
-_FIELDS = {
-    ParameterType.BOOL: "bool_value",
-    ParameterType.INTEGER: "integer_value",
-    ParameterType.DOUBLE: "double_value",
-    ParameterType.STRING: "string_value",
-    ParameterType.BYTE_ARRAY: "byte_array_value",
-    ParameterType.BOOL_ARRAY: "bool_array_value",
-    ParameterType.INTEGER_ARRAY: "integer_array_value",
-    ParameterType.DOUBLE_ARRAY: "double_array_value",
-    ParameterType.STRING_ARRAY: "string_array_value",
-}
 _REL_TOL = 1e-6  # how close a double must be to a range's bound or step, as rclpy
-
-
-def _widen(value: Any, type_: ParameterType) -> Any:
-    """``value`` as stored for ``type_``: ints become floats for DOUBLE and DOUBLE_ARRAY."""
-    if type_ is ParameterType.DOUBLE and isinstance(value, int) and not isinstance(value, bool):
-        return float(value)
-    if type_ is ParameterType.DOUBLE_ARRAY and any(isinstance(v, int) for v in value):
-        return [float(v) for v in value]
-    return value
-
-
-def value_to_msg(value: Any, type_: ParameterType | None = None) -> ParameterValue:
-    """A Python value as ``rcl_interfaces/msg/ParameterValue``; TypeError for a value no parameter holds."""
-    type_ = ParameterType.from_parameter_value(value) if type_ is None else type_
-    msg = ParameterValue(type=int(type_))
-    if type_ is ParameterType.BYTE_ARRAY:
-        msg.byte_array_value = value if isinstance(value, bytes) else b"".join(value)
-    elif type_ is not ParameterType.NOT_SET:
-        value = _widen(value, type_)
-        setattr(msg, _FIELDS[type_], list(value) if isinstance(value, tuple) else value)
-    return msg
-
-
-def value_from_msg(msg: ParameterValue) -> Any:
-    """The Python value held by an ``rcl_interfaces/msg/ParameterValue``."""
-    if msg.type == ParameterType.NOT_SET:
-        return None
-    try:
-        return getattr(msg, _FIELDS[ParameterType(msg.type)])
-    except ValueError:
-        raise ParameterError(f"unknown parameter type number {msg.type}") from None
-
-
-class Parameter:
-    """A named parameter value, as ``rclpy.parameter.Parameter``: ``Parameter(name, type_, value)``.
-
-    The type is inferred from the value when not given.  Raises TypeError when
-    ``type_`` is not a ``Parameter.Type`` or the value fits no type, ValueError
-    when the value does not fit ``type_`` (an int fits DOUBLE and is stored as a
-    float).  A Parameter does not change once made.
-    """
-
-    Type = ParameterType
-    __slots__ = ("_name", "_type", "_value")
-
-    def __init__(self, name: str, type_: ParameterType | None = None, value: Any = None) -> None:
-        if type_ is None:
-            type_ = ParameterType.from_parameter_value(value)
-        elif not isinstance(type_, ParameterType):
-            raise TypeError(f"type_ must be a Parameter.Type, got {type_!r}")
-        elif not type_.check(value):
-            raise ValueError(f"parameter {name!r}: type {type_.name} and value {value!r} do not agree")
-        self._name = name
-        self._type = type_
-        self._value = _widen(value, type_)
-
-    @property
-    def name(self) -> str:
-        """The parameter's name."""
-        return self._name
-
-    @property
-    def type_(self) -> ParameterType:
-        """The parameter's type."""
-        return self._type
-
-    @property
-    def value(self) -> Any:
-        """The parameter's value (None when NOT_SET)."""
-        return self._value
-
-    def __repr__(self) -> str:
-        return f"Parameter({self._name!r}, {self._type.name}, {self._value!r})"
-
-    def get_parameter_value(self) -> ParameterValue:
-        """The value as ``rcl_interfaces/msg/ParameterValue`` (``.string_value`` etc.)."""
-        return value_to_msg(self._value, self._type)
-
-    def to_parameter_msg(self) -> ParameterMsg:
-        """This parameter as ``rcl_interfaces/msg/Parameter``."""
-        return ParameterMsg(name=self._name, value=self.get_parameter_value())
-
-    @classmethod
-    def from_parameter_msg(cls, msg: ParameterMsg) -> Parameter:
-        """A Parameter from ``rcl_interfaces/msg/Parameter``."""
-        return cls(msg.name, ParameterType(msg.value.type), value_from_msg(msg.value))
 
 
 OnSet = Callable[[list[Parameter]], SetParametersResult]
@@ -244,15 +80,13 @@ PostSet = Callable[[list[Parameter]], None]
 
 
 class ParameterHost(Protocol):
-    """What a parameter store needs from its node: a name, a clock, services, the events topic."""
+    """What a parameter store needs from its node: a name, a clock, the events topic."""
 
     fqn: str
     clock: ROSClock
 
     @property
     def parameter_events(self) -> Any: ...
-
-    def create_service(self, srv_type: type, name: str, handler: Callable[[Any, Any], Any]) -> Any: ...
 
 
 class ParameterStore:
@@ -573,9 +407,9 @@ class ParameterStore:
         elif given is ParameterType.NOT_SET:
             if param.name in self._values:
                 return f"parameter {param.name!r} is statically typed: it cannot be unset"
-        elif given is not (declared := _TYPES[descriptor.type]) and not declared.check(param.value):
+        elif given is not (declared := TYPES[descriptor.type]) and not declared.check(param.value):
             return f"wrong type: expected {declared.name}, got {given.name} ({param.value!r})"
-        value = _widen(param.value, _TYPES[descriptor.type] if descriptor.type else given)
+        value = widen(param.value, TYPES[descriptor.type] if descriptor.type else given)
         # Ranges apply to numbers only: a range on a string parameter is ignored, as in rclpy.
         if isinstance(value, int) and not isinstance(value, bool) and descriptor.integer_range:
             return _outside_integer_range(value, descriptor.integer_range[0])
@@ -597,63 +431,6 @@ class ParameterStore:
         )
         publisher.publish(event)
 
-    # -- the parameter services ----------------------------------------------------
-
-    def serve(self) -> None:
-        """Create the node's parameter services, as every rclpy node has them."""
-        from interfaces.rcl_interfaces.srv import (
-            DescribeParameters,
-            GetParameters,
-            GetParameterTypes,
-            ListParameters,
-            SetParameters,
-            SetParametersAtomically,
-        )
-
-        core = self._core
-        core.create_service(DescribeParameters, "~/describe_parameters", self._on_describe)
-        core.create_service(GetParameters, "~/get_parameters", self._on_get)
-        core.create_service(GetParameterTypes, "~/get_parameter_types", self._on_get_types)
-        core.create_service(ListParameters, "~/list_parameters", self._on_list)
-        core.create_service(SetParameters, "~/set_parameters", self._on_set_service)
-        core.create_service(SetParametersAtomically, "~/set_parameters_atomically", self._on_set_atomically)
-
-    def _on_get(self, request: Any, response: Any) -> Any:
-        # An unknown or unset name gets a NOT_SET value in its place (rclpy answers nothing at all).
-        response.values = [
-            self._values[n].get_parameter_value() if n in self._values else ParameterValue()
-            for n in request.names
-        ]
-        return response
-
-    def _on_get_types(self, request: Any, response: Any) -> Any:
-        response.types = [int(self._values[n].type_) if n in self._values else 0 for n in request.names]
-        return response
-
-    def _on_set_service(self, request: Any, response: Any) -> Any:
-        response.results = [self._set_from_msgs([p]) for p in request.parameters]
-        return response
-
-    def _on_set_atomically(self, request: Any, response: Any) -> Any:
-        response.result = self._set_from_msgs(request.parameters)
-        return response
-
-    def _set_from_msgs(self, msgs: Sequence[ParameterMsg]) -> SetParametersResult:
-        try:
-            return self.set_atomically([Parameter.from_parameter_msg(m) for m in msgs])
-        except (ParameterNotDeclaredException, ValueError, TypeError) as exc:
-            return SetParametersResult(successful=False, reason=str(exc))
-
-    def _on_list(self, request: Any, response: Any) -> Any:
-        response.result = self.list_parameters(request.prefixes, request.depth)
-        return response
-
-    def _on_describe(self, request: Any, response: Any) -> Any:
-        response.descriptors = [
-            self._descriptors.get(n) or ParameterDescriptor(name=n) for n in request.names
-        ]
-        return response
-
 
 def _copy(descriptor: ParameterDescriptor) -> ParameterDescriptor:
     # The store fills in name and type: never in the caller's object.
@@ -664,7 +441,7 @@ def _stored(param: Parameter, descriptor: ParameterDescriptor | None) -> Paramet
     """``param`` as stored under ``descriptor``: an int given for a DOUBLE becomes a float."""
     if descriptor is None or descriptor.dynamic_typing:
         return param
-    declared = _TYPES[descriptor.type]
+    declared = TYPES[descriptor.type]
     if param.type_ is declared or param.type_ is ParameterType.NOT_SET:
         return param
     return Parameter(param.name, declared, param.value)  # an int for a DOUBLE, [] for a typed array

@@ -16,8 +16,9 @@ ROOT = Path(actors.__file__).resolve().parent
 # Lowest first.  A module may import its own layer and those below it, never above.
 LAYERS: list[set[str]] = [
     {"errors", "log", "names", "clock", "actor", "config", "idl", "idl_gen", "codec", "rosargs", "layout", "cdr",
-     "typehash", "snapshot", "qos", "explain"},
-    {"topics", "services", "timers", "params", "actions", "endpoint_info", "refusals", "qos_events", "transport"},
+     "typehash", "snapshot", "qos", "explain", "parameter"},
+    {"topics", "services", "timers", "params", "actions", "endpoint_info", "refusals", "qos_events", "transport",
+     "param_services"},
     {"node", "node_params", "node_graph", "param_client"},
     {"supervisor", "runtime", "introspection", "graph"},
     {"control", "connections", "doctor", "transport.zenoh"},

@@ -1,4 +1,4 @@
-"""Parameters: rclpy's semantics for declaring, reading, setting, callbacks and events; the services."""
+"""A node's parameters: rclpy's semantics for declaring, reading, setting, callbacks and events."""
 
 from __future__ import annotations
 
@@ -25,15 +25,6 @@ from interfaces.rcl_interfaces.msg import (
     ParameterDescriptor,
     ParameterEvent,
     SetParametersResult,
-)
-from interfaces.rcl_interfaces.msg import Parameter as ParameterMsg
-from interfaces.rcl_interfaces.srv import (
-    DescribeParameters,
-    GetParameters,
-    GetParameterTypes,
-    ListParameters,
-    SetParameters,
-    SetParametersAtomically,
 )
 from nodes.param_talker import MinimalParam
 
@@ -404,60 +395,7 @@ async def test_every_node_has_use_sim_time():
             node.declare_parameter("use_sim_time", False)
 
 
-def test_a_parameter_checks_its_value_against_its_type():
-    with pytest.raises(ValueError):
-        Parameter("p", Parameter.Type.INTEGER, "not a number")
-    with pytest.raises(TypeError):
-        Parameter("p", 2, 1)  # a plain number is not a Parameter.Type
-    with pytest.raises(TypeError):
-        Parameter("p", value=object())
-    param = Parameter("p", value=[True, False])
-    assert param.type_ is Parameter.Type.BOOL_ARRAY
-    with pytest.raises(AttributeError):
-        param.value = [False]  # type: ignore[misc]
-    assert Parameter("p", value=[]).type_ is Parameter.Type.BYTE_ARRAY  # rclpy's reading of an empty list
 
-
-async def test_the_parameter_services():
-    class Asker(Node):
-        def __init__(self) -> None:
-            super().__init__("asker")
-
-    async with Runtime() as rt:
-        rt.spawn(Tuned)
-        asker = rt.spawn(Asker)
-        core = asker._core
-        listed = await core.create_client(ListParameters, "/tuned/list_parameters").call(
-            ListParameters.Request(), timeout=1)
-        assert listed.result.names == ["count", "flag", "model", "names", "speed", "use_sim_time"]
-        got = await core.create_client(GetParameters, "/tuned/get_parameters").call(
-            GetParameters.Request(names=["speed", "names", "ghost"]), timeout=1)
-        assert [value_from_msg(v) for v in got.values] == [0.5, ["a", "b"], None]
-        types = await core.create_client(GetParameterTypes, "/tuned/get_parameter_types").call(
-            GetParameterTypes.Request(names=["speed", "ghost"]), timeout=1)
-        assert list(types.types) == [ParameterType.DOUBLE, ParameterType.NOT_SET]  # uint8[]: bytes
-        setter = core.create_client(SetParameters, "/tuned/set_parameters")
-        response = await setter.call(SetParameters.Request(parameters=[
-            ParameterMsg(name="speed", value=value_to_msg(0.25)),
-            ParameterMsg(name="model", value=value_to_msg("x")),
-            ParameterMsg(name="ghost", value=value_to_msg(1))]), timeout=1)
-        assert [r.successful for r in response.results] == [True, False, False]
-        assert "not declared" in response.results[2].reason  # an answer, not an exception
-        atomic = await core.create_client(SetParametersAtomically, "/tuned/set_parameters_atomically").call(
-            SetParametersAtomically.Request(parameters=[
-                ParameterMsg(name="count", value=value_to_msg(5)),
-                ParameterMsg(name="count", value=value_to_msg(70))]), timeout=1)
-        assert not atomic.result.successful and rt.node("tuned").get_parameter("count").value == 3
-        described = await core.create_client(DescribeParameters, "/tuned/describe_parameters").call(
-            DescribeParameters.Request(names=["count"]), timeout=1)
-        assert described.descriptors[0].integer_range[0].to_value == 10
-        assert rt.node("tuned").get_parameter("speed").value == 0.25
-
-
-async def test_a_node_can_do_without_parameter_services():
-    async with Runtime() as rt:
-        rt.spawn(Bare, start_parameter_services=False)
-        assert not [name for name in rt.services.servers if name.startswith("/bare/")]
 
 
 async def test_param_talker_says_hello_to_the_override_first(caplog):
@@ -467,11 +405,3 @@ async def test_param_talker_says_hello_to_the_override_first(caplog):
         await anyio.sleep(3.5)
     hellos = [r.getMessage() for r in caplog.records if r.getMessage().startswith("Hello")]
     assert hellos == ["Hello earth!", "Hello world!", "Hello world!"]
-
-
-def test_parameter_values_round_trip_through_messages():
-    for value in [True, 3, 2.5, "s", b"\x01\x02", [True, False], [1, 2], [1.5, 2.0], ["x"]]:
-        assert value_from_msg(value_to_msg(value)) == value
-    assert value_to_msg([b"\x01", b"\x02"]).byte_array_value == b"\x01\x02"  # rclpy's list of bytes
-    with pytest.raises(TypeError):
-        value_to_msg([1, "mixed"])
