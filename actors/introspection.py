@@ -172,8 +172,11 @@ class GraphView:
         self._rt = runtime
 
     def nodes(self) -> list[NodeInfo]:
-        """Every node of the graph, in start order, including those being restarted; then remote ones."""
-        local = [_node_info(c) for c in self._rt.supervisor.children if c.core is not None]
+        """Every node of the graph, in start order, including those being restarted; then nodes built
+        outside the supervisor (an rclpy script's); then remote ones."""
+        children = self._rt.supervisor.children
+        local = [_node_info(c) for c in children if c.core is not None]
+        local += [_node_info(core.child) for core in list(self._rt.nodes.values()) if core.child not in children]
         return local + [_remote_node_info(n) for n in self.remote_nodes()]
 
     def remote_nodes(self) -> list[RemoteNode]:

@@ -414,3 +414,12 @@ def test_what_differs_node_names_are_unique_and_a_node_cannot_call_its_own_servi
     client = node.create_client(AddTwoInts, "mine")
     with pytest.raises(ServiceError, match="calls its own service"):
         client.call_async(AddTwoInts.Request())
+
+
+def test_the_graph_view_shows_a_scripts_nodes(session):
+    node = rclpy.create_node("seen", namespace="/robot")
+    node.create_publisher(String, "out", 10)
+    infos = {info.name: info for info in session.call(session.runtime.graph.nodes)}
+    seen = infos["/robot/seen"]
+    assert seen.cls == "actors.compat.rclpy.node:Node" and seen.state == "running"
+    assert seen.publishes == ("/robot/out",) and seen.restart == "temporary"

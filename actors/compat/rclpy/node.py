@@ -36,6 +36,7 @@ from actors.log import NodeLogger
 from actors.node import Node as NativeNode
 from actors.node import SpawnRequest, spawning
 from actors.rosargs import RosArgs, parse
+from actors.supervisor import RestartType
 
 if TYPE_CHECKING:
     from actors.compat.session import Session
@@ -44,13 +45,26 @@ __all__ = ["Node"]
 
 
 class _ScriptChild:
-    """The name, namespace, parameters and remappings a script node starts with (a ChildSpec)."""
+    """What a script node starts with (a ChildSpec), and what the graph view shows of it.
 
-    def __init__(self, name: str, namespace: str, params: dict[str, Any], remap: dict[str, str]) -> None:
+    No supervisor restarts a script's node: as in rclpy, what its callbacks
+    raise leaves the script's spin.
+    """
+
+    state = "running"
+    restart = RestartType.TEMPORARY
+    restarts = crashes = 0
+    last_error = None
+
+    def __init__(
+        self, cls: type, name: str, namespace: str, params: dict[str, Any], remap: dict[str, str]
+    ) -> None:
+        self.cls = cls
         self.name = name
         self.namespace = namespace
         self.params = params
         self.remap = remap
+        self.core: Any = None
 
     def take_inheritance(self) -> dict[tuple[str, str], list[Any]]:
         return {}
@@ -144,7 +158,7 @@ class Node(NativeNode):
         setup = args.for_node(node_name, namespace)
         # rclpy: the constructor's parameter_overrides win over the command line's.
         own = {p.name: p.value for p in parameter_overrides or ()}
-        child = _ScriptChild(setup.name, setup.namespace, own, setup.remap)
+        child = _ScriptChild(type(self), setup.name, setup.namespace, own, setup.remap)
         state = ScriptNodeState(self, context, session)
         self._rclpy = state
         options = {
@@ -164,6 +178,7 @@ class Node(NativeNode):
                 NativeNode.__init__(
                     self, setup.name, namespace=setup.namespace, parameter_overrides=setup.params, **options
                 )
+            child.core = self._core
             native_logger = NativeNode.get_logger(self)
             state.clock = NativeNode.get_clock(self)
             state.logger = NodeLogger(native_logger.name, state.clock.now_ns, _threadsafe(native_logger.sink, session))
