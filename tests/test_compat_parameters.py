@@ -36,18 +36,63 @@ class Blackboard(NativeNode):
                          automatically_declare_parameters_from_overrides=True)
 
 
+CASES = [
+    {"target_nodes": ["blackboard"]},
+    {"target_nodes": ["/blackboard"], "use_wildcard": True},
+    {"target_nodes": ["blackboard", "other"], "namespace": "ns."},
+    {"target_nodes": ["/robot/driver"]},
+    {"use_wildcard": True},
+]
+NESTED = PARAMS + "/robot:\n  driver:\n    ros__parameters: {radius: 0.5}\n"
+
+
+def _names(found: dict[str, Any]) -> dict[str, Any]:
+    return {name: parameter_value_to_python(msg.value) for name, msg in found.items()}
+
+
 def test_parameter_dict_from_yaml_file(tmp_path):
     path = tmp_path / "p.yaml"
-    path.write_text(PARAMS)
-    every = parameter_dict_from_yaml_file(path)
-    assert sorted(every) == ["int_parameter", "nested.text", "shared", "x"]
-    assert parameter_value_to_python(every["nested.text"].value) == "hi"
-    one = parameter_dict_from_yaml_file(path, target_nodes=["blackboard"], namespace="ns")
-    assert sorted(one) == ["ns.int_parameter", "ns.nested.text"]
-    with_wildcard = parameter_dict_from_yaml_file(path, use_wildcard=True, target_nodes=["/blackboard"])
-    assert sorted(with_wildcard) == ["int_parameter", "nested.text", "shared"]
-    with pytest.raises(RuntimeError, match="does not contain parameters for"):
+    path.write_text(NESTED)
+    assert _names(parameter_dict_from_yaml_file(path, target_nodes=["blackboard"])) == {
+        "int_parameter": 3, "nested.text": "hi"
+    }
+    assert _names(parameter_dict_from_yaml_file(path, True, ["/blackboard"])) == {
+        "shared": 1, "int_parameter": 3, "nested.text": "hi"
+    }
+    assert _names(parameter_dict_from_yaml_file(path, target_nodes=["/robot/driver"])) == {"radius": 0.5}
+    # As Kilted's rclpy: no target node reads no node; a node the file lacks is skipped.
+    with pytest.raises(RuntimeError, match="does not contain any valid parameters"):
+        parameter_dict_from_yaml_file(path)
+    with pytest.raises(RuntimeError, match="does not contain any valid parameters"):
         parameter_dict_from_yaml_file(path, target_nodes=["missing"])
+
+
+def test_parameter_dict_from_yaml_file_as_rclpy_reads_it(tmp_path):
+    pytest.importorskip("rclpy")
+    import json
+    import subprocess
+    import sys
+
+    path = tmp_path / "p.yaml"
+    path.write_text(NESTED)
+    probe = (
+        "import json, sys\nfrom rclpy.parameter import parameter_dict_from_yaml_file, parameter_value_to_python\n"
+        "out = []\nfor case in json.loads(sys.argv[2]):\n    try:\n"
+        "        found = parameter_dict_from_yaml_file(sys.argv[1], **case)\n"
+        "        out.append({k: parameter_value_to_python(v.value) for k, v in found.items()})\n"
+        "    except RuntimeError as exc:\n        out.append(str(exc))\nprint(json.dumps(out))\n"
+    )
+    done = subprocess.run([sys.executable, "-c", probe, str(path), json.dumps(CASES)], capture_output=True,
+                          text=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    expected = json.loads(done.stdout)
+    ours = []
+    for case in CASES:
+        try:
+            ours.append(_names(parameter_dict_from_yaml_file(path, **case)))
+        except RuntimeError as exc:
+            ours.append(str(exc))
+    assert ours == expected
 
 
 @pytest.mark.parametrize(("text", "value"), [("2", 2), ("2.5", 2.5), ("true", True), ("[1, 2]", [1, 2]),
@@ -74,8 +119,9 @@ def test_async_parameter_client_with_rclpy_futures(session, tmp_path):
     assert len(done) == 1
     path = tmp_path / "p.yaml"
     path.write_text(PARAMS)
-    loaded = finish(client.load_parameter_file(path))
+    loaded = finish(client.load_parameter_file(path))  # the blackboard's entry: int_parameter and nested
     assert all(r.successful for r in loaded.results)
+    finish(client.set_parameters([Parameter("x", Parameter.Type.DOUBLE, 2.5)]))
     got = finish(client.get_parameters(["int_parameter", "x", "nested.text"]))
     assert [parameter_value_to_python(v) for v in got.values] == [3, 2.5, "hi"]
     deleted = finish(client.delete_parameters(["x"]))

@@ -8,7 +8,6 @@ from typing import Any
 
 from actors.codec import load_yaml
 from actors.params import PARAMETER_SEPARATOR_STRING, Parameter, ParameterType, value_from_msg, value_to_msg
-from actors.rosargs import load_params_file
 from interfaces.rcl_interfaces.msg import Parameter as ParameterMsg
 from interfaces.rcl_interfaces.msg import ParameterValue
 
@@ -25,11 +24,10 @@ parameter_value_to_python = value_from_msg
 
 
 def get_parameter_value(string_value: str) -> ParameterValue:
-    """A ParameterValue from text, read as YAML (``"2"`` is an int); text that is not YAML stays text."""
+    """A ParameterValue from text, read as YAML (``"2"`` is an int); text no parameter type fits stays text."""
     try:
-        value = load_yaml(string_value)
-        return value_to_msg(value)
-    except ValueError:
+        return value_to_msg(load_yaml(string_value))
+    except (ValueError, TypeError):
         return value_to_msg(string_value)
 
 
@@ -39,31 +37,48 @@ def parameter_dict_from_yaml_file(
     target_nodes: Sequence[str] | None = None,
     namespace: str = "",
 ) -> dict[str, ParameterMsg]:
-    """The parameters of a ROS parameter file, as ``{name: rcl_interfaces/msg/Parameter}``.
+    """The parameters a ROS parameter file holds for ``target_nodes``, as ``{name: Parameter msg}``.
 
-    All nodes' parameters unless ``target_nodes`` names some (the ``/**`` ones
-    too with ``use_wildcard``); names get ``namespace.`` in front.  Raises
-    RuntimeError for a named node the file lacks or a file without parameters,
-    and RosArgsError for a malformed file.
+    As rclpy's: ``/**`` comes first with ``use_wildcard``; a target node is
+    looked up by its absolute name, by its bare name (in the root namespace) and
+    under a namespace key; nested names are joined with ``.`` and prefixed with
+    ``namespace`` as given.  Raises RuntimeError when nothing matched (rclpy
+    reads no node at all when ``target_nodes`` is empty) or a node's entry has
+    no ``ros__parameters``, and OSError or ValueError for a file that cannot be
+    read or is not YAML.
     """
-    rules = load_params_file(parameter_file)
-    wanted = None if target_nodes is None else {_key(name) for name in target_nodes}
-    if wanted is not None:
-        missing = sorted(wanted - {rule.node_key for rule in rules})
-        if missing:
-            raise RuntimeError(
-                f"Param file does not contain parameters for {missing}, only for nodes: "
-                f"{sorted({rule.node_key for rule in rules})}"
-            )
-    values: dict[str, Any] = {}
-    for rule in rules:
-        if wanted is None or rule.node_key in wanted or (use_wildcard and rule.node_key == "/**"):
-            values.update(rule.values)
-    if not values:
+    data = load_yaml(Path(parameter_file).read_text(encoding="utf-8")) or {}
+    found: dict[str, Any] = {}
+    if use_wildcard and "/**" in data:
+        found.update(_node_parameters(data["/**"], "wildcard(/**)"))
+    for node in target_nodes or ():
+        if not node:
+            continue
+        absolute = node if node.startswith("/") else "/" + node
+        namespace_key, _, base = absolute.rpartition("/")
+        if absolute in data:
+            found.update(_node_parameters(data[absolute], f"node {absolute}"))
+        if not namespace_key and base in data:
+            found.update(_node_parameters(data[base], f"node {base}"))
+        elif namespace_key in data and base in data[namespace_key]:
+            found.update(_node_parameters(data[namespace_key][base], f"namespace {namespace_key} node {base}"))
+    if not found:
         raise RuntimeError("Param file does not contain any valid parameters")
-    prefix = f"{namespace}{PARAMETER_SEPARATOR_STRING}" if namespace else ""
-    return {prefix + name: Parameter(prefix + name, value=value).to_parameter_msg() for name, value in values.items()}
+    return _unpacked(namespace, found)
 
 
-def _key(node: str) -> str:
-    return node if node.startswith("/") else "/" + node
+def _node_parameters(entry: Any, what: str) -> dict[str, Any]:
+    if not isinstance(entry, dict) or "ros__parameters" not in entry:
+        raise RuntimeError(f"YAML file is not a valid ROS parameter file for {what}")
+    return dict(entry["ros__parameters"])
+
+
+def _unpacked(prefix: str, values: dict[str, Any]) -> dict[str, ParameterMsg]:
+    params: dict[str, ParameterMsg] = {}
+    for name, value in values.items():
+        full = prefix + name
+        if isinstance(value, dict):
+            params.update(_unpacked(full + PARAMETER_SEPARATOR_STRING, value))
+        else:
+            params[full] = ParameterMsg(name=full, value=get_parameter_value(str(value)))
+    return params

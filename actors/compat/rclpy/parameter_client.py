@@ -41,13 +41,17 @@ class AsyncParameterClient(NativeParameterClient):
     def load_parameter_file(
         self, parameter_file: str | Path, use_wildcard: bool = False, callback: Any = None
     ) -> Future[Any]:
-        """Set the parameters a ROS parameter file holds (all its nodes' unless ``use_wildcard``...)."""
-        parameters = list(parameter_dict_from_yaml_file(parameter_file, use_wildcard).values())
+        """Set the parameters a ROS parameter file holds for the remote node (and ``/**``'s with ``use_wildcard``)."""
+        parameters = self._file_parameters(parameter_file, use_wildcard)
         return self.set_parameters(parameters, callback)  # type: ignore[no-any-return]
 
     def load_parameter_file_atomically(
         self, parameter_file: str | Path, use_wildcard: bool = False, callback: Any = None
     ) -> Future[Any]:
         """As :meth:`load_parameter_file`, all or none."""
-        parameters = list(parameter_dict_from_yaml_file(parameter_file, use_wildcard).values())
+        parameters = self._file_parameters(parameter_file, use_wildcard)
         return self.set_parameters_atomically(parameters, callback)  # type: ignore[no-any-return]
+
+    def _file_parameters(self, parameter_file: str | Path, use_wildcard: bool) -> list[Any]:
+        found = parameter_dict_from_yaml_file(parameter_file, use_wildcard, target_nodes=[self.remote_node_name])
+        return list(found.values())
