@@ -24,6 +24,12 @@ Every key is optional except each node's ``use``::
     restart = "transient"     # permanent, temporary
     delay = 0.0               # start this node so many seconds later (launch's TimerAction)
 
+``use`` is found as :mod:`actors.use` says: the graph file's folder, then the
+working directory, then installed packages (``nodes`` and ``world`` are the
+shipped ``actors.nodes`` and ``actors.world`` when nothing else has them,
+and always for the shipped graphs).  ``load_graph`` also takes the bare name
+of a shipped graph (``turtlebot``).
+
 Any error names the file, the key path and the problem, as one line.  Beyond
 each key's type, the file must name at least one node; numbers must be finite
 and in range (durations, periods and delays at most :data:`~actors.config.MAX_SECONDS`,
@@ -36,7 +42,6 @@ says it plainly).
 from __future__ import annotations
 
 import ast
-import importlib
 import inspect
 import textwrap
 from pathlib import Path
@@ -50,6 +55,7 @@ from actors.names import expand, fully_qualified, normalize_namespace, validate_
 from actors.node import Node
 from actors.rosargs import load_params_file, node_key_matches, values_for
 from actors.supervisor import RestartType, Strategy, SupervisorPolicy
+from actors.use import find_graph, import_use
 
 __all__ = [
     "RuntimeSection",
@@ -111,15 +117,17 @@ class GraphFile(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields
     nodes: list[NodeEntry] = []
 
 
-def import_node_class(use: str) -> type[Node]:
-    """Import ``"module:Class"`` and check it is a Node subclass; ValueError says why not."""
+def import_node_class(use: str, graph: Path | None = None) -> type[Node]:
+    """Import ``"module:Class"`` as graph file ``graph`` names it, and check it is a Node subclass.
+
+    Where the module comes from is :mod:`actors.use`'s business (the graph's
+    folder, the working directory, installed code).  ValueError says why it
+    cannot be had.
+    """
     module_name, sep, attr = use.partition(":")
     if not sep or not module_name or not attr:
         raise ValueError(f"expected 'module:Class', got {use!r}")
-    try:
-        module = importlib.import_module(module_name)
-    except Exception as exc:  # an import error or whatever the module raised while importing
-        raise ValueError(f"cannot import {module_name!r}: {exc}") from None
+    module = import_use(module_name, graph)
     cls = module
     for part in attr.split("."):
         cls = getattr(cls, part, None)
@@ -137,6 +145,10 @@ def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
     GraphFileError naming the file, the key path and the problem; nothing has
     started then, so a graph with a mistake anywhere never starts half-way.
     """
+    try:
+        path = find_graph(path)
+    except FileNotFoundError as exc:
+        raise GraphFileError(str(exc)) from None
     graph = load_toml(path, GraphFile, GraphFileError)
     if not graph.nodes:
         raise GraphFileError(
@@ -148,7 +160,7 @@ def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
     for i, entry in enumerate(graph.nodes):
         key = f"nodes[{i}]"
         try:
-            cls = import_node_class(entry.use)
+            cls = import_node_class(entry.use, Path(path))
         except ValueError as exc:
             raise GraphFileError(f"{path}: {key}.use: {exc}") from None
         classes.append(cls)

@@ -20,7 +20,7 @@ LAYERS: list[set[str]] = [
     {"topics", "services", "timers", "params", "actions", "endpoint_info", "refusals", "qos_events", "transport",
      "param_services"},
     {"node", "node_params", "node_graph", "param_client"},
-    {"supervisor", "runtime", "introspection", "graph"},
+    {"supervisor", "runtime", "introspection", "graph", "use"},
     {"control", "connections", "doctor", "transport.zenoh"},
     {"run", "testing", "cli", "__main__", "__init__", "compat"},
 ]
