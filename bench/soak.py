@@ -1,0 +1,348 @@
+"""Soak and load: the demo graph on the wall clock for minutes, its control socket hammered (not CI).
+
+``python -m bench.soak [--minutes 10]``
+    Runs ``python -m actors.run graph.toml`` for the given minutes, samples its
+    RSS every 10 s, and every 10 s hammers the control socket with one bounded
+    round: 300 connections opened at once (more than the 256 allowed), each
+    asking for the graph, plus a publish and a short-lived subscription.
+    Prints the RSS samples, the RSS slope after the first minute (KB/min, least
+    squares), the connections served, refused and failed, and the graph's
+    descriptors before and after.
+
+``python -m bench.soak --connections``
+    Issue 17's acceptance 2: 2,000 connections opened at once and 500 idle
+    ones held, in waves for 30 s, while a prober asks for the node list every
+    100 ms (as ``actors node list`` does, through the command line's own
+    client); prints the probe latencies (median, p99, max), what the waves
+    got, and the graph's descriptors before, during and after.  A few real
+    ``actors node list`` processes are timed too (their time includes
+    starting Python).
+
+``python -m bench.soak --stalled``
+    Acceptance 3: five ``actors topic echo /scan`` processes whose output
+    nobody reads, for 60 s; prints the graph's RSS growth beside the same 60 s
+    of the same graph with no reader.
+
+Every figure comes from the graph process (``/proc/<pid>``): Linux only.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import functools
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from collections import Counter
+from collections.abc import Iterator
+from pathlib import Path
+
+import anyio
+import msgspec
+
+from actors.cli._client import connect
+from actors.control import Diagnose, GetGraph, Publish, Reply, Subscribe, decode_reply, frame
+from actors.doctor import Report
+
+__all__ = ["GraphProcess", "hammer_round", "rss_kb", "slope", "main"]
+
+ROOT = Path(__file__).resolve().parent.parent
+SAMPLE_EVERY = 10.0  # s
+
+
+def rss_kb(pid: int) -> int:
+    """The resident set size of process ``pid``, in KB."""
+    for line in Path(f"/proc/{pid}/status").read_text().splitlines():
+        if line.startswith("VmRSS:"):
+            return int(line.split()[1])
+    raise RuntimeError(f"no VmRSS for process {pid}")
+
+
+def fds(pid: int) -> int:
+    """How many descriptors process ``pid`` has open."""
+    return len(os.listdir(f"/proc/{pid}/fd"))
+
+
+def slope(samples: list[tuple[float, int]]) -> float:
+    """The least-squares slope of ``(seconds, KB)`` samples, in KB per minute."""
+    ts = [t for t, _ in samples]
+    ks = [k for _, k in samples]
+    mean_t, mean_k = statistics.fmean(ts), statistics.fmean(ks)
+    var = sum((t - mean_t) ** 2 for t in ts)
+    return 60.0 * sum((t - mean_t) * (k - mean_k) for t, k in samples) / var if var else 0.0
+
+
+class GraphProcess:
+    """``python -m actors.run GRAPH`` in its own control directory; ``name`` is its endpoint name."""
+
+    def __init__(self, graph: Path, runtime_dir: Path) -> None:
+        self.name = graph.stem
+        self.env = {**os.environ, "XDG_RUNTIME_DIR": str(runtime_dir), "PYTHONUNBUFFERED": "1"}
+        self.proc = subprocess.Popen(
+            [sys.executable, "-m", "actors.run", str(graph)],
+            cwd=ROOT,
+            env=self.env,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
+        self.path = runtime_dir / "actors" / f"{self.name}.sock"
+        self.log: list[str] = []
+        threading.Thread(target=self._drain, daemon=True).start()
+        deadline = time.monotonic() + 30
+        while not self._answers():
+            if time.monotonic() > deadline or self.proc.poll() is not None:
+                raise RuntimeError("the graph did not start:\n" + "".join(self.log))
+            time.sleep(0.1)
+
+    def _drain(self) -> None:
+        assert self.proc.stderr is not None
+        for line in self.proc.stderr:
+            self.log.append(line)
+
+    def _answers(self) -> bool:
+        with contextlib.suppress(Exception):
+            with self.connect() as conn:
+                conn.graph()
+                return True
+        return False
+
+    def connect(self):  # noqa: ANN201 - the command line's Connection
+        """A command-line connection to the graph (the environment names its directory)."""
+        os.environ["XDG_RUNTIME_DIR"] = self.env["XDG_RUNTIME_DIR"]
+        return connect(self.name)
+
+    @property
+    def pid(self) -> int:
+        return self.proc.pid
+
+    def stop(self) -> int:
+        """SIGTERM, then the exit code."""
+        self.proc.terminate()
+        return self.proc.wait(timeout=30)
+
+    def tracebacks(self) -> int:
+        """How many tracebacks the graph printed."""
+        return sum("Traceback" in line for line in self.log)
+
+
+async def _one(path: Path, request: object, outcome: Counter[str], *, hold: float = 0.0) -> None:
+    try:
+        with anyio.fail_after(10):
+            async with await anyio.connect_unix(path) as stream:
+                with contextlib.suppress(anyio.BrokenResourceError, anyio.ClosedResourceError):
+                    await stream.send(frame(request))  # a refused connection is closed before we speak
+                reply = await _reply(stream)
+                if hold:
+                    await anyio.sleep(hold)
+    except TimeoutError:
+        outcome["timed out"] += 1
+        return
+    except OSError as exc:
+        outcome[f"connect failed ({exc.strerror or exc})"] += 1
+        return
+    except (anyio.EndOfStream, anyio.IncompleteRead, anyio.BrokenResourceError):
+        outcome["closed without an answer"] += 1
+        return
+    if reply.ok:
+        outcome["served"] += 1
+    elif reply.busy:
+        outcome["refused (busy)"] += 1
+    else:
+        outcome[f"error: {reply.error[:60]}"] += 1
+
+
+async def _reply(stream: anyio.abc.SocketStream) -> Reply:
+    buffer = b""
+    while len(buffer) < 4 or len(buffer) < 4 + int.from_bytes(buffer[:4], "big"):
+        buffer += await stream.receive()
+    size = int.from_bytes(buffer[:4], "big")
+    return decode_reply(buffer[4 : 4 + size])
+
+
+async def _idle(path: Path, seconds: float, outcome: Counter[str]) -> None:
+    """Connect and say nothing for ``seconds`` (or until the graph closes the connection)."""
+    try:
+        async with await anyio.connect_unix(path) as stream:
+            with anyio.move_on_after(seconds):
+                with contextlib.suppress(anyio.EndOfStream, anyio.BrokenResourceError):
+                    data = await stream.receive()
+                    outcome["idle: refused" if decode_reply(data[4:]).busy else "idle: answered"] += 1
+                    return
+            outcome["idle: held"] += 1
+    except OSError as exc:
+        outcome[f"idle: connect failed ({exc.strerror or exc})"] += 1
+    except (anyio.EndOfStream, msgspec.DecodeError):
+        outcome["idle: closed by the graph"] += 1
+
+
+def hammer_round(path: Path, connections: int = 300) -> Counter[str]:
+    """One bounded round: ``connections`` opened at once asking for the graph, a publish, a subscription."""
+    outcome: Counter[str] = Counter()
+
+    async def round_() -> None:
+        async with anyio.create_task_group() as tg:
+            for _ in range(connections):  # each held a moment after its answer: all open at once
+                tg.start_soon(functools.partial(_one, path, GetGraph(), outcome, hold=0.3))
+            tg.start_soon(_one, path, Publish(topic="/soak", type="std_msgs/msg/String", msg={"data": "x"}), outcome)
+            tg.start_soon(functools.partial(_one, path, Subscribe(topic="/scan"), outcome, hold=1.0))
+
+    anyio.run(round_)
+    return outcome
+
+
+@contextlib.contextmanager
+def demo_graph() -> Iterator[GraphProcess]:
+    """The demo graph, running in a private control directory."""
+    with tempfile.TemporaryDirectory() as tmp:
+        runtime_dir = Path(tmp) / "run"
+        runtime_dir.mkdir(mode=0o700)
+        graph = GraphProcess(ROOT / "graph.toml", runtime_dir)
+        try:
+            yield graph
+        finally:
+            code = graph.stop()
+            print(f"graph exit code {code}, tracebacks in its log: {graph.tracebacks()}")
+
+
+def soak(minutes: float) -> None:
+    """The 10-minute soak (see the module docstring)."""
+    with demo_graph() as graph:
+        start = time.monotonic()
+        fds_before = fds(graph.pid)
+        samples: list[tuple[float, int]] = []
+        totals: Counter[str] = Counter()
+        print(f"{'t (s)':>7} {'RSS (KB)':>9} {'fds':>4}  round")
+        while (now := time.monotonic() - start) < minutes * 60:
+            samples.append((now, rss_kb(graph.pid)))
+            outcome = hammer_round(graph.path)
+            totals.update(outcome)
+            print(f"{now:7.0f} {samples[-1][1]:9d} {fds(graph.pid):4d}  {dict(outcome)}", flush=True)
+            time.sleep(max(0.0, SAMPLE_EVERY - (time.monotonic() - start - now)))
+        samples.append((time.monotonic() - start, rss_kb(graph.pid)))
+        time.sleep(1)  # the graph notices the last hang-ups
+        settled = [(t, k) for t, k in samples if t >= 60] or samples
+        print(f"RSS: {samples[0][1]} KB at start, {samples[-1][1]} KB at the end")
+        print(f"RSS slope after the first minute: {slope(settled):.1f} KB/min ({len(settled)} samples)")
+        print(f"connections: {dict(totals)}")
+        print(f"graph descriptors: {fds_before} before, {fds(graph.pid)} after")
+        with graph.connect() as conn:
+            report = conn.request(Diagnose(), Report)
+        for check in report.checks:
+            if check.name == "control endpoint":
+                print(f"doctor, control endpoint: {(*check.reasons, *check.warnings)}")
+
+
+def connections(seconds: float = 30.0, crowd: int = 2000, idle: int = 500) -> None:
+    """Acceptance 2 of issue 17 (see the module docstring)."""
+    with demo_graph() as graph:
+        baseline = fds(graph.pid)
+        latencies: list[float] = []
+        failures: list[str] = []
+        stop = threading.Event()
+
+        def probe() -> None:
+            while not stop.is_set():
+                began = time.monotonic()
+                try:
+                    with graph.connect() as conn:
+                        conn.graph()
+                    latencies.append(time.monotonic() - began)
+                except Exception as exc:  # noqa: BLE001 - counted and shown
+                    failures.append(str(exc))
+                time.sleep(0.1)
+
+        prober = threading.Thread(target=probe)
+        prober.start()
+        outcome: Counter[str] = Counter()
+        peak_fds = baseline
+        start = time.monotonic()
+        waves = 0
+
+        async def wave() -> None:
+            async with anyio.create_task_group() as tg:
+                for _ in range(idle):
+                    tg.start_soon(_idle, graph.path, 5.0, outcome)
+                for _ in range(crowd):
+                    tg.start_soon(_one, graph.path, GetGraph(), outcome)
+
+        while time.monotonic() - start < seconds:
+            anyio.run(wave)
+            waves += 1
+            peak_fds = max(peak_fds, fds(graph.pid))
+        cli = []
+        for _ in range(3):
+            began = time.monotonic()
+            done = subprocess.run(
+                [sys.executable, "-m", "actors", "node", "list"], env=graph.env, capture_output=True, text=True
+            )
+            cli.append((time.monotonic() - began, done.returncode))
+        stop.set()
+        prober.join()
+        time.sleep(1)
+        lat = sorted(latencies)
+        print(f"{waves} waves of {crowd} connections at once and {idle} idle ones, {seconds:.0f} s")
+        print(f"outcomes: {dict(outcome)}")
+        print(
+            f"node list probes: {len(lat)} answered, {len(failures)} failed; latency median "
+            f"{statistics.median(lat) * 1000:.1f} ms, p99 {lat[int(len(lat) * 0.99)] * 1000:.1f} ms, "
+            f"max {lat[-1] * 1000:.1f} ms"
+        )
+        if failures:
+            print(f"  failures: {Counter(failures).most_common(3)}")
+        print(f"`actors node list` processes (with Python's start): {[f'{t:.2f} s (exit {c})' for t, c in cli]}")
+        print(f"graph descriptors: baseline {baseline}, peak {peak_fds}, after {fds(graph.pid)}")
+        print(f"graph still running: {graph.proc.poll() is None}")
+
+
+def stalled(seconds: float = 60.0, readers: int = 5) -> None:
+    """Acceptance 3 of issue 17 (see the module docstring)."""
+    for with_readers in (False, True):
+        with demo_graph() as graph:
+            time.sleep(10)  # past start-up's allocations
+            procs = []
+            if with_readers:
+                for _ in range(readers):
+                    # stdout is a pipe nobody reads: once its 64 KB fill, the reader stalls.
+                    procs.append(
+                        subprocess.Popen(
+                            [sys.executable, "-m", "actors", "topic", "echo", "/scan"],
+                            env=graph.env, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                        )
+                    )
+                time.sleep(5)  # connected and stalled
+            before = rss_kb(graph.pid)
+            time.sleep(seconds)
+            after = rss_kb(graph.pid)
+            for proc in procs:
+                proc.kill()
+                proc.wait()
+            what = f"{readers} stalled `topic echo /scan` readers" if with_readers else "no reader (baseline)"
+            print(f"{what}: RSS {before} KB -> {after} KB over {seconds:.0f} s: {after - before:+d} KB")
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m bench.soak", description=__doc__.split("\n\n")[0])
+    parser.add_argument("--minutes", type=float, default=10.0, help="how long the soak runs (default 10)")
+    parser.add_argument("--connections", action="store_true", help="acceptance 2: 2,000 + 500 idle connections")
+    parser.add_argument("--stalled", action="store_true", help="acceptance 3: five stalled readers for 60 s")
+    args = parser.parse_args(argv)
+    if not Path("/proc/self/status").exists():
+        print("bench.soak reads /proc: Linux only", file=sys.stderr)
+        return 2
+    if args.connections:
+        connections()
+    elif args.stalled:
+        stalled()
+    else:
+        soak(args.minutes)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
