@@ -36,39 +36,49 @@ def serve(store: ParameterStore, host: ServiceHost) -> None:
     not hide the others.  A set of an undeclared name is an unsuccessful result,
     as in rclpy, never an error.
     """
+    handlers = _Handlers(store)
+    host.create_service(DescribeParameters, "~/describe_parameters", handlers.describe)
+    host.create_service(GetParameters, "~/get_parameters", handlers.get)
+    host.create_service(GetParameterTypes, "~/get_parameter_types", handlers.get_types)
+    host.create_service(ListParameters, "~/list_parameters", handlers.list_names)
+    host.create_service(SetParameters, "~/set_parameters", handlers.set_each)
+    host.create_service(SetParametersAtomically, "~/set_parameters_atomically", handlers.set_all)
 
-    def get(request: Any, response: Any) -> Any:
-        response.values = [store.get_or(name).get_parameter_value() for name in request.names]
+
+class _Handlers:
+    # One object whose bound methods are the six handlers: every node serves them, and six
+    # closures cost about 1.2 KB a node against 0.4 KB for six bound methods.
+    __slots__ = ("store",)
+
+    def __init__(self, store: ParameterStore) -> None:
+        self.store = store
+
+    def get(self, request: Any, response: Any) -> Any:
+        response.values = [self.store.get_or(name).get_parameter_value() for name in request.names]
         return response
 
-    def get_types(request: Any, response: Any) -> Any:
-        response.types = [int(store.get_or(name).type_) for name in request.names]
+    def get_types(self, request: Any, response: Any) -> Any:
+        response.types = [int(self.store.get_or(name).type_) for name in request.names]
         return response
 
-    def set_each(request: Any, response: Any) -> Any:
-        response.results = [_set(store, [msg]) for msg in request.parameters]
+    def set_each(self, request: Any, response: Any) -> Any:
+        response.results = [_set(self.store, [msg]) for msg in request.parameters]
         return response
 
-    def set_all(request: Any, response: Any) -> Any:
-        response.result = _set(store, request.parameters)
+    def set_all(self, request: Any, response: Any) -> Any:
+        response.result = _set(self.store, request.parameters)
         return response
 
-    def list_names(request: Any, response: Any) -> Any:
-        response.result = store.list_parameters(request.prefixes, request.depth)
+    def list_names(self, request: Any, response: Any) -> Any:
+        response.result = self.store.list_parameters(request.prefixes, request.depth)
         return response
 
-    def describe(request: Any, response: Any) -> Any:
+    def describe(self, request: Any, response: Any) -> Any:
+        store = self.store
         response.descriptors = [
             store.describe(name) if store.has(name) else ParameterDescriptor(name=name) for name in request.names
         ]
         return response
-
-    host.create_service(DescribeParameters, "~/describe_parameters", describe)
-    host.create_service(GetParameters, "~/get_parameters", get)
-    host.create_service(GetParameterTypes, "~/get_parameter_types", get_types)
-    host.create_service(ListParameters, "~/list_parameters", list_names)
-    host.create_service(SetParameters, "~/set_parameters", set_each)
-    host.create_service(SetParametersAtomically, "~/set_parameters_atomically", set_all)
 
 
 def _set(store: ParameterStore, msgs: Sequence[ParameterMsg]) -> SetParametersResult:

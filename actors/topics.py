@@ -227,13 +227,17 @@ class Subscription(Mailbox):
         self._events: Any = None  # an actors.qos_events.EndpointEvents, for endpoints with event callbacks
         self._expiring = False  # fed by a publisher with a lifespan: its queue may hold Expiring items
         super().__init__(node.actor)
-        self._queue: deque[Any] = deque()
+        # The queue is made when a publisher first feeds it (TopicTable._match): an
+        # unmatched subscription's empty deque would cost 760 bytes.
+        self._queue: deque[Any] | None = None
         self._limit = qos.depth if qos.history == HistoryPolicy.KEEP_LAST else sys.maxsize
         self._topic: Topic | None = None  # set by the topic table
         self._senders: deque[tuple[Any, Publisher]] | None = None  # see track_senders
 
     def _push(self, msg: Any) -> None:
         queue = self._queue
+        if queue is None:
+            queue = self._queue = deque()
         if len(queue) >= self._limit:
             queue.popleft()
             self.dropped += 1
@@ -437,6 +441,8 @@ class TopicTable:
                 elif hasattr(endpoint.node, "logger"):  # a node's (the runtime's and the CLI's have none)
                     warn_incompatible(endpoint, refused[-1])
             return False
+        if sub._queue is None:
+            sub._queue = deque()
         pub._subs[sub] = None
         if sub._senders is not None:
             pub._tracked[sub] = None

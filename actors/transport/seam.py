@@ -28,6 +28,7 @@ command line and ``doctor`` see one graph.
 from __future__ import annotations
 
 import asyncio
+from collections import deque
 from collections.abc import Callable
 from typing import Any, Protocol, runtime_checkable
 
@@ -111,6 +112,7 @@ class Outlet(Subscription):
             QoSSnapshot(depth=max(qos.depth, 1), history=qos.history, reliability=_TAKES_ALL),
         )
         self.publisher = publisher
+        self._queue = deque()  # fed by attach() below, not through the topic table's matching
 
     def attach(self) -> None:
         """Start receiving what the publisher publishes (only its messages, not its topic's)."""
