@@ -163,6 +163,8 @@ class NodeCore:
     # -- entities -------------------------------------------------------------
 
     def _take_inherited(self, kind: str, name: str, type_: type) -> Any:
+        if not self._inherited:  # a first start: nothing to take over
+            return None
         olds = self._inherited.get((kind, name))
         if olds:
             old = olds[0]

@@ -48,9 +48,15 @@ class _Call:
         self.future = future
 
 
+_SRV_TYPES: set[type] = set()  # types that passed the check: every node makes six parameter services
+
+
 def _check_srv_type(srv_type: Any, where: str) -> None:
+    if srv_type in _SRV_TYPES:
+        return
     if not (isinstance(srv_type, type) and hasattr(srv_type, "Request") and hasattr(srv_type, "Response")):
         raise TypeError(f"{where} needs a service type (with .Request and .Response), got {srv_type!r}")
+    _SRV_TYPES.add(srv_type)
 
 
 class Service(Mailbox):
@@ -291,11 +297,13 @@ class ServiceTable:
         if existing is None or existing is not replacing:  # a restart takes its place unheard
             for listener in self.listeners:
                 listener.service_added(service)
-        for call in self._parked.pop(name, ()):
-            if not call.future.done():
-                service._push(call)
-        for watcher in self._watchers.pop(name, ()):
-            _settle(watcher, True)
+        if self._parked:
+            for call in self._parked.pop(name, ()):
+                if not call.future.done():
+                    service._push(call)
+        if self._watchers:
+            for watcher in self._watchers.pop(name, ()):
+                _settle(watcher, True)
 
     def remove(self, service: Service) -> None:
         """Unregister ``service``; its queued calls fail."""
