@@ -10,9 +10,10 @@ mailbox — so awaiting a call from inside a callback cannot deadlock.
 - A call to a service that does not exist yet waits for it to appear; with a
   timeout it raises TimeoutError.  While a server's node restarts its queue
   stays attached, and the new instance answers what was queued.
-- A timeout is one loop timer (``loop.call_at``) that fails the caller's future
-  and is cancelled when the response comes first: a cancel scope per call
-  (``anyio.fail_after``) cost more than the round trip itself.
+- A timeout is an entry in the runtime's :class:`CallTimeouts` (a heap under one
+  loop timer) that fails the caller's future: a cancel scope per call
+  (``anyio.fail_after``) cost more than the round trip itself, and a loop timer
+  per call (``loop.call_at``) about as much.
 - A node calling its own service gets ServiceError at once: its callbacks run
   one at a time, so the request could never be handled while it waits.
 - A cancelled or timed-out caller does not disturb the server: the response is
@@ -27,17 +28,20 @@ mailbox — so awaiting a call from inside a callback cannot deadlock.
 from __future__ import annotations
 
 import asyncio
+import itertools
 from collections import deque
 from collections.abc import Awaitable, Callable
+from heapq import heapify, heappop, heappush
 from inspect import isawaitable
 from typing import Any, Protocol
 
 from actors.actor import Mailbox, Owner
+from actors.clock import VirtualTimeLoop
 from actors.errors import ServiceError
 from actors.snapshot import snapshotter
 from actors.topics import type_name
 
-__all__ = ["Service", "Client", "ServiceListener", "ServiceTable"]
+__all__ = ["Service", "Client", "CallTimeouts", "ServiceListener", "ServiceTable"]
 
 
 class _Call:
@@ -224,24 +228,91 @@ class Client:
         future = self.call_async(request)
         if timeout is None:
             return await future
-        loop = self._loop
-        timer = loop.call_at(loop.time() + timeout, _expire, future, self, timeout)
+        timeouts = self._table.timeouts(self._loop)
+        timeouts.add(future, self, timeout)
         try:
             return await future
         finally:
-            timer.cancel()
+            timeouts.settled()
 
     def destroy(self) -> None:
         """Forget this client."""
         self.node.destroy_client(self)
 
 
-def _expire(future: asyncio.Future[Any], client: Client, timeout: float) -> None:
-    # The timer of a call with a timeout: fail the caller's future unless it is settled.
-    if not future.done():
-        future.set_exception(
-            TimeoutError(f"no response from service {client.service_name} within {timeout:g} s")
-        )
+class CallTimeouts:
+    """The deadlines of a runtime's calls with a timeout: a heap of tuples under one loop timer.
+
+    A loop timer per call (``loop.call_at``, then ``cancel()`` when the answer
+    came first) cost as much as the round trip itself with 100 callers: a
+    ``TimerHandle`` each, pushed into and later swept out of asyncio's heap with
+    comparisons in Python.  Here a call pushes a tuple (compared in C) and
+    nothing is removed when it is answered: an entry whose future is done is
+    skipped when it comes up, and the heap is rebuilt without them once they are
+    most of it.  The loop timer is armed no later than the earliest deadline a
+    call waits for.  When no call waits any more, a wall-clock loop keeps it
+    (it wakes once for nothing, or is re-armed then for the next call's
+    deadline): so a caller that calls one request after another arms one loop
+    timer per ``timeout`` seconds, not one per call.  Virtual time cancels it,
+    so that it never jumps to a deadline nobody waits for.
+    """
+
+    __slots__ = ("_loop", "_heap", "_order", "_waiting", "_handle", "_armed", "_linger")
+
+    def __init__(self, loop: asyncio.AbstractEventLoop) -> None:
+        self._loop = loop
+        self._heap: list[tuple[float, int, asyncio.Future[Any], Client, float]] = []
+        self._order = itertools.count()
+        self._waiting = 0  # calls between add() and settled()
+        self._handle: asyncio.TimerHandle | None = None
+        self._armed = _NEVER  # the deadline the loop timer is set for
+        self._linger = not isinstance(loop, VirtualTimeLoop)
+
+    def add(self, future: asyncio.Future[Any], client: Client, timeout: float) -> None:
+        """Fail ``future`` with TimeoutError ``timeout`` seconds from now unless it is done by then."""
+        when = self._loop.time() + timeout
+        heap = self._heap
+        heappush(heap, (when, next(self._order), future, client, timeout))
+        self._waiting += 1
+        if when < self._armed:
+            self._arm(when)
+        elif len(heap) > 2 * self._waiting + _SWEEP_AT:
+            self._heap = heap = [entry for entry in heap if not entry[2].done()]
+            heapify(heap)
+
+    def settled(self) -> None:
+        """A caller stopped waiting (answered, timed out or cancelled)."""
+        self._waiting -= 1
+        if not self._waiting:
+            self._heap.clear()
+            if self._handle is not None and not self._linger:
+                self._handle.cancel()
+                self._handle = None
+                self._armed = _NEVER
+
+    def _arm(self, when: float) -> None:
+        if self._handle is not None:
+            self._handle.cancel()
+        self._handle = self._loop.call_at(when, self._fire)
+        self._armed = when
+
+    def _fire(self) -> None:
+        self._handle = None
+        self._armed = _NEVER
+        heap = self._heap
+        now = self._loop.time()
+        while heap and (heap[0][0] <= now or heap[0][2].done()):
+            _, _, future, client, timeout = heappop(heap)
+            if not future.done():
+                future.set_exception(
+                    TimeoutError(f"no response from service {client.service_name} within {timeout:g} s")
+                )
+        if heap:
+            self._arm(heap[0][0])
+
+
+_NEVER = float("inf")
+_SWEEP_AT = 64  # answered entries the heap may hold beyond twice the waiting calls
 
 
 def _settle(future: asyncio.Future[bool], value: bool) -> None:
@@ -272,7 +343,7 @@ class ServiceTable:
     ``listeners`` hear of every server and client added or removed (never of a call).
     """
 
-    __slots__ = ("servers", "listeners", "_parked", "_watchers")
+    __slots__ = ("servers", "listeners", "_parked", "_watchers", "_timeouts")
 
     def __init__(self) -> None:
         self.servers: dict[str, Service] = {}
@@ -280,6 +351,13 @@ class ServiceTable:
         self._parked: dict[str, list[_Call]] = {}
         # Futures of wait_for_service() callers, by service name (insertion-ordered sets).
         self._watchers: dict[str, dict[asyncio.Future[bool], None]] = {}
+        self._timeouts: CallTimeouts | None = None
+
+    def timeouts(self, loop: asyncio.AbstractEventLoop) -> CallTimeouts:
+        """The deadlines of calls with a timeout, on ``loop`` (made at the first such call)."""
+        if self._timeouts is None:
+            self._timeouts = CallTimeouts(loop)
+        return self._timeouts
 
     def add(self, service: Service, *, replacing: Service | None = None) -> None:
         """Register ``service``; raise ServiceError if another server has the name.

@@ -317,3 +317,48 @@ async def test_fields_that_do_not_fit_fail_the_call_naming_the_field(caplog):
         with pytest.raises(ServiceError, match=r"field 'sum' of example_interfaces/srv/AddTwoInts_Response: "
                                                r"expected an int, got the str '3'"):
             await caller.cli.call(AddTwoInts.Request(a=1, b=2), timeout=1)
+
+
+async def test_calls_with_different_timeouts_each_time_out_at_their_own_deadline():
+    class SlowAdder(Adder):
+        latency = 1.0  # one call at a time: the n-th answer comes at n seconds
+
+    async with Runtime() as rt:
+        rt.spawn(SlowAdder)
+        caller = rt.spawn(Caller)
+        await anyio.sleep(0)
+        timeouts = [10, 0.5, 1.5, 10]  # answered at 1 s; given up at 0.5 s; given up at 1.5 s; answered at 3 s
+        outcomes: dict[int, object] = {}
+
+        async def one(i: int) -> None:
+            try:
+                outcomes[i] = (await caller.cli.call(AddTwoInts.Request(a=i, b=0), timeout=timeouts[i])).sum
+            except TimeoutError:
+                outcomes[i] = ("timed out", rt.clock.monotonic())
+
+        async with anyio.create_task_group() as tg:
+            for i in range(len(timeouts)):
+                tg.start_soon(one, i)
+        assert outcomes == {0: 0, 1: ("timed out", 0.5), 2: ("timed out", 1.5), 3: 3}
+        assert live_loop_timers() == []  # no deadline left armed once nobody waits
+
+
+async def test_answered_calls_leave_no_deadlines_behind():
+    async with Runtime() as rt:
+        rt.spawn(Adder)
+        caller = rt.spawn(Caller)
+        await anyio.sleep(0)
+        timeouts = rt.services.timeouts(rt.loop)
+        sizes = []
+
+        async def one(i: int) -> None:
+            for _ in range(20):
+                await caller.cli.call(AddTwoInts.Request(a=i, b=1), timeout=60)
+                sizes.append(len(timeouts._heap))
+
+        async with anyio.create_task_group() as tg:
+            for i in range(100):
+                tg.start_soon(one, i)
+        # Answered entries are swept out, not kept for their 60 s.
+        assert max(sizes) <= 2 * 100 + 64 + 1 and len(sizes) == 2000
+        assert timeouts._heap == [] and live_loop_timers() == []
