@@ -84,10 +84,13 @@ class Service(Mailbox):
         super().__init__(node.actor)
 
     def _push(self, call: _Call) -> None:
-        if self._queue is None:
-            self._queue = deque()
-        self._queue.append(call)
-        self._wake()
+        queue = self._queue
+        if queue is None:
+            queue = self._queue = deque()
+        queue.append(call)
+        if not self._scheduled:  # Mailbox._wake, inlined: once per call
+            self._scheduled = True
+            self._actor.schedule(self)
 
     def _adopt(self, old: Mailbox) -> None:
         # A restarted server answers what was queued for its predecessor.
@@ -157,13 +160,14 @@ class Service(Mailbox):
 class Client:
     """A service client.  Create with ``Node.create_client``."""
 
-    __slots__ = ("node", "service_name", "srv_type", "_table", "_loop", "_snapshot")
+    __slots__ = ("node", "service_name", "srv_type", "_request_type", "_table", "_loop", "_snapshot")
 
     def __init__(self, node: Owner, service_name: str, srv_type: type, table: ServiceTable) -> None:
         _check_srv_type(srv_type, "create_client")
         self.node = node
         self.service_name = service_name
         self.srv_type = srv_type
+        self._request_type = srv_type.Request
         self._table = table
         self._loop = node.loop
         self._snapshot = snapshotter(srv_type.Request)
@@ -196,7 +200,7 @@ class Client:
         it is now (the caller may reuse the object).  The future fails with
         ServiceError when the server's handler raises.
         """
-        if type(request) is not self.srv_type.Request:
+        if type(request) is not self._request_type:
             raise TypeError(
                 f"client of {self.service_name} takes {type_name(self.srv_type.Request)}, "
                 f"got {type_name(type(request))}"
@@ -228,7 +232,7 @@ class Client:
         future = self.call_async(request)
         if timeout is None:
             return await future
-        timeouts = self._table.timeouts(self._loop)
+        timeouts = self._table._timeouts or self._table.timeouts(self._loop)
         timeouts.add(future, self, timeout)
         try:
             return await future
