@@ -29,6 +29,7 @@
     │   ├── ParameterImmutableException          read-only
     │   └── ParameterUninitializedException      declared with a type but never given a value
     ├── ControlError                 the command line cannot reach or use a running graph
+    ├── TransportError               a transport cannot start or is misconfigured (names the setting)
     ├── VirtualTimeDeadlock          virtual time has nothing left to wait for
     └── Escalation                   the supervisor gave up: too many restarts
 
@@ -73,6 +74,7 @@ __all__ = [
     "ParameterImmutableException",
     "ParameterUninitializedException",
     "ControlError",
+    "TransportError",
     "VirtualTimeDeadlock",
     "Escalation",
 ]
@@ -219,6 +221,10 @@ class ParameterUninitializedException(ParameterError):
 
 class ControlError(ActorsError):
     """The command line cannot reach a running graph, or what it asked for is unknown."""
+
+
+class TransportError(ActorsError):
+    """A transport cannot start: its package is missing, a setting is wrong, the network refuses."""
 
 
 class VirtualTimeDeadlock(ActorsError):

@@ -24,6 +24,14 @@ Every key is optional except each node's ``use``::
     restart = "transient"     # permanent, temporary
     delay = 0.0               # start this node so many seconds later (launch's TimerAction)
 
+    [transport]               # other processes (and ROS 2 with rmw_zenoh_cpp) see this graph
+    kind = "zenoh"
+    domain_id = 0             # default: $ROS_DOMAIN_ID, else 0
+    connect = ["tcp/127.0.0.1:7447"]
+    listen = ["tcp/127.0.0.1:7447", "tcp/127.0.0.1:0"]
+    mode = "peer"             # or "client" (through a router)
+    config = "zenoh.json5"    # a Zenoh config file for everything else (relative to this file)
+
 ``use`` is found as :mod:`actors.use` says: the graph file's folder, then the
 working directory, then installed packages (``nodes`` and ``world`` are the
 shipped ``actors.nodes`` and ``actors.world`` when nothing else has them,
@@ -61,6 +69,7 @@ __all__ = [
     "RuntimeSection",
     "SupervisorSection",
     "NodeEntry",
+    "TransportSection",
     "GraphFile",
     "load_graph",
     "import_node_class",
@@ -109,12 +118,28 @@ class NodeEntry(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields
     delay: Seconds = 0.0  # seconds after the graph starts, as launch's TimerAction
 
 
+class TransportSection(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
+    """``[transport]``: how the graph reaches other processes (see actors.transport.zenoh.config).
+
+    ``None`` means the default: ``$ROS_DOMAIN_ID`` for the domain; for the
+    endpoints, a peer that listens on and connects to loopback only.
+    """
+
+    kind: Literal["zenoh"] = "zenoh"
+    domain_id: Annotated[int, msgspec.Meta(ge=0, le=232)] | None = None
+    connect: list[str] | None = None
+    listen: list[str] | None = None
+    mode: Literal["peer", "client"] = "peer"
+    config: str = ""
+
+
 class GraphFile(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
     """A whole graph file."""
 
     runtime: RuntimeSection = RuntimeSection()
     supervisor: SupervisorSection = SupervisorSection()
     nodes: list[NodeEntry] = []
+    transport: TransportSection | None = None
 
 
 def import_node_class(use: str, graph: Path | None = None) -> type[Node]:
@@ -153,6 +178,14 @@ def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
     if not graph.nodes:
         raise GraphFileError(
             f'{path}: no nodes: a graph needs at least one [[nodes]] table with use = "module:Class"'
+        )
+    if graph.transport is not None and graph.transport.config:
+        # A Zenoh config file is found beside the graph file, as a relative path reads.
+        config = Path(path).parent / graph.transport.config
+        if not config.is_file():
+            raise GraphFileError(f"{path}: transport.config: no such file: {config}")
+        graph = msgspec.structs.replace(
+            graph, transport=msgspec.structs.replace(graph.transport, config=str(config))
         )
     classes = []
     nodes = list(graph.nodes)

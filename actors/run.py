@@ -23,12 +23,13 @@ from typing import Any
 
 import anyio
 import anyio.abc
+import msgspec
 
 from actors.clock import WALL_LOOPS, VirtualTimeLoop
 from actors.config import MAX_SECONDS
 from actors.control import ControlEndpoint
 from actors.errors import ActorsError, Escalation, GraphFileError
-from actors.graph import GraphFile, NodeEntry, load_graph
+from actors.graph import GraphFile, NodeEntry, TransportSection, load_graph
 from actors.log import LEVELS, configure_console
 from actors.node import Node
 from actors.runtime import Runtime, frozen_startup
@@ -58,6 +59,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="the wall clock's event loop: select (default, microsecond timers), asyncio, "
         "uvloop (faster, millisecond clock; pip install 'actors[fast]')",
     )
+    parser.add_argument(
+        "--transport",
+        choices=("zenoh", "none"),
+        help="reach other processes over Zenoh (the [transport] section's settings, or the defaults), or not",
+    )
 
 
 def _seconds(text: str) -> float:
@@ -86,7 +92,12 @@ async def run_graph(
     type, a duplicate name).
     """
     policy = graph.supervisor.policy()
-    async with Runtime(name=name, supervisor=policy, attach=[ControlEndpoint()]) as rt:
+    attach: list[Any] = [ControlEndpoint()]
+    if graph.transport is not None:
+        from actors.transport.zenoh import ZenohTransport
+
+        attach.append(ZenohTransport(graph.transport))
+    async with Runtime(name=name, supervisor=policy, attach=attach) as rt:
         async with anyio.create_task_group() as tg:
             await tg.start(spawn_graph, rt, graph, classes)
             if handle_signals:
@@ -176,6 +187,9 @@ def launch(args: argparse.Namespace) -> int:
     except GraphFileError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    if args.transport is not None:
+        transport = (graph.transport or TransportSection()) if args.transport == "zenoh" else None
+        graph = msgspec.structs.replace(graph, transport=transport)
     settings = graph.runtime
     clock = args.clock or settings.clock
     duration = settings.duration if args.duration is None else args.duration
@@ -192,6 +206,13 @@ def launch(args: argparse.Namespace) -> int:
         return 2
     if args.loop == "uvloop" and importlib.util.find_spec("uvloop") is None:
         print("error: --loop uvloop: uvloop is not installed: pip install 'actors[fast]'", file=sys.stderr)
+        return 2
+    if clock == "virtual" and graph.transport is not None:
+        print(
+            f"error: {args.graph}: a graph with a transport runs on the wall clock: other processes "
+            "cannot follow virtual time (use --clock wall, or --transport none)",
+            file=sys.stderr,
+        )
         return 2
     configure_console(LEVELS[args.log_level or settings.log_level])
     factory = VirtualTimeLoop if clock == "virtual" else WALL_LOOPS[args.loop or "select"]

@@ -10,6 +10,7 @@ from actors.transport.seam import (
     RemoteService,
     Transport,
     is_proxy,
+    submit,
 )
 
 __all__ = [
@@ -22,4 +23,5 @@ __all__ = [
     "RemoteService",
     "Transport",
     "is_proxy",
+    "submit",
 ]

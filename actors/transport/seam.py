@@ -38,7 +38,7 @@ from actors.actor import Actor
 from actors.errors import ServiceError
 from actors.log import NodeLogger
 from actors.qos import DurabilityPolicy, QoSSnapshot, ReliabilityPolicy
-from actors.services import Service, ServiceListener
+from actors.services import Service, ServiceListener, _Call
 from actors.topics import Publisher, Subscription, TopicListener, type_name
 
 __all__ = [
@@ -51,6 +51,7 @@ __all__ = [
     "GraphSource",
     "Transport",
     "is_proxy",
+    "submit",
 ]
 
 
@@ -182,6 +183,15 @@ class RemoteService(Service):
 
 def _unused_handler(request: Any, response: Any) -> Any:  # a remote server's handler runs elsewhere
     raise AssertionError("a remote service is never run locally")
+
+
+def submit(service: Service, request: Any, future: asyncio.Future[Any]) -> None:
+    """Queue a request from another process for a local server, as a local client's call would.
+
+    ``future`` gets the response, or ServiceError when the handler raises or
+    the server is destroyed first.
+    """
+    service._push(_Call(request, future))
 
 
 def is_proxy(endpoint: Any) -> bool:

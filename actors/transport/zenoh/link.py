@@ -1,0 +1,126 @@
+"""What the topic and service bridges share: the session, the handoff, names and tokens, warnings.
+
+One :class:`Link` per running transport.  It numbers entities as rmw_zenoh
+does (one counter per session for nodes and endpoints alike), holds the node
+tokens (a node's ``NN`` token lives while the node has an endpoint on the
+wire), and turns a local class into what the wire names it by.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import functools
+from typing import Any
+
+from actors import codec
+from actors.errors import ActorsError
+from actors.log import NodeLogger
+from actors.qos import QoSSnapshot
+from actors.topics import type_name
+from actors.transport.seam import Hub
+from actors.transport.zenoh import attachment
+from actors.transport.zenoh.handoff import Handoff
+from actors.transport.zenoh.keys import data_key, endpoint_token, node_token
+
+__all__ = ["Link", "Endpoint", "wire_type"]
+
+
+@functools.lru_cache(maxsize=4096)
+def wire_type(cls: type) -> tuple[str, str] | None:
+    """``(ROS type name, RIHS01 hash)`` of a message or service class, or None if it has none."""
+    try:
+        return type_name(cls), codec.type_hash(cls)
+    except (ActorsError, TypeError, ValueError):
+        return None  # not a ROS interface (a test's own class): it stays in this process
+
+
+class Endpoint:
+    """An endpoint on the wire: its token, GID and data key, and the node it belongs to."""
+
+    __slots__ = ("fqn", "token", "gid", "key")
+
+    def __init__(self, fqn: str, token: Any, gid: bytes, key: str) -> None:
+        self.fqn = fqn
+        self.token = token
+        self.gid = gid
+        self.key = key
+
+
+class Link:
+    """A transport's session and bookkeeping, shared by its bridges."""
+
+    def __init__(
+        self,
+        zenoh: Any,
+        session: Any,
+        domain: int,
+        hub: Hub,
+        handoff: Handoff,
+        clock_ns: Any,
+        logger: NodeLogger,
+    ) -> None:
+        self.zenoh = zenoh
+        self.session = session
+        self.domain = domain
+        self.zid = str(session.info.zid())
+        self.hub = hub
+        self.handoff = handoff
+        self.now_ns = clock_ns  # wall-clock nanoseconds: source timestamps on the wire
+        self.logger = logger
+        self.loop: asyncio.AbstractEventLoop = hub.loop
+        self._next_id = 0
+        self._nodes: dict[str, tuple[int, Any, int]] = {}  # fqn -> (node id, token, endpoints)
+        self._warned: set[tuple[str, str]] = set()
+
+    def next_id(self) -> int:
+        """The next entity id of this session."""
+        entity = self._next_id
+        self._next_id += 1
+        return entity
+
+    def declare(self, fqn: str, kind: str, name: str, cls: type, qos: QoSSnapshot) -> Endpoint | None:
+        """Declare the token of an endpoint (``kind`` MP, MS, SS or SC); None for a non-ROS type."""
+        wire = wire_type(cls)
+        if wire is None:
+            return None
+        ros_type, hash_ = wire
+        node_id = self._node_up(fqn)
+        key = endpoint_token(self.domain, self.zid, node_id, self.next_id(), kind, fqn, name, ros_type, hash_, qos)
+        token = self.session.liveliness().declare_token(key)
+        return Endpoint(fqn, token, attachment.gid_of(key), data_key(self.domain, name, ros_type, hash_))
+
+    def withdraw(self, endpoint: Endpoint) -> None:
+        """Undeclare an endpoint's token (and its node's, with the node's last endpoint)."""
+        self.undeclare(endpoint.token)
+        self._node_down(endpoint.fqn)
+
+    def _node_up(self, fqn: str) -> int:
+        entry = self._nodes.get(fqn)
+        if entry is None:
+            node_id = self.next_id()
+            token = self.session.liveliness().declare_token(node_token(self.domain, self.zid, node_id, fqn))
+            entry = (node_id, token, 0)
+        self._nodes[fqn] = (entry[0], entry[1], entry[2] + 1)
+        return entry[0]
+
+    def _node_down(self, fqn: str) -> None:
+        node_id, token, count = self._nodes[fqn]
+        if count > 1:
+            self._nodes[fqn] = (node_id, token, count - 1)
+        else:
+            del self._nodes[fqn]
+            self.undeclare(token)
+
+    def undeclare(self, entity: Any) -> None:
+        """Undeclare a Zenoh entity; one that is already gone (a closed session) is fine."""
+        try:
+            entity.undeclare()
+        except Exception:  # noqa: BLE001 - zenoh's ZError once the session is closed
+            pass
+
+    def warn_once(self, key: str, origin: str, text: str) -> None:
+        """Log ``text`` once per key expression and origin (a publisher's GID, a token)."""
+        if (key, origin) in self._warned:
+            return
+        self._warned.add((key, origin))
+        self.logger.warning(text)
