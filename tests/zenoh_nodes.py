@@ -1,0 +1,28 @@
+"""Nodes used by the Zenoh transport's two-process tests."""
+
+from __future__ import annotations
+
+from actors import DurabilityPolicy, Node, QoSProfile
+from interfaces.std_msgs.msg import String
+
+LATCHED = QoSProfile(depth=3, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+
+
+class Latcher(Node):
+    """Publishes ``latched 0`` .. ``latched 4`` once, at start, on a transient-local topic (depth 3)."""
+
+    def __init__(self) -> None:
+        super().__init__("latcher")
+        pub = self.create_publisher(String, "latched", LATCHED)
+        for i in range(5):
+            pub.publish(String(data=f"latched {i}"))
+        self.get_logger().info("published")
+
+
+class LateReader(Node):
+    """Logs ``got: <data>`` for each message on the transient-local ``latched`` topic."""
+
+    def __init__(self) -> None:
+        super().__init__("late_reader")
+        qos = QoSProfile(depth=10, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        self.create_subscription(String, "latched", lambda msg: self.get_logger().info(f"got: {msg.data}"), qos)
