@@ -480,7 +480,7 @@ class _Session:
         if isinstance(request, GetNode):
             return self._node(request.name)
         if isinstance(request, Publish):
-            return self._publish(request)
+            return await self._publish(request)
         if isinstance(request, Subscribe):
             return self._subscribe(request)
         if isinstance(request, Call):
@@ -494,7 +494,7 @@ class _Session:
         try:
             core = self.runtime._find(name)
         except LookupError:
-            raise ControlError(f"unknown node {name}") from None
+            return self._remote_node(name)
         return NodeDetail(
             name=core.fqn,
             subscribers=_pairs((s.topic_name, s.msg_type) for s in core.subscriptions),
@@ -503,9 +503,33 @@ class _Session:
             clients=_pairs((c.service_name, c.srv_type) for c in core.clients),
         )
 
+    def _remote_node(self, name: str) -> NodeDetail:
+        """A node of another process (seen through a transport); ControlError if there is none."""
+        full = name if name.startswith("/") else f"/{name}"
+        node = next((n for n in self.runtime.graph.remote_nodes() if n.name == full), None)
+        if node is None:
+            raise ControlError(f"unknown node {name}")
+
+        def pairs(kind: str) -> tuple[tuple[str, str], ...]:
+            return tuple(sorted({(e.name, e.type) for e in node.endpoints if e.kind == kind}))
+
+        return NodeDetail(
+            name=node.name,
+            subscribers=pairs("subscription"),
+            publishers=pairs("publisher"),
+            servers=pairs("server"),
+            clients=pairs("client"),
+        )
+
     def _topic(self, name: str, asked: str) -> tuple[Any, type]:
-        """The topic ``name`` (None if it does not exist yet) and its type, ``asked`` or its own."""
+        """The topic ``name`` (None if it does not exist yet) and its type, ``asked`` or its own.
+
+        A topic only other processes use (seen through a transport) has the type they give it.
+        """
         topic = self.runtime.topics.topics.get(name)
+        if topic is None and not asked:
+            remote = self.runtime.graph.topic(name)
+            asked = remote.type if remote is not None else ""
         msg_type = codec.get_type(asked) if asked else None
         if topic is None and msg_type is None:
             raise ControlError(f"unknown topic {name}")
@@ -513,7 +537,7 @@ class _Session:
             raise ControlError(f"topic {name} carries {type_name(topic.msg_type)}, not {asked}")
         return topic, msg_type or topic.msg_type
 
-    def _publish(self, request: Publish) -> dict[str, int]:
+    async def _publish(self, request: Publish) -> dict[str, int]:
         name = expand(request.topic, "/", "_")
         _, msg_type = self._topic(name, request.type)
         msg = codec.convert(request.msg, msg_type)  # before anything is made: a bad one leaves no trace
@@ -522,15 +546,30 @@ class _Session:
             pub = Publisher(self, name, msg_type, QoSProfile(depth=10))  # type: ignore[arg-type]
             self.runtime.topics.add_publisher(pub)
             self._publishers[name] = pub
+            await self._reach_other_processes(pub)
         pub.publish(msg)
         return {"subscribers": pub.get_subscription_count()}
+
+    async def _reach_other_processes(self, pub: Publisher) -> None:
+        """Give a new publisher a moment to find the subscriptions of other processes.
+
+        A transport connects it to them once discovery has matched them (a few
+        milliseconds); publishing before would miss them.  At most 2 s.
+        """
+        info = self.runtime.graph.topic(pub.topic_name)
+        if info is not None and any(s.process for s in info.subscriptions):
+            with anyio.move_on_after(2.0):
+                while not pub.get_subscription_count():
+                    await anyio.sleep(0.01)
 
     def _subscribe(self, request: Subscribe) -> dict[str, str]:
         name = expand(request.topic, "/", "_")
         topic, msg_type = self._topic(name, request.type)
         # Best effort and volatile match every publisher; transient local when all
         # publishers keep history, so that a latched topic's last message shows up.
-        pubs = topic.publishers if topic is not None else ()
+        # Those of other processes count too (a transport's graph view has them).
+        info = self.runtime.graph.topic(name)
+        pubs = info.publishers if info is not None else ()
         # (Not for `hz`, content=False: a replayed history would look like a burst.)
         latched = request.content and bool(pubs) and all(
             p.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in pubs

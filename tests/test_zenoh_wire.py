@@ -124,16 +124,16 @@ def test_qos_strings_leave_rmw_zenohs_defaults_empty_and_read_back(qos, text):
 def test_attachments_are_the_sdks_byte_for_byte():
     for recorded in (*SDK["samples"], *SDK["queries"]):
         raw = bytes.fromhex(recorded["attachment"])
-        sequence, stamp, gid = attachment.decode(raw)
-        assert attachment.encode(sequence, stamp, gid) == raw
-    assert [attachment.decode(bytes.fromhex(s["attachment"]))[0] for s in SDK["samples"]] == [0, 1]
-    assert attachment.decode(bytes.fromhex(SDK["queries"][0]["attachment"]))[0] == 1  # a client counts from 1
+        sequence, stamp, gid = attachment.unpack(raw)
+        assert attachment.pack(sequence, stamp, gid) == raw
+    assert [attachment.unpack(bytes.fromhex(s["attachment"]))[0] for s in SDK["samples"]] == [0, 1]
+    assert attachment.unpack(bytes.fromhex(SDK["queries"][0]["attachment"]))[0] == 1  # a client counts from 1
 
 
 def test_the_attachment_layout_is_zenohs_own_serialization():
     zenoh_ext = pytest.importorskip("zenoh.ext")
     gid = bytes(range(16))
-    ours = attachment.encode(7, -3, gid)
+    ours = attachment.pack(7, -3, gid)
     theirs = zenoh_ext.z_serialize((zenoh_ext.Int64(7), zenoh_ext.Int64(-3), gid)).to_bytes()
     assert ours == theirs
     assert len(ours) == attachment.SIZE == 33
@@ -145,7 +145,7 @@ def test_the_attachment_layout_is_zenohs_own_serialization():
 )
 def test_a_malformed_attachment_is_refused_with_the_reason(data, why):
     with pytest.raises(ValueError, match=why):
-        attachment.decode(data)
+        attachment.unpack(data)
 
 
 def test_gids_are_the_xxh3_128_of_the_token_low_half_first():

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import functools
 import socket
 import time
 from collections.abc import Callable, Iterable, Iterator
@@ -60,15 +61,32 @@ _sample_decoder = msgspec.msgpack.Decoder(Sample)
 def add_verb(
     verbs: Any, name: str, func: Callable[[argparse.Namespace], int | None], help: str
 ) -> Any:
-    """Add a verb that runs ``func(args)`` and takes ``--graph NAME``; return its parser."""
+    """Add a verb that runs ``func(args)`` and takes ``--graph NAME`` and ``--transport``; return its parser."""
     parser = verbs.add_parser(name, help=help)
     parser.add_argument(
         "--graph",
         metavar="NAME",
         help="the graph to talk to when several run (its file's stem, e.g. graph)",
     )
-    parser.set_defaults(func=func)
+    parser.add_argument(
+        "--transport",
+        choices=("zenoh", "none"),
+        help="zenoh: see every process's nodes over Zenoh (actors graphs, ROS 2 with rmw_zenoh_cpp) "
+        "instead of one graph; default: $ACTORS_TRANSPORT, else none",
+    )
+    parser.set_defaults(func=functools.partial(_through_transport, func))
     return parser
+
+
+def _through_transport(func: Callable[[argparse.Namespace], int | None], args: argparse.Namespace) -> int | None:
+    """Run a verb against one graph, or against the whole Zenoh graph (``--transport zenoh``)."""
+    from actors.cli import _transport
+
+    if not _transport.chosen(args.transport):
+        return func(args)
+    with _transport.bridge() as path:
+        args.graph = path  # every verb connects to it as it would to a graph
+        return func(args)
 
 
 class Connection:
@@ -214,12 +232,18 @@ def _open(path: Path) -> socket.socket | None:
     return sock
 
 
-def connect(graph: str | None) -> Connection:
+def connect(graph: str | Path | None) -> Connection:
     """A connection to the graph named ``graph``, or to the only one running when None.
 
+    ``graph`` may also be the path of an endpoint's socket (``--transport``'s).
     Raises ControlError when no graph runs, when ``graph`` is not running, or
     when several run and ``graph`` is None.
     """
+    if isinstance(graph, Path):
+        sock = _open(graph)
+        if sock is None:
+            raise ControlError(f"cannot reach the endpoint at {graph}")
+        return Connection(sock, "zenoh")
     paths = endpoint_paths()
     if graph is not None:
         sock = _open(paths[graph]) if graph in paths else None

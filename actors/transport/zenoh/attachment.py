@@ -16,19 +16,19 @@ from __future__ import annotations
 
 import struct
 
-__all__ = ["SIZE", "GID_SIZE", "encode", "decode", "gid_of"]
+__all__ = ["SIZE", "GID_SIZE", "pack", "unpack", "gid_of"]
 
 GID_SIZE = 16
 SIZE = 8 + 8 + 1 + GID_SIZE
 _LAYOUT = struct.Struct(f"<qqB{GID_SIZE}s")
 
 
-def encode(sequence: int, stamp_ns: int, gid: bytes) -> bytes:
+def pack(sequence: int, stamp_ns: int, gid: bytes) -> bytes:
     """The attachment of one sample, query or reply."""
     return _LAYOUT.pack(sequence, stamp_ns, GID_SIZE, gid)
 
 
-def decode(data: bytes) -> tuple[int, int, bytes]:
+def unpack(data: bytes) -> tuple[int, int, bytes]:
     """``(sequence, stamp_ns, gid)`` from an attachment; ValueError saying what is wrong."""
     if len(data) != SIZE:
         raise ValueError(f"attachment of {len(data)} bytes, expected {SIZE}")

@@ -18,7 +18,7 @@ from actors.log import NodeLogger
 from actors.qos import QoSSnapshot
 from actors.topics import type_name
 from actors.transport.seam import Hub
-from actors.transport.zenoh import attachment
+from actors.transport.zenoh.attachment import gid_of
 from actors.transport.zenoh.handoff import Handoff
 from actors.transport.zenoh.keys import data_key, endpoint_token, node_token
 
@@ -87,7 +87,7 @@ class Link:
         node_id = self._node_up(fqn)
         key = endpoint_token(self.domain, self.zid, node_id, self.next_id(), kind, fqn, name, ros_type, hash_, qos)
         token = self.session.liveliness().declare_token(key)
-        return Endpoint(fqn, token, attachment.gid_of(key), data_key(self.domain, name, ros_type, hash_))
+        return Endpoint(fqn, token, gid_of(key), data_key(self.domain, name, ros_type, hash_))
 
     def withdraw(self, endpoint: Endpoint) -> None:
         """Undeclare an endpoint's token (and its node's, with the node's last endpoint)."""

@@ -29,7 +29,7 @@ from actors.errors import ServiceError
 from actors.qos import QoSSnapshot
 from actors.services import Client, Service, ServiceTable
 from actors.transport.seam import RemoteService, submit
-from actors.transport.zenoh import attachment
+from actors.transport.zenoh.attachment import gid_of, pack, unpack
 from actors.transport.zenoh.discovery import Discovery, local_hash
 from actors.transport.zenoh.keys import Token, data_key
 from actors.transport.zenoh.link import Endpoint, Link
@@ -63,7 +63,7 @@ class ServiceBridge:
         self._standins: dict[str, RemoteService] = {}
         self._keys: dict[RemoteService, str] = {}
         self._calls: dict[RemoteService, set[asyncio.Future[Any]]] = {}
-        self._gid = attachment.gid_of(f"{link.zid}/calls")  # our queries' client GID
+        self._gid = gid_of(f"{link.zid}/calls")  # our queries' client GID
         self._sequence = 0
 
     # -- serving --------------------------------------------------------------------
@@ -95,7 +95,7 @@ class ServiceBridge:
             raw = query.attachment
             if raw is None:
                 raise ValueError("no attachment (a request needs its sequence number and client GID)")
-            sequence, _, gid = attachment.decode(raw.to_bytes())
+            sequence, _, gid = unpack(raw.to_bytes())
             origin = gid.hex()
             payload = query.payload
             request = codec.decode_cdr(payload.to_bytes() if payload is not None else b"", served.service.srv_type.Request)
@@ -114,7 +114,7 @@ class ServiceBridge:
             _finish(query, error=str(future.exception()))
         else:
             payload = codec.encode_cdr(future.result())
-            _finish(query, key=served.endpoint.key, payload=payload, attachment=attachment.encode(sequence, self._link.now_ns(), gid))
+            _finish(query, key=served.endpoint.key, payload=payload, attachment=pack(sequence, self._link.now_ns(), gid))
 
     def remove_service(self, service: Service) -> None:
         """Stop serving ``service`` elsewhere; a server elsewhere may stand in for it again."""
@@ -197,7 +197,7 @@ class ServiceBridge:
                 indirect=False,
             ),
             payload=payload,
-            attachment=attachment.encode(self._sequence, link.now_ns(), self._gid),
+            attachment=pack(self._sequence, link.now_ns(), self._gid),
             target=zenoh.QueryTarget.ALL_COMPLETE,
             consolidation=zenoh.ConsolidationMode.NONE,
             timeout=_CALL_TIMEOUT,

@@ -31,7 +31,7 @@ from actors import codec
 from actors.qos import DurabilityPolicy, HistoryPolicy, ReliabilityPolicy
 from actors.topics import Publisher, Subscription, Topic, TopicTable
 from actors.transport.seam import Inlet, Outlet
-from actors.transport.zenoh import attachment
+from actors.transport.zenoh.attachment import pack, unpack
 from actors.transport.zenoh.link import Endpoint, Link
 
 __all__ = ["TopicBridge"]
@@ -137,7 +137,7 @@ class TopicBridge:
             return
         out.sequence += 1
         try:
-            out.zpub.put(payload, attachment=attachment.encode(out.sequence, link.now_ns(), out.endpoint.gid))
+            out.zpub.put(payload, attachment=pack(out.sequence, link.now_ns(), out.endpoint.gid))
         except Exception as exc:  # noqa: BLE001 - the session closing under us
             link.warn_once(out.endpoint.key, "put", f"cannot send {pub.topic_name}: {exc}")
 
@@ -202,7 +202,7 @@ class TopicBridge:
         origin = "?"
         try:
             if raw is not None:
-                origin = attachment.decode(raw.to_bytes())[2].hex()
+                origin = unpack(raw.to_bytes())[2].hex()
             msg = codec.decode_cdr(sample.payload.to_bytes(), incoming.inlet.msg_type)
         except Exception as exc:  # anything a peer sends: logged once per publisher, dropped
             link.warn_once(

@@ -1,0 +1,84 @@
+"""Helpers of the Zenoh transport's tests: free ports, the children's environment, children's output."""
+
+from __future__ import annotations
+
+import asyncio
+import re
+import signal
+import socket
+import sys
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+
+from conftest import ROOT, python_env
+
+__all__ = ["free_port", "zenoh_env", "Process", "spawned"]
+
+
+def free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return sock.getsockname()[1]
+
+
+def zenoh_env(port: int) -> dict[str, str]:
+    """A child's environment: peers meeting on ``port`` of loopback, and nothing else."""
+    env = python_env()
+    env["ZENOH_CONFIG_OVERRIDE"] = (
+        f'connect/endpoints=["tcp/127.0.0.1:{port}"];'
+        f'listen/endpoints=["tcp/127.0.0.1:{port}","tcp/127.0.0.1:0"]'
+    )
+    env.pop("ROS_DOMAIN_ID", None)
+    return env
+
+
+class Process:
+    """A child process whose output lines (stdout and stderr) are collected as they come."""
+
+    def __init__(self, proc: asyncio.subprocess.Process) -> None:
+        self.proc = proc
+        self.lines: list[str] = []
+        self._changed = asyncio.Event()
+
+    async def _read(self) -> None:
+        assert self.proc.stdout is not None
+        async for raw in self.proc.stdout:
+            self.lines.append(raw.decode(errors="replace").rstrip("\n"))
+            self._changed.set()
+        self._changed.set()
+
+    async def wait_for(self, pattern: str, count: int = 1) -> list[re.Match[str]]:
+        """The first ``count`` matches of ``pattern`` among the lines, waiting for more as needed."""
+        regex = re.compile(pattern)
+        while True:
+            seen = len(self.lines)
+            found = [m for line in self.lines if (m := regex.search(line))]
+            if len(found) >= count:
+                return found[:count]
+            if self.proc.returncode is not None:
+                raise AssertionError(f"process ended ({self.proc.returncode}) before {pattern!r}:\n" + "\n".join(self.lines))
+            self._changed.clear()
+            if len(self.lines) == seen:  # nothing came between looking and clearing
+                await self._changed.wait()
+
+
+@asynccontextmanager
+async def spawned(*args: str, env: dict[str, str]) -> AsyncIterator[Process]:
+    """``python ARGS`` from the repo root, stopped (SIGINT, then killed) when the block ends."""
+    proc = await asyncio.create_subprocess_exec(
+        sys.executable, *args, cwd=ROOT, env=env, stdin=asyncio.subprocess.DEVNULL,
+        stdout=asyncio.subprocess.PIPE, stderr=asyncio.subprocess.STDOUT,
+    )
+    child = Process(proc)
+    reader = asyncio.ensure_future(child._read())
+    try:
+        yield child
+    finally:
+        if proc.returncode is None:
+            proc.send_signal(signal.SIGINT)
+            try:
+                await asyncio.wait_for(proc.wait(), 10)
+            except TimeoutError:
+                proc.kill()
+                await proc.wait()
+        await reader
