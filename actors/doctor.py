@@ -10,7 +10,10 @@ check passes or fails with one reason per problem found:
   hidden topics (an action's) are left out: actions have their own check;
 - action clients whose action no node serves (a warning too);
 - endpoints whose type differs from their topic's (the topic table refuses
-  them, so this guards the invariant rather than expecting failures);
+  them, so this guards the invariant rather than expecting failures; across
+  processes it finds real ones);
+- endpoints of other processes (through a transport) whose type this process
+  knows under another RIHS01 hash, or not at all: their data is ignored;
 - QoS incompatibility: a best-effort publisher to a reliable subscription, a
   volatile publisher to a transient-local one (such pairs are not connected);
 - nodes that crashed or keep restarting;
@@ -118,6 +121,7 @@ def diagnose(
         _one_sided(topics, publishers=False),
         _unserved(graph.actions()),
         _per_topic(topics, "topic types", _type_mismatches),
+        _per_topic(topics, "type hashes", _hash_mismatches),
         _per_topic(topics, "QoS compatibility", _qos_mismatches),
         _node_health(nodes + graph.ended()),
         _per_topic(topics, "dropped messages", _drops),
@@ -196,10 +200,21 @@ def _type_mismatches(topic: TopicInfo) -> list[str]:
     ]
 
 
+def _hash_mismatches(topic: TopicInfo) -> list[str]:
+    """Endpoints of other processes this one cannot read: another RIHS01 hash, or a type unknown here."""
+    return [
+        f"{topic.name}: {e.node} (process {e.process}) uses {e.type} {e.type_hash}: {e.why}"
+        for e in _visible((*topic.publishers, *topic.subscriptions))
+        if e.why
+    ]
+
+
 def _qos_mismatches(topic: TopicInfo) -> list[str]:
     found = []
     for pub in _visible(topic.publishers):
         for sub in _visible(topic.subscriptions):
+            if pub.process or sub.process:
+                continue  # across processes Zenoh connects every pair, as rmw_zenoh does
             why = qos_incompatibility(pub.qos, sub.qos)
             if why is not None:
                 found.append(f"{topic.name}: {pub.node} does not reach {sub.node}: {why}")

@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import anyio
+
 from actors import DurabilityPolicy, Node, QoSProfile
+from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.std_msgs.msg import String
 
 LATCHED = QoSProfile(depth=3, durability=DurabilityPolicy.TRANSIENT_LOCAL)
@@ -26,3 +29,17 @@ class LateReader(Node):
         super().__init__("late_reader")
         qos = QoSProfile(depth=10, durability=DurabilityPolicy.TRANSIENT_LOCAL)
         self.create_subscription(String, "latched", lambda msg: self.get_logger().info(f"got: {msg.data}"), qos)
+
+
+class SlowAdder(Node):
+    """Serves ``add_two_ints`` but takes a minute to answer (for killing it mid-call)."""
+
+    def __init__(self) -> None:
+        super().__init__("slow_adder")
+        self.create_service(AddTwoInts, "add_two_ints", self.add)
+
+    async def add(self, request: AddTwoInts.Request, response: AddTwoInts.Response) -> AddTwoInts.Response:
+        self.get_logger().info("Incoming request")
+        await anyio.sleep(60)
+        response.sum = request.a + request.b
+        return response
