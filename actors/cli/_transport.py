@@ -25,7 +25,6 @@ from contextlib import contextmanager
 from pathlib import Path
 
 import anyio
-import anyio.abc
 
 from actors.control import ControlServer
 from actors.errors import ActorsError, ControlError
@@ -68,16 +67,16 @@ def bridge() -> Iterator[Path]:
         async with Runtime(name="actors_cli", attach=[transport]) as rt:
             state["runtime"] = rt
             await _settle(transport)
-            sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
-            sock.bind(str(path))
-            sock.listen(8)
-            server = ControlServer(rt, path)
-            listener = await anyio.abc.SocketListener.from_socket(sock)
-            async with listener, anyio.create_task_group() as tg:
-                tg.start_soon(listener.serve, server.handle, tg)
-                ready.set()
-                await rt.wait()
-                tg.cancel_scope.cancel()
+            with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as sock:
+                sock.setblocking(False)
+                sock.bind(str(path))
+                sock.listen(8)
+                server = ControlServer(rt, path)
+                async with anyio.create_task_group() as tg:
+                    tg.start_soon(server.pool.run, sock)
+                    ready.set()
+                    await rt.wait()
+                    tg.cancel_scope.cancel()
 
     def run() -> None:
         try:
