@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import asyncio
-import json
 import signal
 import sys
 
@@ -11,7 +10,7 @@ import anyio
 import pytest
 
 from conftest import ROOT
-from zenoh_procs import free_port, spawned, zenoh_env
+from zenoh_procs import free_port, raw_config, spawned, zenoh_env
 
 zenoh = pytest.importorskip("zenoh", reason="the Zenoh transport's tests need eclipse-zenoh (the test extra has it)")
 
@@ -36,11 +35,7 @@ class TokenWatch:
     """A Zenoh session of the test's own that tells when a node's liveliness token comes and goes."""
 
     def __init__(self, port: int, node: str) -> None:
-        config = zenoh.Config()
-        config.insert_json5("connect/endpoints", json.dumps([f"tcp/127.0.0.1:{port}"]))
-        config.insert_json5("listen/endpoints", json.dumps(["tcp/127.0.0.1:0"]))
-        config.insert_json5("scouting/multicast/enabled", "false")
-        self.session = zenoh.open(config)
+        self.session = zenoh.open(raw_config(port))
         self.appeared = asyncio.Event()
         self.gone = asyncio.Event()
         loop = asyncio.get_running_loop()

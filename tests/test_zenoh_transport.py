@@ -7,24 +7,19 @@ one has to be killed).
 
 from __future__ import annotations
 
-import json
 import logging
-from collections.abc import AsyncIterator
-from contextlib import asynccontextmanager
-from typing import Any
 
 import anyio
 import pytest
 
 from actors import Node, Runtime, ServiceError
 from actors.doctor import diagnose
-from actors.graph import TransportSection
 from actors.transport.zenoh import ZenohTransport
 from actors.transport.zenoh.attachment import pack
 from actors.transport.zenoh.keys import data_key
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.std_msgs.msg import String
-from zenoh_procs import free_port, spawned, zenoh_env
+from zenoh_procs import free_port, matched, peer, section, spawned, until, zenoh_env
 
 zenoh = pytest.importorskip("zenoh", reason="the Zenoh transport's tests need eclipse-zenoh (the test extra has it)")
 
@@ -48,33 +43,6 @@ class Caller(Node):
     def __init__(self) -> None:
         super().__init__("caller")
         self.client = self.create_client(AddTwoInts, "add_two_ints")
-
-
-def section(port: int) -> TransportSection:
-    return TransportSection(connect=[f"tcp/127.0.0.1:{port}"], listen=[f"tcp/127.0.0.1:{port}", "tcp/127.0.0.1:0"])
-
-
-@asynccontextmanager
-async def peer(port: int) -> AsyncIterator[Any]:
-    """A raw Zenoh session on the same meeting port: the other process, under the test's control."""
-    config = zenoh.Config()
-    config.insert_json5("connect/endpoints", json.dumps([f"tcp/127.0.0.1:{port}"]))
-    config.insert_json5("listen/endpoints", json.dumps(["tcp/127.0.0.1:0"]))
-    config.insert_json5("scouting/multicast/enabled", "false")
-    session = await anyio.to_thread.run_sync(zenoh.open, config)
-    try:
-        yield session
-    finally:
-        await anyio.to_thread.run_sync(session.close)
-
-
-async def matched(session: Any, key: str) -> Any:
-    """A publisher on ``key`` once a subscriber elsewhere matches it (the listener's transport)."""
-    pub = session.declare_publisher(key)
-    with anyio.fail_after(10):
-        while not pub.matching_status.matching:  # zenoh tells status, not change, to a caller without a listener
-            await anyio.sleep(0.01)
-    return pub
 
 
 async def test_malformed_samples_are_logged_once_per_publisher_and_dropped(caplog):
@@ -115,9 +83,7 @@ async def test_a_token_with_an_unknown_type_hash_is_ignored_and_doctor_says_why(
             liveliness.declare_token(f"@ros2_lv/0/{zid}/0/3/XX/%/%/old_talker"),  # not rmw_zenoh's at all
         ]
         rt.spawn(Listener)
-        with anyio.fail_after(10):
-            while len(rt.graph.topic("/chatter").publishers) < 1 or rt.graph.topic("/odd") is None:
-                await anyio.sleep(0.01)  # tokens arrive through zenoh's threads, with no event to wait on
+        await until(lambda: len(rt.graph.topic("/chatter").publishers) >= 1 and rt.graph.topic("/odd") is not None)
         chatter = rt.graph.topic("/chatter")
         (remote,) = chatter.publishers
         assert (remote.node, remote.process, remote.type_hash) == ("/old_talker", zid, other_hash)
@@ -146,4 +112,4 @@ async def test_a_server_process_killed_during_a_call_fails_the_call_at_once(tmp_
             server.proc.kill()
             with anyio.fail_after(10), pytest.raises(ServiceError, match="add_two_ints"):
                 await call
-            assert not caller.client.service_is_ready()  # its stand-in left with it
+            await until(lambda: not caller.client.service_is_ready(), 5)  # its stand-in leaves with its token

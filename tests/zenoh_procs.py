@@ -1,18 +1,23 @@
-"""Helpers of the Zenoh transport's tests: free ports, the children's environment, children's output."""
+"""Helpers of the Zenoh transport's tests: free ports, the children's environment and output, raw Zenoh peers."""
 
 from __future__ import annotations
 
 import asyncio
+import json
 import re
 import signal
 import socket
 import sys
-from collections.abc import AsyncIterator
+from collections.abc import AsyncIterator, Callable
 from contextlib import asynccontextmanager
+from typing import Any
 
+import anyio
+
+from actors.graph import TransportSection
 from conftest import ROOT, python_env
 
-__all__ = ["free_port", "zenoh_env", "Process", "spawned"]
+__all__ = ["free_port", "zenoh_env", "Process", "spawned", "section", "raw_config", "peer", "matched", "until"]
 
 
 def free_port() -> int:
@@ -82,3 +87,47 @@ async def spawned(*args: str, env: dict[str, str]) -> AsyncIterator[Process]:
                 proc.kill()
                 await proc.wait()
         await reader
+
+
+def section(port: int) -> TransportSection:
+    """A transport section meeting the others on ``port`` of loopback."""
+    return TransportSection(connect=[f"tcp/127.0.0.1:{port}"], listen=[f"tcp/127.0.0.1:{port}", "tcp/127.0.0.1:0"])
+
+
+def raw_config(port: int) -> Any:
+    """A plain Zenoh session's config: connects to ``port``, listens on a free one, no scouting."""
+    import zenoh
+
+    config = zenoh.Config()
+    config.insert_json5("connect/endpoints", json.dumps([f"tcp/127.0.0.1:{port}"]))
+    config.insert_json5("listen/endpoints", json.dumps(["tcp/127.0.0.1:0"]))
+    config.insert_json5("scouting/multicast/enabled", "false")
+    return config
+
+
+@asynccontextmanager
+async def peer(port: int) -> AsyncIterator[Any]:
+    """A raw Zenoh session on the same meeting port: the other process, under the test's control."""
+    import zenoh
+
+    session = await anyio.to_thread.run_sync(zenoh.open, raw_config(port))
+    try:
+        yield session
+    finally:
+        await anyio.to_thread.run_sync(session.close)
+
+
+async def matched(session: Any, key: str) -> Any:
+    """A publisher on ``key`` once a subscriber elsewhere matches it (the listener's transport)."""
+    pub = session.declare_publisher(key)
+    with anyio.fail_after(10):
+        while not pub.matching_status.matching:  # zenoh tells status, not change, to a caller without a listener
+            await anyio.sleep(0.01)
+    return pub
+
+
+async def until(condition: Callable[[], bool], seconds: float = 10) -> None:
+    """Wait until ``condition()`` holds, failing after ``seconds``."""
+    with anyio.fail_after(seconds):
+        while not condition():  # tokens and matches arrive through zenoh's threads: nothing local to wait on
+            await anyio.sleep(0.01)
