@@ -45,6 +45,7 @@ async def test_a_clean_graph_passes_every_check():
         "subscriptions without publishers": None,
         "action servers": None,
         "topic types": None,
+        "type hashes": None,
         "QoS compatibility": None,
         "node health": None,
         "dropped messages": None,
