@@ -12,7 +12,7 @@ import time
 from collections.abc import Callable, Sequence
 from typing import NamedTuple
 
-from bench import cdr, memory, scale, services, sim, startup, throughput, timer, topics_scale
+from bench import cdr, memory, scale, services, sim, startup, throughput, timer, topics_scale, transport
 from bench.harness import Result, table
 from bench.report import write
 from bench.targets import check
@@ -37,6 +37,7 @@ SCENARIOS = (
     Scenario("h", "topics", topics_scale.run),
     Scenario("i", "cdr", cdr.run),
     Scenario("j", "scale", scale.run),
+    Scenario("k", "zenoh", transport.run),
 )
 
 

@@ -84,6 +84,7 @@ def _cdr(baseline: str, at_least: float) -> Callable[[Lookup], tuple[bool, str] 
 SEQ, CONC = "c. service sequential", "c. service 100 callers"
 TIMEOUT = "actors, timeout=5"
 SCALE = "10,000 nodes"
+ZENOH = "k. zenoh (2 processes)"
 TARGETS = (
     # Issue 16: against our own limits (the bare asyncio floor, the physics core, a direct call).
     Target("a", "one-way ≥ 0.7× the direct-call floor",
@@ -106,6 +107,11 @@ TARGETS = (
     Target("j", "a 10 Hz timer tick ≤ 8 µs at 10,000 nodes",
            _at_most(f"j. 10 Hz timer tick, {SCALE}", "actors", 8, "µs CPU")),
     Target("j", "graceful stop of 10,000 nodes ≤ 0.5 s", _at_most(f"j. graceful stop, {SCALE}", "actors", 0.5, "s")),
+    # Issue 13's: across two processes on loopback, actors over Zenoh against rclpy over Fast DDS.
+    Target("k", "cross-process one-way ≥ 2× rclpy's (Fast DDS)",
+           _ratio(ZENOH, "one-way: actors (Zenoh)", ZENOH, "one-way: rclpy (Fast DDS)", 2)),
+    Target("k", "cross-process round trip ≤ rclpy's (Fast DDS)",
+           _ratio(ZENOH, "round trip: actors (Zenoh)", ZENOH, "round trip: rclpy (Fast DDS)", 1)),
     # Issue 7's, kept.
     Target("a", "one-way ≥ 1.5× the bare queue", _ratio("a. one-way", "actors", "a. one-way", "asyncio.Queue", 1.5)),
     Target("a", "one-way ≥ 20× rclpy EventsExecutor",
@@ -130,7 +136,7 @@ TARGETS = (
 )
 
 
-def check(results: Sequence[Result], scenarios: str = "abcdefghij") -> str:
+def check(results: Sequence[Result], scenarios: str = "abcdefghijk") -> str:
     """A Markdown table of the targets of ``scenarios`` (letters): what was measured, whether it is met."""
     by_case = {(r.scenario, r.case): r for r in results}
     lines = ["| scenario | target | measured | met |", "|---|---|---|---|"]
