@@ -423,3 +423,29 @@ def test_the_graph_view_shows_a_scripts_nodes(session):
     seen = infos["/robot/seen"]
     assert seen.cls == "actors.compat.rclpy.node:Node" and seen.state == "running"
     assert seen.publishes == ("/robot/out",) and seen.restart == "temporary"
+
+
+def test_matched_events_follow_a_script_creating_and_destroying_endpoints(session):
+    from actors.compat.rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
+
+    watcher = rclpy.create_node("watcher")
+    seen: list[tuple[str, int, int]] = []
+    watcher.create_publisher(String, "out", 10, event_callbacks=PublisherEventCallbacks(
+        matched=lambda info: seen.append(("subs", info.current_count, info.current_count_change))))
+    watcher.create_subscription(String, "in", lambda msg: None, 10, event_callbacks=SubscriptionEventCallbacks(
+        matched=lambda info: seen.append(("pubs", info.current_count, info.current_count_change))))
+    other = rclpy.create_node("other")
+    executor = SingleThreadedExecutor()
+    executor.add_node(watcher)
+    executor.add_node(other)
+    sub = other.create_subscription(String, "out", lambda msg: None, 10)
+    pubs = [other.create_publisher(String, "in", 10) for _ in range(2)]
+    assert seen == []  # event callbacks run when the node is spun, as rclpy's
+    executor.spin_once(timeout_sec=0)
+    executor.spin_once(timeout_sec=0)
+    assert other.destroy_subscription(sub) and other.destroy_publisher(pubs[0])
+    assert not other.destroy_publisher(pubs[0])  # already gone
+    executor.spin_once(timeout_sec=0)
+    executor.spin_once(timeout_sec=0)
+    # Changes not yet taken add up into one event, as in rclpy (the status counts since it was last read).
+    assert sorted(seen) == [("pubs", 1, -1), ("pubs", 2, 2), ("subs", 0, -1), ("subs", 1, 1)]

@@ -13,6 +13,8 @@ __all__ = ["Publisher"]
 class Publisher(NativeProxy):
     """Publishes on one topic (``Node.create_publisher``); other attributes are the native publisher's."""
 
+    catcher = None  # nothing of the runtime calls into a publisher (its event callbacks are native)
+
     def __init__(self, node: ScriptNode, native: Any) -> None:
         self._node = node
         self._native = native
