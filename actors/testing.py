@@ -18,15 +18,18 @@ ordinary one.
 It also holds the grading helpers for rclpy exercises: :func:`run_script` runs
 a student's unmodified rclpy program (:func:`run_node`, one node class of it)
 beside a graph on the virtual clock, and lets the test wait, read topics,
-publish and call services (:mod:`actors.compat.grading`).
+publish and call services (:mod:`actors.compat.grading`).  The ``rclpy_overlay``
+fixture gives a test rclpy itself, as ``actors run --clock virtual`` gives it
+to a script: the test's thread is the script's.
 """
 
 from __future__ import annotations
 
 import asyncio
 import inspect
-from collections.abc import Callable, Generator, Mapping
+from collections.abc import Callable, Generator, Iterator, Mapping
 from pathlib import Path
+from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 import pytest
@@ -39,6 +42,7 @@ if TYPE_CHECKING:
 __all__ = [
     "run_script",
     "run_node",
+    "rclpy_overlay",
     "pytest_configure",
     "pytest_pycollect_makeitem",
     "pytest_runtest_setup",
@@ -131,3 +135,24 @@ def run_node(node: str | type, *args: str, graph: str | Path | None = None, cloc
     from actors.compat.grading import run_node as run
 
     return run(node, *args, graph=graph, clock=clock)
+
+
+@pytest.fixture
+def rclpy_overlay() -> Iterator[ModuleType]:
+    """``rclpy``, initialized on a virtual-clock runtime, for one test; shut down and put back after.
+
+    While the test runs, ``import rclpy`` and ``from std_msgs.msg import String``
+    are actors' (:mod:`actors.compat.overlay`); the test's thread is the script's
+    thread, so virtual time moves only while it spins or sleeps through rclpy.
+    """
+    from actors.compat import Session, overlaid, use_session
+
+    with overlaid(), Session(clock="virtual") as session, use_session(session), session.timekeeping():
+        import rclpy
+
+        rclpy.init(args=[])
+        try:
+            yield rclpy
+        finally:
+            rclpy.get_default_context().finish()
+            rclpy.try_shutdown()

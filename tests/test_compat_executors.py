@@ -449,3 +449,21 @@ def test_matched_events_follow_a_script_creating_and_destroying_endpoints(sessio
     executor.spin_once(timeout_sec=0)
     # Changes not yet taken add up into one event, as in rclpy (the status counts since it was last read).
     assert sorted(seen) == [("pubs", 1, -1), ("pubs", 2, 2), ("subs", 0, -1), ("subs", 1, 1)]
+
+
+def test_the_global_executor_is_the_one_rclpy_spin_uses_until_shutdown(session):
+    executor = rclpy.get_global_executor()
+    assert isinstance(executor, SingleThreadedExecutor) and rclpy.get_global_executor() is executor
+    node = rclpy.create_node("globally_spun")
+    heard: list[str] = []
+    node.create_subscription(String, "g", lambda msg: heard.append(msg.data), 10)
+    node.create_publisher(String, "g", 10).publish(String(data="one"))
+    rclpy.spin_once(node, timeout_sec=0)  # spun by the global executor, which lets go of the node after
+    assert heard == ["one"] and executor.get_nodes() == []
+    executor.add_node(node)
+    node.create_publisher(String, "g", 10).publish(String(data="two"))
+    executor.spin_once(timeout_sec=0)
+    assert heard == ["one", "two"]
+    rclpy.shutdown()
+    rclpy.init(args=[])
+    assert rclpy.get_global_executor() is not executor  # a new context, a new executor

@@ -119,3 +119,33 @@ async def test_marked():
     result = pytester.runpytest("-p", "no:cacheprovider", "-p", "no:hypothesispytest", "-p", "no:asyncio", "-W", "error")
     result.assert_outcomes(errors=1)
     result.stdout.fnmatch_lines(["*the virtual_time mark needs pytest-asyncio 1.4 or newer*"])
+
+
+RCLPY_TEST = """
+import time
+
+def test_a_node_spun_in_the_test(rclpy_overlay):
+    import rclpy
+    from std_msgs.msg import String
+
+    assert rclpy is rclpy_overlay and rclpy.ok()
+    node = rclpy.create_node("probe")
+    heard = []
+    node.create_subscription(String, "beat", lambda msg: heard.append(msg.data), 10)
+    pub = node.create_publisher(String, "beat", 10)
+    node.create_timer(60.0, lambda: pub.publish(String(data="minute")))
+    started = time.monotonic()
+    while not heard:
+        rclpy.spin_once(node, timeout_sec=120.0)
+    assert heard == ["minute"] and node.get_clock().now().nanoseconds == 60 * 10**9
+    assert time.monotonic() - started < 30  # a simulated minute, not a real one
+
+def test_outside_the_fixture_rclpy_is_not_actors():
+    import sys
+    assert "rclpy" not in sys.modules or not sys.modules["rclpy"].__name__.startswith("actors")
+"""
+
+
+def test_the_rclpy_overlay_fixture(pytester):
+    pytester.makepyfile(test_rclpy=RCLPY_TEST)
+    run(pytester, "strict").assert_outcomes(passed=2)
