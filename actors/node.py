@@ -25,6 +25,7 @@ from actors.actions import ActionClient, ActionServer
 from actors.actor import Actor, Scheduler
 from actors.clock import Clock, Rate, ROSClock
 from actors.log import NodeLogger
+from actors.logger_services import serve_logger_levels
 from actors.names import Resolver, fully_qualified, normalize_namespace, validate_node_name
 from actors.node_graph import GraphQueries
 from actors.node_params import ParameterMethods
@@ -121,6 +122,7 @@ class NodeCore:
         allow_undeclared_parameters: bool = False,
         automatically_declare_parameters_from_overrides: bool = False,
         start_parameter_services: bool = True,
+        enable_logger_service: bool = False,
     ) -> None:
         child = request.child
         self.node = node
@@ -159,6 +161,8 @@ class NodeCore:
             self.params.declare("use_sim_time", False)
         if start_parameter_services:
             serve_parameters(self.params, self)
+        if enable_logger_service:
+            serve_logger_levels(self)
 
     # -- entities -------------------------------------------------------------
 
@@ -379,7 +383,8 @@ class Node(ParameterMethods, GraphQueries):
     ``allow_undeclared_parameters`` lets sets and reads of undeclared names
     through; ``automatically_declare_parameters_from_overrides`` declares every
     override at once; ``start_parameter_services=False`` leaves out the
-    ``~/get_parameters`` family.  The parameter and graph methods are rclpy's
+    ``~/get_parameters`` family; ``enable_logger_service=True`` adds
+    ``~/get_logger_levels`` and ``~/set_logger_levels``.  The parameter and graph methods are rclpy's
     (see :class:`~actors.node_params.ParameterMethods`,
     :class:`~actors.node_graph.GraphQueries`).
 
@@ -398,6 +403,7 @@ class Node(ParameterMethods, GraphQueries):
         allow_undeclared_parameters: bool = False,
         automatically_declare_parameters_from_overrides: bool = False,
         start_parameter_services: bool = True,
+        enable_logger_service: bool = False,
     ) -> None:
         request = _spawning.get()
         if request is None:
@@ -416,6 +422,7 @@ class Node(ParameterMethods, GraphQueries):
             allow_undeclared_parameters=allow_undeclared_parameters,
             automatically_declare_parameters_from_overrides=automatically_declare_parameters_from_overrides,
             start_parameter_services=start_parameter_services,
+            enable_logger_service=enable_logger_service,
         )
 
     # -- names ----------------------------------------------------------------

@@ -236,8 +236,8 @@ class ParameterStore:
         return name in self._values
 
     def names(self) -> list[str]:
-        """Every declared name, sorted."""
-        return sorted(self._values)
+        """Every declared name, in the order they were declared (rclpy's ``list_parameters`` order)."""
+        return list(self._values)
 
     def list_parameters(self, prefixes: Sequence[str] = (), depth: int = 0) -> ListParametersResult:
         """Names under ``prefixes`` (all when empty) at most ``depth`` dots deep (0: any), and their prefixes."""

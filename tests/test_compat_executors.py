@@ -467,3 +467,25 @@ def test_the_global_executor_is_the_one_rclpy_spin_uses_until_shutdown(session):
     rclpy.shutdown()
     rclpy.init(args=[])
     assert rclpy.get_global_executor() is not executor  # a new context, a new executor
+
+
+def test_a_script_nodes_logger_service(session):
+    from actors.compat.rclpy.impl.logging_severity import LoggingSeverity
+    from interfaces.rcl_interfaces.msg import LoggerLevel
+    from interfaces.rcl_interfaces.srv import SetLoggerLevels
+
+    served = rclpy.create_node("levels_served", enable_logger_service=True)
+    asker = rclpy.create_node("levels_asker")
+    client = asker.create_client(SetLoggerLevels, "/levels_served/set_logger_levels")
+    executor = SingleThreadedExecutor()
+    executor.add_node(served)
+    executor.add_node(asker)
+    try:
+        future = client.call_async(SetLoggerLevels.Request(levels=[
+            LoggerLevel(name="levels_served", level=int(LoggingSeverity.ERROR))]))
+        executor.spin_until_future_complete(future, timeout_sec=1.0)  # the service answers while spun
+        assert future.result().results[0].successful
+        assert served.get_logger().get_effective_level() == LoggingSeverity.ERROR
+        assert not served.get_logger().info("hidden")  # below the level set remotely: not logged
+    finally:
+        served.get_logger().set_level(LoggingSeverity.UNSET)

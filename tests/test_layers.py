@@ -18,7 +18,7 @@ LAYERS: list[set[str]] = [
     {"errors", "log", "names", "clock", "actor", "config", "idl", "idl_gen", "codec", "rosargs", "layout", "cdr",
      "typehash", "snapshot", "qos", "explain", "parameter"},
     {"topics", "services", "timers", "params", "actions", "endpoint_info", "refusals", "qos_events", "transport",
-     "param_services"},
+     "param_services", "logger_services"},
     {"node", "node_params", "node_graph", "param_client"},
     {"supervisor", "runtime", "introspection", "graph", "use"},
     {"control", "connections", "doctor", "transport.zenoh"},

@@ -233,3 +233,46 @@ def test_an_embedded_runtime_prints_info_on_stderr_unless_logging_is_configured(
     )
     assert (result.returncode, result.stdout) == (0, "")
     assert result.stderr.splitlines() == expected
+
+
+class LevelsServed(Node):
+    def __init__(self) -> None:
+        super().__init__("served", namespace="robot2", enable_logger_service=True)
+        self.create_timer(1.0, lambda: self.get_logger().debug("detail"))
+
+
+class LevelsAsker(Node):
+    def __init__(self) -> None:
+        from interfaces.rcl_interfaces.srv import GetLoggerLevels, SetLoggerLevels
+
+        super().__init__("asker")
+        self.get = self.create_client(GetLoggerLevels, "/robot2/served/get_logger_levels")
+        self.set = self.create_client(SetLoggerLevels, "/robot2/served/set_logger_levels")
+
+
+@pytest.mark.virtual_time
+async def test_the_logger_service_reads_and_sets_levels_remotely(console):
+    from interfaces.rcl_interfaces.msg import LoggerLevel
+    from interfaces.rcl_interfaces.srv import GetLoggerLevels, SetLoggerLevels
+
+    name = "robot2.served"
+    try:
+        async with Runtime() as rt:
+            reader = rt.spawn(RosoutReader)
+            rt.spawn(LevelsServed)
+            asker = rt.spawn(LevelsAsker)
+            await anyio.sleep(1.5)  # the tick at 1.0 logs nothing: debug is off
+            before = await asker.get.call(GetLoggerLevels.Request(names=[name]))
+            answer = await asker.set.call(SetLoggerLevels.Request(levels=[
+                LoggerLevel(name=name, level=LoggerLevel.LOG_LEVEL_DEBUG), LoggerLevel(name=name, level=15)]))
+            after = await asker.get.call(GetLoggerLevels.Request(names=[name, "nobody"]))
+            await anyio.sleep(1)  # the tick at 2.0 logs its detail
+            served = {name for name, _ in reader.get_service_names_and_types()}
+        assert [(entry.name, entry.level) for entry in before.levels] == [(name, 0)]  # never set: unset
+        assert [(r.successful, r.reason) for r in answer.results] == [
+            (True, ""), (False, "Failed reason: Invalid logger level.")]  # the bad level left DEBUG in place
+        assert [(entry.name, entry.level) for entry in after.levels] == [(name, 10), ("nobody", 0)]
+        assert [(m.name, m.msg) for m in reader.logs if m.name == name] == [(name, "detail")]
+        assert "/robot2/served/set_logger_levels" in served and "/asker/get_logger_levels" not in served  # opt-in
+    finally:
+        set_logger_level(name, "unset")

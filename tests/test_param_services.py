@@ -31,7 +31,8 @@ async def test_the_parameter_services():
         core = asker._core
         listed = await core.create_client(ListParameters, "/tuned/list_parameters").call(
             ListParameters.Request(), timeout=1)
-        assert listed.result.names == ["count", "flag", "model", "names", "speed", "use_sim_time"]
+        # Declaration order, as rclpy answers: use_sim_time first (the node's own), then the class's.
+        assert listed.result.names == ["use_sim_time", "speed", "count", "model", "names", "flag"]
         got = await core.create_client(GetParameters, "/tuned/get_parameters").call(
             GetParameters.Request(names=["speed", "names", "ghost"]), timeout=1)
         assert [value_from_msg(v) for v in got.values] == [0.5, ["a", "b"], None]

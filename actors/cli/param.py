@@ -266,7 +266,7 @@ def _nodes(conn: Connection, name: str | None) -> list[str]:
 
 
 def _names(conn: Connection, node: str) -> list[str]:
-    return list(_call(conn, node, "list_parameters").result.names)
+    return sorted(_call(conn, node, "list_parameters").result.names)  # the node answers in declaration order
 
 
 def _call(conn: Connection, node: str, service: str, **fields: Any) -> Any:

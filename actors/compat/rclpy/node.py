@@ -168,6 +168,7 @@ class Node(NativeNode):
                 ("automatically_declare_parameters_from_overrides",
                  automatically_declare_parameters_from_overrides, False),
                 ("start_parameter_services", start_parameter_services, True),
+                ("enable_logger_service", enable_logger_service, False),
             )
             if value != default
         }

@@ -11,11 +11,13 @@ __all__ = [
     "IntegerRange",
     "ListParametersResult",
     "Log",
+    "LoggerLevel",
     "Parameter",
     "ParameterDescriptor",
     "ParameterEvent",
     "ParameterType",
     "ParameterValue",
+    "SetLoggerLevelsResult",
     "SetParametersResult",
 ]
 
@@ -191,6 +193,33 @@ class Log(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     file: str = ""
     function: str = ""
     line: _uint32 = 0
+
+
+class LoggerLevel(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/msg/LoggerLevel``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/msg/LoggerLevel"
+    __ros_definition__: ClassVar[str] = (
+        "# One logger and its level (the levels are rcutils' severities; 0 means not set).\n"
+        "uint8 LOG_LEVEL_UNKNOWN = 0\n"
+        "uint8 LOG_LEVEL_DEBUG = 10\n"
+        "uint8 LOG_LEVEL_INFO = 20\n"
+        "uint8 LOG_LEVEL_WARN = 30\n"
+        "uint8 LOG_LEVEL_ERROR = 40\n"
+        "uint8 LOG_LEVEL_FATAL = 50\n"
+        "\n"
+        "string name\n"
+        "uint32 level\n"
+    )
+    LOG_LEVEL_UNKNOWN: ClassVar[int] = 0
+    LOG_LEVEL_DEBUG: ClassVar[int] = 10
+    LOG_LEVEL_INFO: ClassVar[int] = 20
+    LOG_LEVEL_WARN: ClassVar[int] = 30
+    LOG_LEVEL_ERROR: ClassVar[int] = 40
+    LOG_LEVEL_FATAL: ClassVar[int] = 50
+
+    name: str = ""
+    level: _uint32 = 0
 
 
 class ParameterValue(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -384,6 +413,20 @@ class ParameterType(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     PARAMETER_INTEGER_ARRAY: ClassVar[int] = 7
     PARAMETER_DOUBLE_ARRAY: ClassVar[int] = 8
     PARAMETER_STRING_ARRAY: ClassVar[int] = 9
+
+
+class SetLoggerLevelsResult(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/msg/SetLoggerLevelsResult``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/msg/SetLoggerLevelsResult"
+    __ros_definition__: ClassVar[str] = (
+        "# Whether one logger's level was set, and if not why.\n"
+        "bool successful\n"
+        "string reason\n"
+    )
+
+    successful: bool = False
+    reason: str = ""
 
 
 class SetParametersResult(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

@@ -6,9 +6,11 @@ import msgspec
 
 from interfaces.rcl_interfaces.msg import (
     ListParametersResult,
+    LoggerLevel,
     Parameter,
     ParameterDescriptor,
     ParameterValue,
+    SetLoggerLevelsResult,
     SetParametersResult,
 )
 
@@ -16,6 +18,9 @@ __all__ = [
     "DescribeParameters",
     "DescribeParameters_Request",
     "DescribeParameters_Response",
+    "GetLoggerLevels",
+    "GetLoggerLevels_Request",
+    "GetLoggerLevels_Response",
     "GetParameterTypes",
     "GetParameterTypes_Request",
     "GetParameterTypes_Response",
@@ -25,6 +30,9 @@ __all__ = [
     "ListParameters",
     "ListParameters_Request",
     "ListParameters_Response",
+    "SetLoggerLevels",
+    "SetLoggerLevels_Request",
+    "SetLoggerLevels_Response",
     "SetParameters",
     "SetParametersAtomically",
     "SetParametersAtomically_Request",
@@ -79,6 +87,43 @@ class DescribeParameters:
     )
     Request = DescribeParameters_Request
     Response = DescribeParameters_Response
+
+
+class GetLoggerLevels_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/GetLoggerLevels_Request``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetLoggerLevels_Request"
+    __ros_definition__: ClassVar[str] = (
+        "# The levels of the named loggers, in the same order.\n"
+        "string[] names\n"
+    )
+
+    names: list[str] = msgspec.field(default_factory=list)
+
+
+class GetLoggerLevels_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/GetLoggerLevels_Response``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetLoggerLevels_Response"
+    __ros_definition__: ClassVar[str] = (
+        "LoggerLevel[] levels\n"
+    )
+
+    levels: list[LoggerLevel] = msgspec.field(default_factory=list)
+
+
+class GetLoggerLevels:
+    """``rcl_interfaces/srv/GetLoggerLevels``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetLoggerLevels"
+    __ros_definition__: ClassVar[str] = (
+        "# The levels of the named loggers, in the same order.\n"
+        "string[] names\n"
+        "---\n"
+        "LoggerLevel[] levels\n"
+    )
+    Request = GetLoggerLevels_Request
+    Response = GetLoggerLevels_Response
 
 
 class GetParameterTypes_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -238,6 +283,43 @@ class ListParameters:
     )
     Request = ListParameters_Request
     Response = ListParameters_Response
+
+
+class SetLoggerLevels_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/SetLoggerLevels_Request``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetLoggerLevels_Request"
+    __ros_definition__: ClassVar[str] = (
+        "# Set each logger's level; one result per entry, in the same order.\n"
+        "LoggerLevel[] levels\n"
+    )
+
+    levels: list[LoggerLevel] = msgspec.field(default_factory=list)
+
+
+class SetLoggerLevels_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/SetLoggerLevels_Response``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetLoggerLevels_Response"
+    __ros_definition__: ClassVar[str] = (
+        "SetLoggerLevelsResult[] results\n"
+    )
+
+    results: list[SetLoggerLevelsResult] = msgspec.field(default_factory=list)
+
+
+class SetLoggerLevels:
+    """``rcl_interfaces/srv/SetLoggerLevels``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetLoggerLevels"
+    __ros_definition__: ClassVar[str] = (
+        "# Set each logger's level; one result per entry, in the same order.\n"
+        "LoggerLevel[] levels\n"
+        "---\n"
+        "SetLoggerLevelsResult[] results\n"
+    )
+    Request = SetLoggerLevels_Request
+    Response = SetLoggerLevels_Response
 
 
 class SetParameters_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
