@@ -58,15 +58,6 @@ def generated_package(root: Path, package: str, messages: dict[str, str]) -> Non
 
 
 @pytest.fixture
-def rclpy_session():
-    """A virtual-clock Session with rclpy initialized on it: the test's thread is the script."""
-    import actors.compat.rclpy as rclpy
-    from actors.compat import Session, use_session
-
-    with Session(clock="virtual") as session, use_session(session), session.timekeeping():
-        rclpy.init(args=[])
-        try:
-            yield session
-        finally:
-            rclpy.get_default_context().finish()
-            rclpy.try_shutdown()
+def rclpy_session(rclpy_overlay):
+    """The virtual-clock Session under the plugin's rclpy_overlay: the test's thread is the script."""
+    return rclpy_overlay.get_default_context().session
