@@ -82,6 +82,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "MAX_FRAME",
+    "LISTEN_BACKLOG",
     "Request",
     "GetGraph",
     "GetNode",
@@ -268,6 +269,11 @@ def endpoint_paths() -> dict[str, Path]:
     return {path.name[: -len(_SUFFIX)]: path for path in sorted(directory.glob(f"*{_SUFFIX}"))}
 
 
+LISTEN_BACKLOG = 1024
+"""New connections the kernel queues for the graph to accept: a burst of clients waits there
+(costing the graph no descriptor) instead of being turned away unanswered."""
+
+
 def is_alive(path: Path) -> bool:
     """Whether a server listens on ``path``; never blocks."""
     probe = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
@@ -313,7 +319,7 @@ def _bind(name: str) -> tuple[socket.socket, Path]:
                 sock.setblocking(False)
                 sock.bind(str(path))
                 os.chmod(path, 0o600)
-                sock.listen(64)
+                sock.listen(LISTEN_BACKLOG)
             except BaseException:
                 sock.close()
                 raise

@@ -32,6 +32,7 @@ import argparse
 import contextlib
 import functools
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -240,6 +241,9 @@ def soak(minutes: float) -> None:
 
 def connections(seconds: float = 30.0, crowd: int = 2000, idle: int = 500) -> None:
     """Acceptance 2 of issue 17 (see the module docstring)."""
+    soft, hard = resource.getrlimit(resource.RLIMIT_NOFILE)
+    if soft < crowd + idle + 100 <= hard:  # this process holds every one of them at once
+        resource.setrlimit(resource.RLIMIT_NOFILE, (crowd + idle + 100, hard))
     with demo_graph() as graph:
         baseline = fds(graph.pid)
         latencies: list[float] = []

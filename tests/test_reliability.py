@@ -26,19 +26,22 @@ import subprocess
 import sys
 import time
 import zlib
+from collections import Counter
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import anyio
 import pytest
 from anyio.streams.buffered import BufferedByteReceiveStream
 
+import actors.cli._client
 import actors.run
 from actors import Runtime
 from actors.cli._client import Connection, connect
 from actors.errors import ControlError
 from actors.connections import ConnectionLimits
 from actors.control import ControlEndpoint, Diagnose, GetGraph, Publish, Subscribe, decode_reply, endpoint_dir, frame
-from actors.doctor import Report
+from actors.doctor import Check, Report
 from conftest import ROOT, python_env
 from nodes.constant_control import ConstantControl
 from world.robot import TurtleBot
@@ -139,24 +142,136 @@ async def test_2_more_connections_than_the_limit_are_refused_and_the_command_lin
         assert stats.refused >= len(refused) and stats.peak == 64
 
 
+@contextlib.contextmanager
+def talker_graph(tmp_path: Path, preexec_fn: Callable[[], None] | None = None) -> Iterator[subprocess.Popen[str]]:
+    """``python -m actors.run`` of a one-talker graph named ``fds<pid>``, up and publishing; stopped after."""
+    graph = tmp_path / f"fds{os.getpid()}.toml"
+    graph.write_text('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n')
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "actors.run", str(graph)], cwd=ROOT, env=python_env(),
+        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, preexec_fn=preexec_fn,
+    )
+    try:
+        assert "Publishing" in proc.stdout.readline()  # up and running
+        yield proc
+    finally:
+        proc.terminate()
+        out, _ = proc.communicate(timeout=30)
+    assert proc.returncode == 0, out
+    assert "Traceback" not in out
+
+
+def graph_fds(proc: subprocess.Popen[str]) -> int:
+    return len(os.listdir(f"/proc/{proc.pid}/fd"))
+
+
+def back_to(proc: subprocess.Popen[str], baseline: int) -> int:
+    """The graph's descriptors once it has noticed every hang-up (nothing outside it can tell when), 5 s at most."""
+    deadline = time.monotonic() + 5
+    while graph_fds(proc) != baseline and time.monotonic() < deadline:
+        time.sleep(0.01)
+    return graph_fds(proc)
+
+
+def control_endpoint_check(name: str) -> Check:
+    """Doctor's "control endpoint" check of graph ``name``."""
+    with connect(name) as conn:
+        report = conn.request(Diagnose(), Report)
+    (check,) = [c for c in report.checks if c.name == "control endpoint"]
+    return check
+
+
+@pytest.fixture
+def descriptors_for_2600() -> Iterator[None]:
+    """This process may hold 2,500 sockets at once (as 2,500 clients would between them)."""
+    soft, hard = resource.getrlimit(resource.RLIMIT_NOFILE)
+    if hard != resource.RLIM_INFINITY and hard < 2600:
+        pytest.skip(f"the descriptor limit here is {hard}")
+    resource.setrlimit(resource.RLIMIT_NOFILE, (max(soft, 2600), hard))
+    yield
+    resource.setrlimit(resource.RLIMIT_NOFILE, (soft, hard))
+
+
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="counts the graph's descriptors in /proc")
+def test_2_two_thousand_connections_at_once_and_500_idle_ones_the_command_line_still_gets_in(tmp_path, descriptors_for_2600):
+    with talker_graph(tmp_path) as proc:
+        name = f"fds{os.getpid()}"
+        path = endpoint_dir() / f"{name}.sock"
+        before = graph_fds(proc)
+        idle = [socket.socket(socket.AF_UNIX) for _ in range(500)]
+        crowd = [socket.socket(socket.AF_UNIX) for _ in range(2000)]
+        try:
+            for sock in idle:
+                sock.connect(str(path))  # blocking: waits while the listen backlog is full
+            for sock in crowd:  # all 2,000 open at once, each with a request sent
+                sock.connect(str(path))
+                sock.settimeout(10)
+                with contextlib.suppress(OSError):  # a refused one may be closed before we speak
+                    sock.sendall(frame(GetGraph()))
+            lookups = []
+            for _ in range(5):  # the command line, with all 2,500 still open
+                with connect(name) as conn:
+                    lookups.append(conn.graph().name)
+            outcomes = Counter()
+            for sock in crowd:
+                try:
+                    (size,) = struct.unpack(">I", sock.recv(4, socket.MSG_WAITALL))
+                    reply = decode_reply(sock.recv(size, socket.MSG_WAITALL))
+                    outcomes["answered" if reply.ok else reply.error] += 1
+                except (OSError, struct.error):
+                    outcomes["closed"] += 1  # evicted while idle, before its request was read
+        finally:
+            for sock in idle + crowd:
+                sock.close()
+        assert lookups == [name] * 5
+        assert outcomes["answered"] > 0
+        assert set(outcomes) <= {"answered", "closed", "the graph is busy: 256 connections are open; try again"}
+        assert sum(outcomes.values()) == 2000
+        assert proc.poll() is None  # still running
+        assert back_to(proc, before) == before
+        check = control_endpoint_check(name)
+        assert check.passed  # refusals at the limit are a warning: nothing ran out
+        assert any(w.endswith("connection(s) refused at the limit of 256 open at once") for w in check.warnings)
+
+
+def test_2_a_graph_whose_queue_of_new_connections_is_full_is_busy_to_the_command_line_not_gone(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_RUNTIME_DIR", str(tmp_path))
+    monkeypatch.setattr(actors.cli._client, "BUSY_RETRY", 0.05)
+    listener = socket.socket(socket.AF_UNIX)
+    listener.bind(str(endpoint_dir(create=True) / "full.sock"))
+    listener.listen(0)  # a graph that a burst of clients keeps from accepting
+    pending = []
+    with contextlib.ExitStack() as stack:
+        stack.enter_context(listener)
+        for _ in range(10):
+            sock = stack.enter_context(socket.socket(socket.AF_UNIX))
+            sock.setblocking(False)
+            try:
+                sock.connect(listener.getsockname())
+            except BlockingIOError:
+                break  # the queue is full
+            pending.append(sock)
+        else:
+            pytest.fail("the listen queue never filled")
+        with pytest.raises(ControlError) as caught:
+            connect("full")
+        assert str(caught.value) == "graph full is busy: its queue of new connections is full; try again"
+        listener.accept()[0].close()  # room for one more
+        with connect("full") as conn:
+            assert conn.name == "full"
+
+
 @pytest.mark.skipif(not Path("/proc").is_dir(), reason="counts the graph's descriptors in /proc")
 def test_2_a_graph_that_runs_out_of_descriptors_refuses_connections_and_keeps_running(tmp_path):
-    stem = f"fds{os.getpid()}"
-    graph = tmp_path / f"{stem}.toml"
-    graph.write_text('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n')
     limit = 48
 
     def few_descriptors() -> None:
         resource.setrlimit(resource.RLIMIT_NOFILE, (limit, resource.getrlimit(resource.RLIMIT_NOFILE)[1]))
 
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "actors.run", str(graph)], cwd=ROOT, env=python_env(),
-        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, preexec_fn=few_descriptors,
-    )
-    try:
-        assert "Publishing" in proc.stdout.readline()  # up and running
-        path = endpoint_dir() / f"{stem}.sock"
-        before = len(os.listdir(f"/proc/{proc.pid}/fd"))
+    with talker_graph(tmp_path, few_descriptors) as proc:
+        name = f"fds{os.getpid()}"
+        path = endpoint_dir() / f"{name}.sock"
+        before = graph_fds(proc)
         held, replies = [], []
         for _ in range(2 * limit):
             sock = socket.socket(socket.AF_UNIX)
@@ -179,19 +294,9 @@ def test_2_a_graph_that_runs_out_of_descriptors_refuses_connections_and_keeps_ru
         for sock in held:
             sock.close()
         assert proc.poll() is None  # still running
-        deadline = time.monotonic() + 5
-        while len(os.listdir(f"/proc/{proc.pid}/fd")) != before and time.monotonic() < deadline:
-            time.sleep(0.01)  # the graph notices each hang-up; nothing outside it can tell when
-        assert len(os.listdir(f"/proc/{proc.pid}/fd")) == before
-        with connect(stem) as conn:
-            report = conn.request(Diagnose(), Report)
-        (reason,) = [c for c in report.checks if c.name == "control endpoint"][0].reasons
+        assert back_to(proc, before) == before
+        (reason,) = control_endpoint_check(name).reasons
         assert reason.startswith(f"the graph ran out of file descriptors (limit {limit}): ")
-    finally:
-        proc.terminate()
-        out, _ = proc.communicate(timeout=30)
-    assert proc.returncode == 0, out
-    assert "Traceback" not in out
 
 
 # --------------------------------------------------------------------------- 3. stalled readers

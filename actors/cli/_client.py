@@ -222,14 +222,27 @@ class Connection:
 
 
 def _open(path: Path) -> socket.socket | None:
-    sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
-    sock.settimeout(2.0)
-    try:
-        sock.connect(str(path))
-    except OSError:
-        sock.close()
-        return None  # a stale socket: its graph is gone
-    return sock
+    """A socket connected to the graph at ``path``; None when nothing listens there.
+
+    A full queue of new connections (EAGAIN: a Unix socket never waits for
+    room) is a live graph under a burst of clients: asked again for up to
+    :data:`BUSY_RETRY` s, then a ControlError says it is busy.
+    """
+    give_up = time.monotonic() + BUSY_RETRY
+    while True:
+        sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        sock.settimeout(2.0)
+        try:
+            sock.connect(str(path))
+            return sock
+        except BlockingIOError:
+            sock.close()
+            if time.monotonic() >= give_up:
+                raise ControlError(f"graph {path.stem} is busy: its queue of new connections is full; try again") from None
+            time.sleep(0.01)
+        except OSError:
+            sock.close()
+            return None  # a stale socket: its graph is gone
 
 
 def connect(graph: str | Path | None) -> Connection:
