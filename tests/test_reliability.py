@@ -218,20 +218,25 @@ def test_2_two_thousand_connections_at_once_and_500_idle_ones_the_command_line_s
                     (size,) = struct.unpack(">I", sock.recv(4, socket.MSG_WAITALL))
                     reply = decode_reply(sock.recv(size, socket.MSG_WAITALL))
                     outcomes["answered" if reply.ok else reply.error] += 1
+                except TimeoutError:
+                    outcomes["no answer within 10 s"] += 1
                 except (OSError, struct.error):
                     outcomes["closed"] += 1  # evicted while idle, before its request was read
         finally:
             for sock in idle + crowd:
                 sock.close()
         assert lookups == [name] * 5
-        assert outcomes["answered"] > 0
+        # Each one answered, told the graph is busy, or (idle for 0.5 s while full) closed for a newcomer.
         assert set(outcomes) <= {"answered", "closed", "the graph is busy: 256 connections are open; try again"}
         assert sum(outcomes.values()) == 2000
         assert proc.poll() is None  # still running
         assert back_to(proc, before) == before
         check = control_endpoint_check(name)
-        assert check.passed  # refusals at the limit are a warning: nothing ran out
-        assert any(w.endswith("connection(s) refused at the limit of 256 open at once") for w in check.warnings)
+        assert check.passed  # the limit at work is a warning: nothing ran out
+        assert any(
+            w.endswith(("connection(s) refused at the limit of 256 open at once", "idle connection(s) closed to let others in"))
+            for w in check.warnings
+        )
 
 
 def test_2_a_graph_whose_queue_of_new_connections_is_full_is_busy_to_the_command_line_not_gone(tmp_path, monkeypatch):
