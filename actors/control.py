@@ -90,6 +90,7 @@ __all__ = [
     "Subscribe",
     "Call",
     "Diagnose",
+    "Play",
     "Reply",
     "Sample",
     "GraphSnapshot",
@@ -172,7 +173,24 @@ class Diagnose(Request, tag="doctor"):
     """Run doctor's checks.  Result: :class:`~actors.doctor.Report`."""
 
 
-_Requests = GetGraph | GetNode | Publish | Subscribe | Call | Diagnose
+class Play(Request, tag="play"):
+    """Play the bag at ``path`` into the graph on its own clock (``actors.recording.player.play``).
+
+    Answered when the bag has played: result ``{"played": n}``.  The client
+    sends nothing meanwhile; hanging up stops the playing (``loop`` plays
+    until then).  Fails for a bag that cannot be read.
+    """
+
+    path: str
+    topics: list[str] | None = None
+    remap: dict[str, str] = {}
+    rate: float = 1.0
+    clock: float = 0.0
+    loop: bool = False
+    recover: bool = False
+
+
+_Requests = GetGraph | GetNode | Publish | Subscribe | Call | Diagnose | Play
 
 
 class Reply(msgspec.Struct, kw_only=True, omit_defaults=True):
@@ -491,6 +509,8 @@ class _Session:
             return self._subscribe(request)
         if isinstance(request, Call):
             return await self._call(request)
+        if isinstance(request, Play):
+            return await self._play(request)
         assert isinstance(request, Diagnose)
         return self.server.diagnose()
 
@@ -620,6 +640,32 @@ class _Session:
             raise TimeoutError(
                 f"service {name} did not answer within {request.timeout:g} s"
             ) from None
+
+    async def _play(self, request: Play) -> dict[str, int]:
+        from actors.recording.player import play
+        from actors.recording.reader import Bag
+
+        try:
+            bag = Bag(request.path, recover=request.recover)
+        except FileNotFoundError as exc:
+            raise ControlError(str(exc)) from None
+        if request.rate <= 0:
+            raise ControlError(f"rate must be > 0, got {request.rate}")
+        played = 0
+        async with anyio.create_task_group() as tg:
+
+            async def until_hang_up() -> None:
+                with suppress(anyio.EndOfStream, anyio.BrokenResourceError, anyio.ClosedResourceError):
+                    await self._stream.receive()  # the client sends nothing while a bag plays
+                tg.cancel_scope.cancel()
+
+            tg.start_soon(until_hang_up)
+            played = await play(
+                self.runtime, bag, topics=request.topics, remap=request.remap, rate=request.rate,
+                clock_hz=request.clock, loop=request.loop,
+            )
+            tg.cancel_scope.cancel()
+        return {"played": played}
 
     def close(self) -> None:
         """Remove everything this session created from the graph."""

@@ -222,13 +222,21 @@ def _qos_mismatches(topic: TopicInfo) -> list[str]:
 
 
 def _drops(topic: TopicInfo) -> list[str]:
+    from actors.recording.recorder import RECORDER_NODE
+
+    # The recorder's own losses count (a bag with holes), though its owner is hidden.
+    lost = [
+        f"{topic.name}: the recorder dropped {e.dropped} message(s): the disk could not keep up"
+        for e in topic.subscriptions
+        if e.node == RECORDER_NODE and e.dropped
+    ]
     if is_hidden_name(topic.name):
-        return []  # an action's status keeps only its latest array (depth 1), as ROS's does
+        return lost  # an action's status keeps only its latest array (depth 1), as ROS's does
     return [
         f"{topic.name}: {e.node} dropped {e.dropped} message(s) (queue depth {e.qos.depth})"
         for e in _visible(topic.subscriptions)
         if e.dropped
-    ]
+    ] + lost
 
 
 def _refused(topic: TopicInfo) -> list[str]:

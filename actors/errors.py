@@ -30,6 +30,7 @@
     │   └── ParameterUninitializedException      declared with a type but never given a value
     ├── ControlError                 the command line cannot reach or use a running graph
     ├── TransportError               a transport cannot start or is misconfigured (names the setting)
+    ├── BagError                     a bag (MCAP) cannot be read or written (names file and byte)
     ├── VirtualTimeDeadlock          virtual time has nothing left to wait for
     └── Escalation                   the supervisor gave up: too many restarts
 
@@ -75,6 +76,7 @@ __all__ = [
     "ParameterUninitializedException",
     "ControlError",
     "TransportError",
+    "BagError",
     "VirtualTimeDeadlock",
     "Escalation",
 ]
@@ -225,6 +227,8 @@ class ControlError(ActorsError):
 
 class TransportError(ActorsError):
     """A transport cannot start: its package is missing, a setting is wrong, the network refuses."""
+class BagError(ActorsError):
+    """A bag (MCAP file) cannot be read or written; the message names the file and byte offset."""
 
 
 class VirtualTimeDeadlock(ActorsError):

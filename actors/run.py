@@ -32,7 +32,7 @@ from actors.errors import ActorsError, Escalation, GraphFileError
 from actors.graph import GraphFile, NodeEntry, TransportSection, load_graph
 from actors.log import LEVELS, configure_console
 from actors.node import Node
-from actors.runtime import Runtime, frozen_startup
+from actors.runtime import Attachment, Runtime, frozen_startup
 
 __all__ = ["main", "add_arguments", "launch", "run_graph", "spawn_graph", "NodeStartError"]
 
@@ -64,6 +64,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         choices=("zenoh", "none"),
         help="reach other processes over Zenoh (the [transport] section's settings, or the defaults), or not",
     )
+    parser.add_argument(
+        "--record", metavar="BAG", help="record topics into a ROS 2 bag: BAG.mcap, or a bag directory"
+    )
+    parser.add_argument(
+        "--topics", nargs="+", default=[], metavar="TOPIC", help="with --record: only these topics"
+    )
 
 
 def _seconds(text: str) -> float:
@@ -83,8 +89,11 @@ async def run_graph(
     name: str,
     duration: float,
     handle_signals: bool = True,
+    attach: Sequence[Attachment] = (),
 ) -> None:
     """Spawn the graph's nodes in file order and run until ``duration`` or a signal.
+
+    ``attach`` runs beside the control endpoint (a recorder, a live view).
 
     Raises Escalation if the supervisor gives up; NodeStartError when a node's
     constructor raises (delayed or not); GraphFileError naming the node's entry
@@ -92,12 +101,12 @@ async def run_graph(
     type, a duplicate name).
     """
     policy = graph.supervisor.policy()
-    attach: list[Any] = [ControlEndpoint()]
+    everything: list[Any] = [ControlEndpoint(), *attach]
     if graph.transport is not None:
         from actors.transport.zenoh import ZenohTransport
 
-        attach.append(ZenohTransport(graph.transport))
-    async with Runtime(name=name, supervisor=policy, attach=attach) as rt:
+        everything.append(ZenohTransport(graph.transport))
+    async with Runtime(name=name, supervisor=policy, attach=everything) as rt:
         async with anyio.create_task_group() as tg:
             await tg.start(spawn_graph, rt, graph, classes)
             if handle_signals:
@@ -214,12 +223,19 @@ def launch(args: argparse.Namespace) -> int:
             file=sys.stderr,
         )
         return 2
+    try:
+        from actors.recording.options import attachments
+
+        attach = attachments(record=args.record, topics=args.topics)
+    except (ActorsError, ImportError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     configure_console(LEVELS[args.log_level or settings.log_level])
     factory = VirtualTimeLoop if clock == "virtual" else WALL_LOOPS[args.loop or "select"]
     options: dict[str, Any] = {"loop_factory": factory}
     try:
         anyio.run(
-            lambda: run_graph(graph, classes, name=Path(args.graph).stem, duration=duration),
+            lambda: run_graph(graph, classes, name=Path(args.graph).stem, duration=duration, attach=attach),
             backend_options=options,
         )
     except BaseException as exc:  # noqa: BLE001 - every error ends here, printed once

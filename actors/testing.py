@@ -43,6 +43,8 @@ __all__ = [
     "run_script",
     "run_node",
     "rclpy_overlay",
+    "pytest_addoption",
+    "bag_expectation",
     "pytest_configure",
     "pytest_pycollect_makeitem",
     "pytest_runtest_setup",
@@ -52,6 +54,21 @@ __all__ = [
 
 _MARK = "virtual_time"
 _NEEDS = "the virtual_time mark needs pytest-asyncio 1.4 or newer: pip install 'pytest-asyncio>=1.4'"
+
+
+def pytest_addoption(parser: pytest.Parser) -> None:
+    """``--record-bags``: the ``bag_expectation`` fixture writes expected bags instead of comparing."""
+    parser.addoption(
+        "--record-bags", action="store_true", help="actors: record the expected bags bag_expectation compares with"
+    )
+
+
+@pytest.fixture
+def bag_expectation(request: pytest.FixtureRequest) -> Any:
+    """An :class:`actors.recording.expect.BagExpectation`: ``bag_expectation.check(actual, expected)``."""
+    from actors.recording.expect import BagExpectation
+
+    return BagExpectation(update=request.config.getoption("--record-bags"))
 
 
 def pytest_configure(config: pytest.Config) -> None:

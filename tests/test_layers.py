@@ -21,7 +21,7 @@ LAYERS: list[set[str]] = [
      "param_services", "logger_services"},
     {"node", "node_params", "node_graph", "param_client"},
     {"supervisor", "runtime", "introspection", "graph", "use"},
-    {"control", "connections", "doctor", "transport.zenoh"},
+    {"control", "connections", "doctor", "transport.zenoh", "recording"},
     {"run", "testing", "cli", "__main__", "__init__", "compat"},
 ]
 

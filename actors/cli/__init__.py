@@ -16,7 +16,8 @@ __all__ = ["main"]
 # sets ``func(args) -> int | None`` on every verb.  Imports inside the verbs stay
 # lazy so that ``actors --help`` is quick.
 GROUPS = (
-    "node", "topic", "service", "action", "param", "interface", "doctor", "graph", "launch", "run", "pkg"
+    "node", "topic", "service", "action", "param", "interface", "doctor", "graph", "launch", "run", "pkg",
+    "bag",
 )
 
 

@@ -116,13 +116,17 @@ class Connection:
         """Close the connection."""
         self._sock.close()
 
+    def fileno(self) -> int:
+        """The socket's descriptor, so that a selector can wait on several connections."""
+        return self._sock.fileno()
+
     def request(
-        self, request: Request, result_type: type[T] | Any = Any, *, timeout: float = 10.0
+        self, request: Request, result_type: type[T] | Any = Any, *, timeout: float | None = 10.0
     ) -> T:
         """Send ``request``; return its result as ``result_type``.
 
         Raises ControlError with the graph's reason when the request failed,
-        or when no reply came within ``timeout`` seconds.
+        or when no reply came within ``timeout`` seconds (None: no limit).
         """
         try:
             self._sock.sendall(frame(request))

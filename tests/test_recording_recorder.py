@@ -1,0 +1,228 @@
+"""The recorder: what it writes is a ROS 2 bag that rosbags, the mcap library and rclpy read back."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import anyio
+import pytest
+
+from actors import Node, Runtime, VirtualTimeLoop, codec
+from actors.doctor import diagnose
+from actors.recording import Recorder
+from conftest import ROOT, python_env
+from interfaces.std_msgs.msg import String
+
+mcap_reader = pytest.importorskip("mcap.reader")
+pytest.importorskip("rosbags")
+
+
+@pytest.fixture(scope="module")
+def turtlebot_bag(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The acceptance command's bag: 30 s of the TurtleBot graph on the virtual clock."""
+    path = tmp_path_factory.mktemp("bag") / "run.mcap"
+    done = subprocess.run(
+        [sys.executable, "-m", "actors.run", "graphs/turtlebot.toml", "--clock", "virtual",
+         "--duration", "30", "--record", str(path)],
+        cwd=ROOT, env=python_env(), capture_output=True, text=True, timeout=120,
+    )
+    assert done.returncode == 0, done.stderr
+    return path
+
+
+def test_rosbags_deserializes_every_message(turtlebot_bag):
+    from rosbags.highlevel import AnyReader
+    from rosbags.typesys import Stores, get_typestore
+
+    # An empty type store: rosbags learns every type from the bag's own ros2msg schemas.
+    with AnyReader([turtlebot_bag], default_typestore=get_typestore(Stores.EMPTY)) as reader:
+        counts: dict[str, int] = {}
+        for connection, _, raw in reader.messages():
+            reader.deserialize(raw, connection.msgtype)
+            counts[connection.topic] = counts.get(connection.topic, 0) + 1
+        odom = next(c for c in reader.connections if c.topic == "/odom")
+        last_odom = None
+        for connection, _, raw in reader.messages(connections=[odom]):
+            last_odom = reader.deserialize(raw, connection.msgtype)
+    assert counts["/odom"] == 600 and counts["/scan"] == 300 and counts["/cmd_vel"] > 0
+    assert last_odom is not None and last_odom.header.frame_id == "odom" and last_odom.pose.pose.position.x > 0.5
+
+
+def test_mcap_library_validates_summary_statistics_and_schemas(turtlebot_bag):
+    from mcap.stream_reader import StreamReader
+
+    with open(turtlebot_bag, "rb") as f:
+        reader = mcap_reader.make_reader(f)
+        header, summary = reader.get_header(), reader.get_summary()
+        messages = list(reader.iter_messages())
+    assert header.profile == "ros2"
+    stats = summary.statistics
+    assert stats.message_count == len(messages) == sum(stats.channel_message_counts.values())
+    assert stats.channel_count == len(summary.channels) and stats.schema_count == len(summary.schemas)
+    assert stats.chunk_count == len(summary.chunk_indexes) > 0
+    assert {c.compression for c in summary.chunk_indexes} == {"zstd"}
+    assert stats.message_start_time == min(m.log_time for _, _, m in messages)
+    assert stats.message_end_time == max(m.log_time for _, _, m in messages) == 30_000_000_000
+    for schema in summary.schemas.values():
+        assert schema.encoding == "ros2msg"
+        assert schema.data.decode() == codec.definition_text(schema.name)
+    for channel in summary.channels.values():
+        schema = summary.schemas[channel.schema_id]
+        assert channel.message_encoding == "cdr"
+        assert channel.metadata["topic_type_hash"] == codec.type_hash(schema.name)
+        qos = channel.metadata["offered_qos_profiles"]  # "" for a topic nobody publishes (/kill)
+        assert qos.startswith("- history: keep_last\n  depth: ") or (channel.topic == "/kill" and qos == "")
+    # Every record again, from the start, with every chunk's CRC checked.
+    with open(turtlebot_bag, "rb") as f:
+        assert sum(1 for r in StreamReader(f, validate_crcs=True).records if type(r).__name__ == "Message") == len(messages)
+
+
+def test_odom_payloads_decode_with_rclpy(turtlebot_bag):
+    pytest.importorskip("rclpy")
+    nav_msgs = pytest.importorskip("nav_msgs.msg")
+    from rclpy.serialization import deserialize_message
+
+    with open(turtlebot_bag, "rb") as f:
+        odoms = [m for _, c, m in mcap_reader.make_reader(f).iter_messages(topics=["/odom"])]
+    assert len(odoms) == 600
+    for record in odoms:
+        theirs = deserialize_message(record.data, nav_msgs.Odometry)
+        ours = codec.decode_cdr(record.data, "nav_msgs/msg/Odometry")
+        assert theirs.header.stamp.sec * 10**9 + theirs.header.stamp.nanosec == record.log_time
+        assert (theirs.pose.pose.position.x, theirs.twist.twist.linear.x) == (
+            ours.pose.pose.position.x, ours.twist.twist.linear.x
+        )
+        assert list(theirs.pose.covariance) == list(ours.pose.covariance)
+
+
+async def _record_turtlebot(path: Path, seconds: float) -> None:
+    from nodes.constant_control import ConstantControl
+    from world.robot import TurtleBot
+    from world.sim import World
+
+    async with Runtime(name="twice", attach=[Recorder(path)]) as rt:
+        rt.spawn(World, params={"world": "signs"})
+        rt.spawn(TurtleBot)
+        rt.spawn(ConstantControl, params={"v": 0.2})
+        await rt.wait(seconds)
+
+
+def test_the_same_virtual_graph_twice_gives_the_same_bytes(tmp_path):
+    for run in ("a", "b"):  # each on a virtual clock of its own, from 0
+        (tmp_path / run).mkdir()
+        anyio.run(_record_turtlebot, tmp_path / run / "run.mcap", 8, backend_options={"loop_factory": VirtualTimeLoop})
+    first, second = (tmp_path / "a" / "run.mcap").read_bytes(), (tmp_path / "b" / "run.mcap").read_bytes()
+    with open(tmp_path / "a" / "run.mcap", "rb") as f:
+        stream = [(c.topic, m.log_time, m.data) for _, c, m in mcap_reader.make_reader(f).iter_messages()]
+    assert len(stream) > 400 and first == second
+
+
+class Burst(Node):
+    """Publishes ``n`` messages at once, 1 s after it starts, then goes quiet."""
+
+    def __init__(self, n: int = 50) -> None:
+        super().__init__("burst")
+        self.pub = self.create_publisher(String, "burst", 10)
+        self.n = n
+        self.timer = self.create_timer(1.0, self.fire)
+
+    def fire(self) -> None:
+        self.timer.cancel()
+        for i in range(self.n):
+            self.pub.publish(String(data=f"m{i}"))
+
+
+@pytest.mark.virtual_time
+async def test_topics_that_appear_later_are_recorded_from_their_first_message(tmp_path):
+    path = tmp_path / "late.mcap"
+    async with Runtime(attach=[Recorder(path)]) as rt:
+        await anyio.sleep(2.5)
+        rt.spawn(Burst, 5)
+        await anyio.sleep(2)
+    with open(path, "rb") as f:
+        got = [(m.log_time, codec.decode_cdr(m.data, String).data) for _, c, m in mcap_reader.make_reader(f).iter_messages(topics=["/burst"])]
+    assert got == [(3_500_000_000, f"m{i}") for i in range(5)]
+
+
+@pytest.mark.virtual_time
+async def test_a_full_buffer_drops_counts_and_doctor_says_so(tmp_path):
+    path = tmp_path / "drops.mcap"
+    recorder = Recorder(path, topics=["/burst"], max_pending=20)
+    async with Runtime(attach=[recorder]) as rt:
+        rt.spawn(Burst, 50)
+        await anyio.sleep(1.5)
+        report = diagnose(rt)
+        info = rt.graph.topic("/burst")
+    assert recorder.dropped == 30
+    assert [e.dropped for e in info.subscriptions if e.node == "/_actors_recorder"] == [30]
+    drops = next(c for c in report.checks if c.name == "dropped messages")
+    assert not drops.passed and drops.reasons == (
+        "/burst: the recorder dropped 30 message(s): the disk could not keep up",
+    )
+    with open(path, "rb") as f:
+        assert mcap_reader.make_reader(f).get_summary().statistics.message_count == 20
+
+
+@pytest.mark.virtual_time
+async def test_topic_selection_and_exclusion(tmp_path):
+    from nodes.listener import MinimalSubscriber
+    from nodes.talker import MinimalPublisher
+
+    only = Recorder(tmp_path / "only.mcap", topics=["topic"])
+    rest = Recorder(tmp_path / "rest.mcap", exclude="^/(topic|rosout)$")
+    async with Runtime(attach=[only, rest]) as rt:
+        rt.spawn(MinimalPublisher)
+        rt.spawn(MinimalSubscriber)
+        await anyio.sleep(2.1)
+    topics = {}
+    for name in ("only", "rest"):
+        with open(tmp_path / f"{name}.mcap", "rb") as f:
+            topics[name] = sorted(c.topic for c in mcap_reader.make_reader(f).get_summary().channels.values())
+    assert topics == {"only": ["/topic"], "rest": ["/parameter_events"]}
+
+
+def test_an_existing_output_is_a_one_line_error(run_module, tmp_path):
+    taken = tmp_path / "run.mcap"
+    taken.write_bytes(b"keep me")
+    done = run_module("actors.run", "graphs/pubsub.toml", "--clock", "virtual", "--duration", "1", "--record", str(taken))
+    assert done.returncode == 2 and done.stderr.count("\n") == 1 and "already exists" in done.stderr
+    assert taken.read_bytes() == b"keep me"
+
+
+@pytest.mark.skipif(sys.platform != "linux", reason="needs RLIMIT_FSIZE and SIGXFSZ")
+def test_a_disk_that_fills_up_leaves_a_valid_bag_and_the_graph_running(tmp_path):
+    # A file size limit stands in for a full disk: writes past it fail (EFBIG) as on a full disk.
+    path = tmp_path / "full.mcap"
+    script = (
+        "import resource, signal, anyio\n"
+        "signal.signal(signal.SIGXFSZ, signal.SIG_IGN)\n"
+        "resource.setrlimit(resource.RLIMIT_FSIZE, (60_000, 60_000))\n"
+        "from actors import VirtualTimeLoop\n"
+        "from actors.graph import load_graph\n"
+        "from actors.recording import Recorder\n"
+        "from actors.run import run_graph\n"
+        "graph, classes = load_graph('graphs/turtlebot.toml')\n"
+        f"recorder = Recorder({str(path)!r}, chunk_size=16_384)\n"
+        "anyio.run(lambda: run_graph(graph, classes, name='full', duration=30, attach=[recorder]),\n"
+        "          backend_options={'loop_factory': VirtualTimeLoop})\n"
+        "print('graph ran to its end')\n"
+    )
+    done = subprocess.run([sys.executable, "-c", script], cwd=ROOT, env=python_env(), capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0 and "graph ran to its end" in done.stdout, done.stderr
+    assert "recording to" in done.stderr and "stopped" in done.stderr
+    assert path.stat().st_size <= 60_000
+    # The file ends at its last whole chunk, then a footer: valid MCAP, every CRC right.  (The
+    # summary did not fit: the disk was full.)  The mcap library and rosbags read every message.
+    from mcap.stream_reader import StreamReader
+    from rosbags.highlevel import AnyReader
+    from rosbags.typesys import Stores, get_typestore
+
+    with open(path, "rb") as f:
+        records = list(StreamReader(f, validate_crcs=True).records)
+    written = sum(type(r).__name__ == "Message" for r in records)
+    assert type(records[-1]).__name__ == "Footer" and written > 300
+    assert f"keeps the {written} message(s) written before" in done.stderr
+    with AnyReader([path], default_typestore=get_typestore(Stores.EMPTY)) as reader:
+        assert sum(1 for _ in reader.messages()) == written
