@@ -226,3 +226,28 @@ def test_a_disk_that_fills_up_leaves_a_valid_bag_and_the_graph_running(tmp_path)
     assert f"keeps the {written} message(s) written before" in done.stderr
     with AnyReader([path], default_typestore=get_typestore(Stores.EMPTY)) as reader:
         assert sum(1 for _ in reader.messages()) == written
+
+
+@pytest.mark.virtual_time
+async def test_graph_events_tell_listeners_of_endpoints_coming_and_going():
+    from nodes.listener import MinimalSubscriber
+    from nodes.talker import MinimalPublisher
+
+    events: list[tuple[str, str, str]] = []
+
+    class Listener:
+        def endpoint_added(self, topic, endpoint):
+            events.append(("added", topic.name, type(endpoint).__name__))
+
+        def endpoint_removed(self, topic, endpoint):
+            events.append(("removed", topic.name, type(endpoint).__name__))
+
+    async with Runtime() as rt:
+        rt.topics.listeners.append(Listener())
+        rt.spawn(MinimalPublisher)
+        rt.spawn(MinimalSubscriber)
+        await rt.stop("minimal_subscriber")
+        await anyio.sleep(1)
+    on_topic = [e for e in events if e[1] == "/topic"]
+    assert on_topic[:3] == [("added", "/topic", "Publisher"), ("added", "/topic", "Subscription"),
+                            ("removed", "/topic", "Subscription")]
