@@ -47,7 +47,7 @@ def test_rosbags_deserializes_every_message(turtlebot_bag):
         for connection, _, raw in reader.messages(connections=[odom]):
             last_odom = reader.deserialize(raw, connection.msgtype)
     assert counts["/odom"] == 600 and counts["/scan"] == 300 and counts["/cmd_vel"] > 0
-    assert last_odom is not None and last_odom.header.frame_id == "odom" and last_odom.pose.pose.position.x > 0.5
+    assert last_odom is not None and last_odom.header.frame_id == "odom" and last_odom.header.stamp.sec == 30
 
 
 def test_mcap_library_validates_summary_statistics_and_schemas(turtlebot_bag):
@@ -222,7 +222,7 @@ def test_a_disk_that_fills_up_leaves_a_valid_bag_and_the_graph_running(tmp_path)
     with open(path, "rb") as f:
         records = list(StreamReader(f, validate_crcs=True).records)
     written = sum(type(r).__name__ == "Message" for r in records)
-    assert type(records[-1]).__name__ == "Footer" and written > 300
+    assert type(records[-1]).__name__ == "Footer" and written > 100
     assert f"keeps the {written} message(s) written before" in done.stderr
     with AnyReader([path], default_typestore=get_typestore(Stores.EMPTY)) as reader:
         assert sum(1 for _ in reader.messages()) == written
@@ -251,3 +251,32 @@ async def test_graph_events_tell_listeners_of_endpoints_coming_and_going():
     on_topic = [e for e in events if e[1] == "/topic"]
     assert on_topic[:3] == [("added", "/topic", "Publisher"), ("added", "/topic", "Subscription"),
                             ("removed", "/topic", "Subscription")]
+
+
+class ShortLived(Node):
+    """Publishes messages with a lifespan (0.1 s), latched, once a second."""
+
+    def __init__(self) -> None:
+        super().__init__("short_lived")
+        from actors.clock import Duration
+        from actors.qos import DurabilityPolicy, QoSProfile
+
+        qos = QoSProfile(depth=5, lifespan=Duration(seconds=0.1), durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        self.pub = self.create_publisher(String, "short", qos)
+        self.n = 0
+        self.create_timer(1.0, self.tick)
+
+    def tick(self) -> None:
+        self.pub.publish(String(data=f"s{self.n}"))
+        self.n += 1
+
+
+@pytest.mark.virtual_time
+async def test_messages_with_a_lifespan_are_recorded_as_published(tmp_path):
+    path = tmp_path / "short.mcap"
+    async with Runtime(attach=[Recorder(path, topics=["/short"])]) as rt:
+        rt.spawn(ShortLived)
+        await anyio.sleep(3.5)
+    with open(path, "rb") as f:
+        got = [codec.decode_cdr(m.data, String).data for _, _, m in mcap_reader.make_reader(f).iter_messages()]
+    assert got == ["s0", "s1", "s2"]

@@ -98,7 +98,7 @@ def _qos(text: str) -> QoSProfile:
         profiles = yaml.safe_load(text) if text else None
         first = profiles[0] if isinstance(profiles, list) and profiles else None
         if not isinstance(first, dict):
-            return QoSProfile()
+            return QoSProfile(depth=10)
         keep_all = str(first.get("history")) in ("keep_all", "2")
         return QoSProfile(
             depth=max(1, int(first.get("depth") or 10)),
@@ -113,7 +113,7 @@ def _qos(text: str) -> QoSProfile:
             ),
         )
     except (yaml.YAMLError, TypeError, ValueError):
-        return QoSProfile()
+        return QoSProfile(depth=10)
 
 
 def timeline(
@@ -203,7 +203,7 @@ async def play(
                     finally:
                         handle.cancel()
                 name, msg_type, qos = (
-                    (CLOCK_TOPIC, type(msg), QoSProfile()) if topic is None else (topic.target, topic.msg_type, topic.qos)
+                    (CLOCK_TOPIC, type(msg), QoSProfile(depth=10)) if topic is None else (topic.target, topic.msg_type, topic.qos)
                 )
                 pub = publishers.get(name)
                 if pub is None:

@@ -44,6 +44,7 @@ from actors.names import expand, is_hidden_name
 from actors.recording.bag_writer import BagWriter
 from actors.topics import (
     DurabilityPolicy,
+    Expiring,
     Publisher,
     QoSProfile,
     ReliabilityPolicy,
@@ -271,10 +272,14 @@ class Recorder:
             self._retired.remove(previous)
         self._taps[topic.name] = tap
         runtime.topics.add_subscription(tap, replay=False)
+        now = runtime.loop.time()
         for pub in topic.publishers:  # a latched topic's history, as a late subscriber gets it
-            if pub._history:
-                for msg in pub._history:
-                    tap._push(msg)
+            for msg in pub._history or ():
+                if isinstance(msg, Expiring):
+                    if msg.expires <= now:
+                        continue
+                    msg = msg.msg
+                tap._push(msg)
 
     # -- the writer side ------------------------------------------------------------
 
@@ -338,6 +343,15 @@ class _Stamper:
 
     def __len__(self) -> int:
         return 0
+
+    # A publisher with a lifespan wraps what it has just queued (``queue[-1]``) in an
+    # expiry: a recorded message never expires (it is stamped when published), so the
+    # wrapping is let go by.
+    def __getitem__(self, index: int) -> None:
+        return None
+
+    def __setitem__(self, index: int, value: Any) -> None:
+        pass
 
     def append(self, msg: Any) -> None:
         recorder = self.recorder

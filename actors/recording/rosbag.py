@@ -36,9 +36,11 @@ _RELIABILITY = {1: "reliable", 2: "best_effort"}
 _DURABILITY = {1: "transient_local", 2: "volatile"}
 
 
-def _duration(value: Any) -> dict[str, int]:
-    """rmw's form of a QoS duration: ``sec``/``nsec``; None, zero and infinite are infinite."""
-    ns = getattr(value, "nanoseconds", value)
+def _duration(qos: Any, name: str) -> dict[str, int]:
+    """rmw's form of a QoS duration (``deadline``...): ``sec``/``nsec``; none or infinite is infinite."""
+    ns = getattr(qos, f"{name}_ns", None)  # an endpoint's QoSSnapshot
+    if ns is None:
+        ns = getattr(getattr(qos, name, None), "nanoseconds", None)  # a QoSProfile's Duration
     if not isinstance(ns, int) or ns <= 0 or ns >= 2**63 - 1:
         return dict(_INFINITE)
     return {"sec": ns // 1_000_000_000, "nsec": ns % 1_000_000_000}
@@ -51,11 +53,11 @@ def _profile(qos: Any) -> dict[str, Any]:
         "depth": int(qos.depth),
         "reliability": _RELIABILITY.get(int(qos.reliability), "system_default"),
         "durability": _DURABILITY.get(int(qos.durability), "system_default"),
-        "deadline": _duration(getattr(qos, "deadline", None)),
-        "lifespan": _duration(getattr(qos, "lifespan", None)),
+        "deadline": _duration(qos, "deadline"),
+        "lifespan": _duration(qos, "lifespan"),
         "liveliness": "manual_by_topic" if liveliness is not None and int(liveliness) == 3 else "automatic",
-        "liveliness_lease_duration": _duration(getattr(qos, "liveliness_lease_duration", None)),
-        "avoid_ros_namespace_conventions": False,
+        "liveliness_lease_duration": _duration(qos, "liveliness_lease_duration"),
+        "avoid_ros_namespace_conventions": bool(getattr(qos, "avoid_ros_namespace_conventions", False)),
     }
 
 
