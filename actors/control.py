@@ -655,8 +655,8 @@ class _Session:
         async with anyio.create_task_group() as tg:
 
             async def until_hang_up() -> None:
-                with suppress(anyio.EndOfStream, anyio.BrokenResourceError, anyio.ClosedResourceError):
-                    await self._stream.receive()  # the client sends nothing while a bag plays
+                with suppress(*_GONE):
+                    await self.connection.stream.receive(1)  # the client sends nothing while a bag plays
                 tg.cancel_scope.cancel()
 
             tg.start_soon(until_hang_up)
