@@ -320,15 +320,19 @@ async def test_actors_bag_record_against_a_running_graph(tmp_path):
             [sys.executable, "-m", "actors", "bag", "record", "-o", str(out), "/count", "--graph", "bag_record_source"],
             cwd=ROOT, env=python_env(),
         ) as process:
-            with anyio.fail_after(20):
-                while not counting.pub.get_subscription_count():  # the recorder's subscription
-                    await anyio.sleep(0.01)
-                first = counting.n
-                while counting.n < first + 40:
-                    await anyio.sleep(0.01)
-            process.send_signal(signal.SIGINT)
-            with anyio.fail_after(20):
-                assert await process.wait() == 0
+            try:
+                with anyio.fail_after(20):
+                    while not counting.pub.get_subscription_count():  # the recorder's subscription
+                        await anyio.sleep(0.01)
+                    first = counting.n
+                    while counting.n < first + 40:
+                        await anyio.sleep(0.01)
+                process.send_signal(signal.SIGINT)
+                with anyio.fail_after(20):
+                    assert await process.wait() == 0
+            finally:
+                if process.returncode is None:  # failed: leaving the block would wait for it forever
+                    process.kill()
     with open(out, "rb") as f:
         reader = mcap_reader.make_reader(f)
         values = [codec.decode_cdr(m.data, "std_msgs/msg/Int64").data for _, _, m in reader.iter_messages()]
