@@ -70,6 +70,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--topics", nargs="+", default=[], metavar="TOPIC", help="with --record: only these topics"
     )
+    parser.add_argument(
+        "--foxglove", nargs="?", type=_port, const=8765, metavar="PORT",
+        help="serve every topic live to Foxglove on ws://127.0.0.1:PORT (default 8765; "
+        "pip install 'actors[foxglove]')",
+    )
 
 
 def _seconds(text: str) -> float:
@@ -80,6 +85,12 @@ def _seconds(text: str) -> float:
     if not 0 <= value <= MAX_SECONDS:  # also refuses nan and inf, on which a virtual clock stands still
         raise argparse.ArgumentTypeError(f"duration must be from 0 to {MAX_SECONDS:g} seconds, got {text}")
     return value
+
+
+def _port(text: str) -> int:
+    if not text.isdigit() or int(text) > 65535:
+        raise argparse.ArgumentTypeError(f"not a port number (0 to 65535, 0: any free one): {text!r}")
+    return int(text)
 
 
 async def run_graph(
@@ -226,7 +237,7 @@ def launch(args: argparse.Namespace) -> int:
     try:
         from actors.recording.options import attachments
 
-        attach = attachments(record=args.record, topics=args.topics)
+        attach = attachments(record=args.record, topics=args.topics, foxglove=args.foxglove)
     except (ActorsError, ImportError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

@@ -357,12 +357,12 @@ async def test_4_malformed_requests_are_answered_and_logged_once_per_connection_
             errors.append(await ask(second, {"op": "reboot"}))
         assert rt.graph.nodes() == []  # and the graph is fine
     assert errors == [
-        "bad request: op: 'publsh' is not one of graph, node, publish, subscribe, call, doctor (did you mean 'publish'?)",
+        "bad request: op: 'publsh' is not one of graph, node, publish, subscribe, call, doctor, play (did you mean 'publish'?)",
         "field 'data' of std_msgs/msg/Bool: expected a bool, got the string 'maybe'",
         "field 'data' of std_msgs/msg/UInt8: expected an integer <= 255, got the integer 18446744073709551615",
         "bad request: depth: expected an integer <= 10000, got the integer 9223372036854775808",
         "bad request: timeout: expected a number > 0.0, got the number nan",
-        "bad request: op: 'reboot' is not one of graph, node, publish, subscribe, call, doctor",
+        "bad request: op: 'reboot' is not one of graph, node, publish, subscribe, call, doctor, play",
     ]
     logged = [r for r in caplog.records if "control endpoint" in r.getMessage()]
     assert [r.getMessage().split(": ", 2)[1] for r in logged] == ["connection 1", "connection 2"]

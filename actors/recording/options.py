@@ -10,13 +10,13 @@ from actors.errors import BagError
 __all__ = ["attachments"]
 
 
-def attachments(*, record: str | None = None, topics: Sequence[str] = ()) -> list[Any]:
+def attachments(*, record: str | None = None, topics: Sequence[str] = (), foxglove: int | None = None) -> list[Any]:
     """The attachments ``python -m actors.run`` options ask for, each ready to run.
 
-    A bag is created here, before the graph starts, so that a name already
-    taken or an unwritable directory is a one-line error (BagError), not a
-    failure in a running graph.  ImportError (with an install hint) when an
-    extra is missing.
+    A bag is created and the live view's port taken here, before the graph
+    starts, so that a name already taken, an unwritable directory or a port in
+    use is a one-line error (BagError, ActorsError), not a failure in a running
+    graph.  ImportError (with an install hint) when an extra is missing.
     """
     found: list[Any] = []
     if topics and not record:
@@ -32,4 +32,10 @@ def attachments(*, record: str | None = None, topics: Sequence[str] = ()) -> lis
         except OSError as exc:
             raise BagError(f"cannot record to {record}: {exc.strerror or exc}") from None
         found.append(recorder)
+    if foxglove is not None:
+        from actors.recording.live import FoxgloveView
+
+        view = FoxgloveView(foxglove)
+        view.start()
+        found.append(view)
     return found

@@ -44,17 +44,26 @@ class TapSet:
     """The taps of one sink (a recorder, a live view) on every topic ``wants(name)`` accepts.
 
     ``node`` is the hidden owner's name (``topic info`` shows it), ``depth``
-    the taps' QoS depth, ``label`` what the log calls the sink.  :meth:`start`
+    the taps' QoS depth, ``label`` what the log calls the sink; ``tapped(tap)``
+    is told of each new tap before its first message.  :meth:`start`
     taps what exists and follows the graph; :meth:`stop` removes every tap
     (:meth:`all` still lists them).  A topic that comes back with its type gets
     its old tap's ``channel``, so a sink keeps one channel per topic.
     """
 
     def __init__(
-        self, node: str, wants: Callable[[str], bool], deliver: Deliver, *, depth: int = 1000, label: str = "tap"
+        self,
+        node: str,
+        wants: Callable[[str], bool],
+        deliver: Deliver,
+        *,
+        depth: int = 1000,
+        label: str = "tap",
+        tapped: Callable[[Tap], None] | None = None,
     ) -> None:
         self.node = node
         self.label = label
+        self.tapped = tapped
         self.wants = wants
         self.deliver = deliver
         self.depth = depth
@@ -132,6 +141,8 @@ class TapSet:
         if previous is not None:  # the topic is back with its type: its channel goes on
             self._retired.remove(previous)
             tap.channel = previous.channel
+        if self.tapped is not None:
+            self.tapped(tap)
         self.taps[topic.name] = tap
         runtime.topics.add_subscription(tap, replay=False)
         now = runtime.loop.time()

@@ -1,0 +1,205 @@
+"""The live view: a graph's topics and services served to Foxglove over its WebSocket protocol (``--foxglove``).
+
+``Runtime(attach=[FoxgloveView(port=8765)])`` (``python -m actors.run GRAPH
+--foxglove``) runs foxglove-sdk's WebSocket server on 127.0.0.1 (the
+``foxglove`` extra).  Every topic is a channel as rosbag2 writes it into a bag
+(``ros2msg`` schema with the full definition, ``cdr`` payloads, the type hash
+in its metadata), tapped through a :class:`~actors.recording.tap.TapSet`; a
+message is encoded only while a client is subscribed to its channel, and the
+server's queues drop for a slow client, so a view nobody watches costs the
+graph nothing and none holds up a publisher.  Log times, and the time the
+server broadcasts ten times per second of graph time, are the runtime clock's
+(virtual time included).  Every service is callable from Foxglove (CDR
+requests and responses).
+"""
+
+from __future__ import annotations
+
+import asyncio
+import concurrent.futures
+from typing import TYPE_CHECKING, Any
+
+import anyio
+import anyio.abc
+
+from actors import codec
+from actors.errors import ActorsError
+from actors.names import is_hidden_name
+from actors.recording.tap import Tap, TapOwner, TapSet
+from actors.services import Client, Service
+from actors.topics import type_name
+
+if TYPE_CHECKING:
+    from actors.runtime import Runtime
+
+__all__ = ["FoxgloveView", "VIEW_NODE", "DEFAULT_PORT", "CALL_TIMEOUT"]
+
+VIEW_NODE = "/_actors_foxglove"
+"""The hidden owner of the view's subscriptions, as ``topic info`` names it."""
+
+DEFAULT_PORT = 8765
+"""Foxglove's usual WebSocket port."""
+
+CALL_TIMEOUT = 10.0
+"""Seconds (wall clock) a service call from Foxglove waits for its response."""
+
+TIME_PERIOD = 0.1
+"""Seconds of graph time between two time broadcasts."""
+
+
+def _foxglove() -> Any:
+    try:
+        import foxglove
+        import foxglove.websocket
+    except ImportError as exc:
+        raise ImportError("--foxglove needs foxglove-sdk: pip install 'actors[foxglove]'") from exc
+    return foxglove
+
+
+class FoxgloveView:
+    """The attachment that serves a graph live to Foxglove: ``Runtime(attach=[FoxgloveView()])``.
+
+    ``port`` 0 lets the system choose one (:attr:`port` tells which, once
+    started).  Hidden topics and services (a part starting with ``_``) only
+    with ``include_hidden``.  :meth:`start` opens the server (the runtime calls
+    it when it starts, if no one did before), raising ActorsError when the
+    address cannot be had and ImportError without the ``foxglove`` extra.
+    """
+
+    def __init__(self, port: int = DEFAULT_PORT, *, host: str = "127.0.0.1", include_hidden: bool = False) -> None:
+        self.host = host
+        self.port = port
+        self.include_hidden = include_hidden
+        self._fox: Any = None
+        self._context: Any = None
+        self._server: Any = None
+        self._taps = TapSet(VIEW_NODE, self._wants, self._deliver, label="foxglove", tapped=self._advertise)
+        self._now_ns: Any = None
+        self._loop: asyncio.AbstractEventLoop | None = None
+        self._runtime: Runtime | None = None
+        self._owner: TapOwner | None = None
+        self._services: dict[str, Client] = {}
+
+    def start(self) -> int:
+        """Open the WebSocket server; returns its port."""
+        if self._server is None:
+            fox = self._fox = _foxglove()
+            self._context = fox.Context()
+            capabilities = [fox.websocket.Capability.Time, fox.websocket.Capability.Services]
+            try:
+                self._server = fox.start_server(
+                    name="actors", host=self.host, port=self.port, capabilities=capabilities,
+                    supported_encodings=["cdr"], context=self._context,
+                )
+            except Exception as exc:  # the SDK raises RuntimeError for an address in use
+                raise ActorsError(f"--foxglove: cannot serve on {self.host}:{self.port}: {exc}") from None
+            self.port = self._server.port
+        return self.port
+
+    @property
+    def url(self) -> str:
+        """The address Foxglove connects to (Open connection → Foxglove WebSocket)."""
+        return f"ws://{self.host}:{self.port}"
+
+    async def __call__(
+        self, runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any] = anyio.TASK_STATUS_IGNORED
+    ) -> None:
+        self.start()
+        self._now_ns = runtime.clock.now_ns
+        self._loop = runtime.loop
+        self._runtime = runtime
+        self._owner = TapOwner(runtime, VIEW_NODE)
+        try:
+            self._taps.start(runtime)
+            runtime.services.listeners.append(self)
+            for service in list(runtime.services.servers.values()):
+                self.service_added(service)
+            runtime.logger.info(f"foxglove: serving the graph on {self.url}")
+            task_status.started()
+            while True:
+                self._server.broadcast_time(runtime.clock.now_ns())
+                await anyio.sleep(TIME_PERIOD)
+        finally:
+            self._taps.stop()
+            if self in runtime.services.listeners:
+                runtime.services.listeners.remove(self)
+            self._server.stop()
+
+    # -- topics ---------------------------------------------------------------------------
+
+    def _wants(self, topic: str) -> bool:
+        return self.include_hidden or not is_hidden_name(topic)
+
+    def _advertise(self, tap: Tap) -> None:
+        """A new tap: its channel, advertised to clients at once (a quiet topic too)."""
+        if tap.channel is None:
+            fox = self._fox
+            schema = fox.Schema(name=tap.ros_type, encoding="ros2msg", data=tap.definition.encode())
+            tap.channel = fox.Channel(
+                tap.topic_name, schema=schema, message_encoding="cdr", context=self._context,
+                metadata={"topic_type_hash": tap.type_hash},
+            )
+
+    def _deliver(self, tap: Tap, msg: Any) -> None:
+        channel = tap.channel
+        if not channel.has_sinks():  # nobody looks: nothing to encode
+            return
+        try:
+            data = codec.encode_cdr(msg)
+        except Exception as exc:  # a message its type cannot carry: never the publisher's problem
+            tap.dropped += 1
+            if not tap.failed:
+                tap.failed = True
+                tap.node.logger.warning(f"foxglove: a message on {tap.topic_name} cannot be sent: {exc}")
+            return
+        channel.log(data, log_time=self._now_ns())
+
+    # -- services (ServiceListener) ----------------------------------------------------------
+
+    def service_added(self, service: Service) -> None:
+        """A new server: callable from Foxglove under its name."""
+        name = service.service_name
+        if name in self._services or (is_hidden_name(name) and not self.include_hidden):
+            return
+        fox, srv_type = self._fox, service.srv_type
+        try:
+            request, response = (
+                fox.MessageSchema(
+                    encoding="cdr",
+                    schema=fox.Schema(name=type_name(t), encoding="ros2msg", data=codec.definition_text(t).encode()),
+                )
+                for t in (srv_type.Request, srv_type.Response)
+            )
+        except Exception as exc:  # a type with no ROS definition: say so once, serve the rest
+            service.node.logger.warning(f"foxglove: leaving out service {name}: {exc}")
+            return
+        client = Client(self._owner, name, srv_type, self._runtime.services)  # type: ignore[arg-type, union-attr]
+        self._services[name] = client
+        schema = fox.ServiceSchema(type_name(srv_type), request=request, response=response)
+        self._server.add_services([fox.Service(name, schema=schema, handler=lambda req: self._call(client, req))])
+
+    def service_removed(self, service: Service) -> None:
+        """A server went away: no longer offered."""
+        if self._services.pop(service.service_name, None) is not None:
+            self._server.remove_services([service.service_name])
+
+    def client_added(self, client: Client) -> None:
+        """Clients are not shown."""
+
+    def client_removed(self, client: Client) -> None:
+        """Clients are not shown."""
+
+    def _call(self, client: Client, request: Any) -> bytes:
+        """Foxglove's call (in one of the SDK's threads): decoded, made in the graph's loop, answered.
+
+        An exception becomes the call's error message in Foxglove.
+        """
+        assert self._loop is not None
+        msg = codec.decode_cdr(request.payload, client.srv_type.Request)
+        future = asyncio.run_coroutine_threadsafe(client.call(msg), self._loop)
+        try:
+            return codec.encode_cdr(future.result(timeout=CALL_TIMEOUT))
+        except concurrent.futures.TimeoutError:
+            future.cancel()
+            raise TimeoutError(f"service {client.service_name} did not answer within {CALL_TIMEOUT:g} s") from None
+
