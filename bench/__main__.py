@@ -12,7 +12,7 @@ import time
 from collections.abc import Callable, Sequence
 from typing import NamedTuple
 
-from bench import cdr, memory, scale, services, sim, startup, throughput, timer, topics_scale, transport
+from bench import cdr, memory, recording, scale, services, sim, startup, throughput, timer, topics_scale, transport
 from bench.harness import Result, table
 from bench.report import write
 from bench.targets import check
@@ -38,6 +38,7 @@ SCENARIOS = (
     Scenario("i", "cdr", cdr.run),
     Scenario("j", "scale", scale.run),
     Scenario("k", "zenoh", transport.run),
+    Scenario("l", "recording", recording.run),
 )
 
 

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import asyncio
 import time
+from collections.abc import Sequence
+from typing import Any
 
 from actors import Node, QoSProfile, Runtime
 from bench import ros
@@ -47,19 +49,22 @@ def _batch(topics: int) -> int:
     return batch
 
 
-def actors_rate(n: int, subscribers: int, topics: int = 1, loop: Loop | None = None) -> float:
+def actors_rate(
+    n: int, subscribers: int, topics: int = 1, loop: Loop | None = None, attach: Sequence[Any] = ()
+) -> float:
     """Deliveries per second: ``n`` messages published round-robin over ``topics`` topics,
     each topic with one publisher and ``subscribers`` subscriptions (each in its own node).
 
     ``n`` is rounded down to whole batches (100 messages, or one per topic when
     there are more); ``topics`` must divide the batch.  ``loop`` makes the
-    event loop (asyncio's by default).
+    event loop (asyncio's by default); ``attach`` runs beside the graph (a
+    recorder, for ``bench.recording``).
     """
     batch_size = _batch(topics)
     n = n // batch_size * batch_size
 
     async def main() -> float:
-        async with Runtime() as rt:
+        async with Runtime(attach=attach) as rt:
             listeners = []
             for t in range(topics):
                 for i in range(subscribers):
