@@ -82,7 +82,6 @@ class Runtime:
         self._failure: BaseException | None = None
         self._rosout: Publisher | None = None
         self._stopped: anyio.Event | None = None
-        self._collection_paused = False  # see _pause_collection
 
     # -- lifecycle ------------------------------------------------------------
 
@@ -125,7 +124,6 @@ class Runtime:
             else:
                 suppressed = await self._task_group.__aexit__(exc_type, exc, tb)
         finally:
-            self._resume_collection()
             self._state = "closed"
             assert self._stopped is not None
             self._stopped.set()
@@ -187,8 +185,6 @@ class Runtime:
         self._require_running()
         if not (isinstance(cls, type) and issubclass(cls, Node)):
             raise TypeError(f"spawn() takes a Node subclass, got {cls!r}")
-        if not self._collection_paused and gc.isenabled():
-            self._pause_collection()
         child = Child(
             cls, name=name, namespace=namespace, params=params, remap=remap, restart=RestartType(restart),
             args=args, kwargs=kwargs,
@@ -202,22 +198,6 @@ class Runtime:
             raise
         self.supervisor.children[child] = None
         return core.node  # type: ignore[return-value]
-
-    def _pause_collection(self) -> None:
-        # Spawns come in bursts (a graph starting: one loop iteration, no await between
-        # them), and a burst allocates most of what the graph will ever hold.  The cyclic
-        # collector would traverse all of it again each time the heap grows by a quarter:
-        # 10,000 nodes cost about twice the CPU with it on.  So it waits until the burst
-        # is over (the next loop iteration), then collects as usual: nothing is frozen or
-        # lost, unlike frozen_startup().  Left alone when the application disabled it.
-        gc.disable()
-        self._collection_paused = True
-        self.loop.call_soon(self._resume_collection)
-
-    def _resume_collection(self) -> None:
-        if self._collection_paused:
-            self._collection_paused = False
-            gc.enable()
 
     async def stop(self, name: str) -> None:
         """Stop the node ``name`` (full or plain name) for good, running its shutdown hooks."""

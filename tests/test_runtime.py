@@ -155,25 +155,3 @@ def test_frozen_startup_pauses_collection_then_freezes_what_was_built():
         assert gc.isenabled() and gc.get_freeze_count() >= frozen + len(built)
     finally:
         gc.unfreeze()
-
-
-async def test_a_burst_of_spawns_defers_garbage_collection_to_the_next_loop_iteration():
-    import asyncio
-    import gc
-
-    assert gc.isenabled()
-    async with Runtime() as rt:
-        for i in range(3):
-            rt.spawn(Collector, name=f"c{i}")
-            assert not gc.isenabled()  # paused for the burst
-        await asyncio.sleep(0)
-        assert gc.isenabled()  # and on again, nothing frozen
-        gc.disable()  # the application's own choice is left alone
-        try:
-            rt.spawn(Collector, name="later")
-            await asyncio.sleep(0)
-            assert not gc.isenabled()
-        finally:
-            gc.enable()
-        rt.spawn(Collector, name="last")
-    assert gc.isenabled()  # a runtime that closes within the burst resumes collection too
