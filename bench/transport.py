@@ -61,7 +61,10 @@ def _pair(sink: str, source: str, args: dict[str, Any], env: dict[str, str], res
         second = subprocess.Popen([*command, source, json.dumps(args)], cwd=ROOT, env=env, stdout=subprocess.PIPE, text=True)
         reader = first if result_from == "sink" else second
         out, _ = reader.communicate(timeout=300)
-        return json.loads(out.strip().splitlines()[-1])
+        lines = out.strip().splitlines()
+        if not lines:  # its traceback went to stderr
+            raise RuntimeError(f"the {result_from} exited ({reader.returncode}) without a result")
+        return json.loads(lines[-1])
     finally:
         for proc in (first, second):
             if proc is not None and proc.poll() is None:
