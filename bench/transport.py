@@ -6,7 +6,8 @@ a *source* (publisher, client or pinger) does the work; one of them prints
 the result as JSON.  ``python -m bench.transport ROLE JSON_ARGS`` is a child.
 
 - one-way: ``n`` String messages ("Hello World"), RELIABLE + KEEP_ALL on both
-  sides (no drops: Zenoh blocks, DDS waits for acknowledgements), published in
+  sides (no drops: Zenoh blocks; rclpy's publish fails while Fast DDS's history
+  is full, and the source tries again until it is taken), published in
   batches of 100; deliveries per second at the sink, first to last message
   (a sink that hears nothing for 5 s stops and reports what came: the row
   then says how many were lost);
@@ -226,6 +227,7 @@ def _ready() -> None:
 
 def _rclpy(role: str, args: dict[str, Any]) -> Any:
     import rclpy
+    from rclpy._rclpy_pybind11 import RCLError
     from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy
     from std_msgs.msg import Int64, String
     from std_srvs.srv import SetBool
@@ -252,7 +254,12 @@ def _rclpy(role: str, args: dict[str, Any]) -> Any:
         msg = String(data="Hello World")
         for _ in range(0, n, BATCH):
             for _ in range(BATCH):
-                pub.publish(msg)
+                while True:
+                    try:
+                        pub.publish(msg)
+                        break
+                    except RCLError:  # KEEP_ALL's history is full: wait for acknowledgements, as Zenoh blocks
+                        executor.spin_once(timeout_sec=0.001)
             executor.spin_once(timeout_sec=0)
         spin(executor, lambda: False, timeout=float("inf"))
     if role == "server":
