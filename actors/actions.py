@@ -73,6 +73,7 @@ __all__ = [
     "ActionClient",
     "ServerGoalHandle",
     "ClientGoalHandle",
+    "ActionCall",
     "wire_names",
     "status_name",
 ]
@@ -145,6 +146,16 @@ def wire_names(action: str) -> dict[str, str]:
 def _check_action_type(action_type: Any, where: str) -> None:
     if not (isinstance(action_type, type) and all(hasattr(action_type, a) for a in ("Goal", "Result", "Feedback", "Impl"))):
         raise TypeError(f"{where} needs an action type (with .Goal, .Result, .Feedback), got {action_type!r}")
+
+
+class ActionCall(OneShot):
+    """A user callback an action runs later in its node's actor (accepted, feedback).
+
+    Whoever drives a node's actor itself (the rclpy overlay) can tell an
+    action's calls from the node's other work by their type.
+    """
+
+    __slots__ = ()
 
 
 def _key(goal_id: UUID) -> bytes:
@@ -369,7 +380,7 @@ class ActionServer:
         self.goals[_key(request.goal_id)] = handle
         self._publish_status()
         # After this response is sent, as rclpy does: the accepted callback runs next in the actor.
-        self.node.actor.schedule(OneShot(partial(self.accepted_callback, handle), f"accepted callback of {self.name}"))
+        self.node.actor.schedule(ActionCall(partial(self.accepted_callback, handle), f"accepted callback of {self.name}"))
         response.accepted = True
         response.stamp = stamp
         return response
@@ -641,21 +652,32 @@ class ActionClient:
         return self.server_is_ready()
 
     async def send_goal(
-        self, goal: Any, *, feedback: Callable[[Any], Any] | None = None, timeout: float | None = None
+        self,
+        goal: Any,
+        *,
+        feedback: Callable[[Any], Any] | None = None,
+        timeout: float | None = None,
+        goal_id: UUID | None = None,
     ) -> ClientGoalHandle:
         """Send ``goal`` (the action's Goal) under a new UUID; the handle once the server has answered.
 
         ``feedback(msg)`` (plain or ``async``) gets each of the goal's Feedback
         messages, in order, in this node's actor; without it, iterate
-        ``handle.feedback()``.  Check ``handle.accepted``.  Raises TypeError
-        for a goal of another type, TimeoutError when no server answers within
-        ``timeout`` seconds (a goal sent before its server starts waits for it).
+        ``handle.feedback()``.  Check ``handle.accepted``.  ``goal_id`` is the
+        goal's UUID if the caller chose one (rclpy's ``goal_uuid``; a server
+        rejects an id it already has).  Raises TypeError for a goal of another
+        type, ActionError for a ``goal_id`` of a goal this client still waits
+        for, TimeoutError when no server answers within ``timeout`` seconds (a
+        goal sent before its server starts waits for it).
         """
         goal_type = self.action_type.Goal
         if type(goal) is not goal_type:
             raise TypeError(f"goal of {self.name} is {type_name(goal_type)}, got {type_name(type(goal))}")
         impl = self.action_type.Impl
-        goal_id = UUID(uuid=uuid.uuid4().bytes)
+        if goal_id is None:
+            goal_id = UUID(uuid=uuid.uuid4().bytes)
+        elif _key(goal_id) in self.goals:
+            raise ActionError(f"goal {_short(goal_id)} of {self.name} was sent already and has not ended")
         handle = ClientGoalHandle(self, goal_id, goal, feedback)
         key = _key(goal_id)
         self.goals[key] = handle  # before sending: feedback may come before the answer
@@ -704,7 +726,7 @@ class ActionClient:
             return
         if handle._feedback is not None:
             callback = partial(handle._feedback, message.feedback)
-            self.node.actor.schedule(OneShot(callback, f"feedback callback of {self.name}"))
+            self.node.actor.schedule(ActionCall(callback, f"feedback callback of {self.name}"))
         else:
             handle._buffer.append(message.feedback)
             handle._notify()

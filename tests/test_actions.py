@@ -8,12 +8,13 @@ import anyio
 import pytest
 
 from actors import Node, Runtime
-from actors.actions import CancelResponse, GoalResponse, ServerGoalHandle, status_name, wire_names
+from actors.actions import ActionCall, CancelResponse, GoalResponse, ServerGoalHandle, status_name, wire_names
 from actors.errors import ActionError, ServiceError
 from interfaces.action_msgs.msg import GoalStatus, GoalStatusArray
 from interfaces.builtin_interfaces.msg import Time
 from interfaces.example_interfaces.action import Fibonacci
 from interfaces.std_msgs.msg import Empty
+from interfaces.unique_identifier_msgs.msg import UUID
 
 pytestmark = pytest.mark.virtual_time
 
@@ -205,6 +206,43 @@ async def test_two_concurrent_goals_run_side_by_side():
         assert rt.clock.monotonic() == pytest.approx(3.0)  # not 5: they overlapped
         assert (first_result.result.sequence, second_result.result.sequence) == ([0, 1, 1, 2, 3], [0, 1, 1, 2])
         assert server.executed == [4, 3]
+
+
+async def test_a_goal_can_carry_an_id_its_client_chose():
+    async with Runtime() as rt:
+        server, node = await start(rt)
+        chosen = UUID(uuid=bytes(range(16)))
+        handle = await node.client.send_goal(Fibonacci.Goal(order=3), goal_id=chosen)
+        assert handle.accepted and bytes(handle.goal_id.uuid) == bytes(range(16))
+        assert list(server.server.goals) == [bytes(range(16))]
+        with pytest.raises(ActionError, match="was sent already"):
+            await node.client.send_goal(Fibonacci.Goal(order=3), goal_id=chosen)
+        assert (await handle.get_result()).status == SUCCEEDED
+        # The server still holds the ended goal (its result timeout): the same id again is rejected there.
+        again = await node.client.send_goal(Fibonacci.Goal(order=3), goal_id=chosen)
+        assert not again.accepted
+
+
+async def test_accepted_and_feedback_callbacks_reach_the_actor_as_action_calls():
+    accepted: list[ServerGoalHandle] = []
+
+    class Scheduled(list):
+        def schedule(self, entity):
+            self.append(entity)
+            entity._run()
+
+    async with Runtime() as rt:
+        server, node = await start(rt)
+        actors = server._core.actor, node._core.actor
+        server._core.actor, node._core.actor = server_calls, client_calls = Scheduled(), Scheduled()
+        server.server.accepted_callback = lambda handle: (accepted.append(handle), handle.execute())
+        try:
+            handle = await node.client.send_goal(Fibonacci.Goal(order=2), feedback=node.on_feedback)
+            await handle.get_result()
+        finally:
+            server._core.actor, node._core.actor = actors
+        assert [type(c) for c in server_calls] == [ActionCall] and len(accepted) == 1
+        assert [type(c) for c in client_calls] == [ActionCall] and node.feedback == [[0, 1, 1]]
 
 
 async def test_cancel_by_stamp_and_cancel_all():
