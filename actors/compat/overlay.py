@@ -51,11 +51,16 @@ class OverlayFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         real = self.target(fullname)
         if real is None:
             return None
+        # Only find the module here: finders run under the interpreter's global import lock, and
+        # importing under it deadlocks with another thread importing the same module (partner
+        # scripts import rclpy at the same time).  create_module imports it, under its own lock.
         try:
-            module = importlib.import_module(real)
+            found = importlib.util.find_spec(real)
         except ModuleNotFoundError as exc:
-            if exc.name != real:
-                raise  # the module exists but something it imports does not
+            if exc.name != real and not real.startswith(f"{exc.name}."):
+                raise
+            found = None
+        if found is None:
             if fullname.startswith("rclpy."):
                 raise ModuleNotFoundError(
                     f"No module named {fullname!r}: actors' rclpy overlay does not provide it",
@@ -63,13 +68,13 @@ class OverlayFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
                 ) from None
             return None
         spec = importlib.machinery.ModuleSpec(
-            fullname, self, is_package=hasattr(module, "__path__")
+            fullname, self, is_package=found.submodule_search_locations is not None
         )
-        spec.loader_state = module
+        spec.loader_state = real
         return spec
 
     def create_module(self, spec: importlib.machinery.ModuleSpec) -> ModuleType:
-        module: ModuleType = spec.loader_state
+        module = importlib.import_module(spec.loader_state)
         return _Alias(module, spec.name)  # type: ignore[return-value]
 
     def exec_module(self, module: ModuleType) -> None:
