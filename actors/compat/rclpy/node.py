@@ -27,6 +27,7 @@ from actors.compat.rclpy.client import Client
 from actors.compat.rclpy.context import Context
 from actors.compat.rclpy.exceptions import NotInitializedException
 from actors.compat.rclpy.guard_condition import GuardCondition
+import actors.compat.rclpy.logging  # noqa: F401 - as rclpy's node does: `rclpy.logging` is then set
 from actors.compat.rclpy.publisher import Publisher
 from actors.compat.rclpy.service import Service
 from actors.compat.rclpy.subscription import Subscription

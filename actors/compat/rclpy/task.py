@@ -48,6 +48,9 @@ def _no_executor() -> None:
     return None
 
 
+_stepping = threading.local()  # .task: the Task whose coroutine this thread is stepping, if any
+
+
 class Future(Generic[T]):
     """The outcome of work that finishes later: ``done()``, ``result()``, ``add_done_callback``, ``await``."""
 
@@ -68,7 +71,9 @@ class Future(Generic[T]):
 
     def __await__(self) -> Generator[Any, None, T | None]:
         while self._pending():
-            yield self
+            # A Task stepping on this thread sleeps until this future is done; anyone else awaiting it
+            # (an asyncio task, as rclpy allows) gets a bare yield and polls, as rclpy's futures make it.
+            yield self if getattr(_stepping, "task", None) is not None else None
         return self.result()
 
     def _pending(self) -> bool:
@@ -225,6 +230,7 @@ class Task(Future[T]):
     def _step(self) -> None:
         handler = self._handler
         if inspect.iscoroutine(handler):
+            outer, _stepping.task = getattr(_stepping, "task", None), self
             try:
                 awaited = handler.send(None)
             except StopIteration as stop:
@@ -236,6 +242,8 @@ class Task(Future[T]):
             else:
                 if isinstance(awaited, Future) and awaited._pending():
                     self._suspend_on(awaited)
+            finally:
+                _stepping.task = outer
             return
         try:
             self.set_result(handler(*self._args, **self._kwargs))
