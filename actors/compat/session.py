@@ -83,6 +83,7 @@ class Session:
         self._stack: ExitStack | None = None
         self._done: Future[None] | None = None
         self._stopping = False
+        self._waiting: set[Waiter] = set()  # threads in wait_until, woken when the runtime ends
         self.runtime: Runtime
         self.dispatcher: Dispatcher
         self.loop: asyncio.AbstractEventLoop
@@ -142,6 +143,12 @@ class Session:
             self.failure = error
             if self._on_failure is not None:
                 self._on_failure(error)
+        # No timer will fire any more: release the threads that wait on runtime time (a pool thread
+        # in time.sleep would otherwise never end, and the interpreter waits for it at exit).
+        with self.lock:
+            waiting = list(self._waiting)
+        for waiter in waiting:
+            waiter.wake()
 
     def close(self) -> None:
         """Stop every node (graph nodes gracefully, in reverse order) and the loop thread.
@@ -280,7 +287,8 @@ class Session:
 
         ``waiter`` is the one whoever makes ``done()`` true wakes (made here if
         None: then only the timeout wakes it).  After ``timeout`` seconds of
-        runtime clock (None: no limit), returns what ``done()`` returns then.
+        runtime clock (None: no limit), returns what ``done()`` returns then;
+        also once the runtime has ended (no runtime time passes any more).
         """
         waiter = Waiter(self.activity) if waiter is None else waiter
         expired = False
@@ -290,16 +298,21 @@ class Session:
             expired = True
             waiter.wake()
 
-        timer = self.wake_after(timeout, time_up) if timeout is not None else None
+        timer = None
+        with self.lock:
+            self._waiting.add(waiter)
         try:
+            timer = self.wake_after(timeout, time_up) if timeout is not None and self.running else None
             while True:
                 waiter.clear()
                 with self.lock:
                     result = done()
-                if result or expired:
+                if result or expired or not self.running:
                     return result
                 waiter.wait()
         finally:
+            with self.lock:
+                self._waiting.discard(waiter)
             if timer is not None and not expired:
                 self.cancel(timer)
 
