@@ -27,6 +27,7 @@ from collections import deque
 from collections.abc import Awaitable, Callable, Coroutine
 from typing import Any, Protocol
 
+from actors.actions import ActionCall, ActionClient, ActionServer
 from actors.actor import Actor, Entity
 
 __all__ = ["Dispatcher", "ScriptActor", "WorkSource", "NativeWork", "NativeProxy", "NodeState", "ScriptNode", "SpinningExecutor"]
@@ -226,9 +227,14 @@ class ScriptActor(Actor):
     def schedule(self, entity: Entity) -> None:
         if not self._running:
             return
-        # A subscription's or timer's callback, a service's handler.
+        # A subscription's or timer's callback, a service's handler; what an action of the node does
+        # (every action of a script node is rclpy.action's: its handlers only call the overlay's catchers).
         callback = getattr(entity, "callback", None) or getattr(entity, "handler", None)
-        if callback is not None and callback in self._driven:
+        if (
+            (callback is not None and callback in self._driven)
+            or isinstance(entity, ActionCall)
+            or isinstance(getattr(callback, "__self__", None), (ActionServer, ActionClient))
+        ):
             self._dispatcher.add(self, entity)
         else:
             self._gated(entity)

@@ -1,0 +1,364 @@
+"""``rclpy.action.server``: a script node's action server, on the native one (:mod:`actors.actions`).
+
+The native server keeps the goals, their states, results and timeouts; its
+goal, cancel and accepted callbacks are the overlay's *catchers*, which run on
+the runtime's thread and only queue the script's callback here, on this
+waitable of the node, in its callback group.  So the script's goal, cancel and
+accepted callbacks run while the node is spun, on the spinning thread or an
+executor's pool, as in rclpy; the native server waits for their answers.
+
+An accepted goal's execute callback is a task of the node's executor
+(``executor.create_task``), as rclpy makes it: it runs outside every callback
+group, on a pool thread of a MultiThreadedExecutor, and may block there
+(``time.sleep`` between feedback messages) without holding anything else up.
+The native goal's own task waits for that task and takes what it returns as
+the result.  Everything a goal handle does from a script thread (``execute``,
+``publish_feedback``, ``succeed``...) runs on the runtime's thread; reading its
+state (``status``, ``is_active``, ``is_cancel_requested``) reads the native
+goal's, which only the runtime's thread changes.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections import deque
+from collections.abc import Callable
+from functools import partial
+from typing import TYPE_CHECKING, Any
+
+from actors.actions import ActionServer as NativeServer
+from actors.actions import CancelResponse, GoalEvent, GoalResponse
+from actors.actions import ServerGoalHandle as NativeGoal
+from actors.compat.dispatch import Handler, ScriptNode, WorkSource
+from actors.compat.rclpy.task import Task, await_or_execute
+from actors.errors import ActionError
+from actors.node import Node as NativeNode
+from interfaces.action_msgs.msg import GoalStatus
+
+if TYPE_CHECKING:
+    from interfaces.unique_identifier_msgs.msg import UUID
+
+__all__ = [
+    "ActionServer",
+    "ServerGoalHandle",
+    "GoalResponse",
+    "CancelResponse",
+    "GoalEvent",
+    "RCLError",
+    "default_goal_callback",
+    "default_cancel_callback",
+    "default_handle_accepted_callback",
+]
+
+
+class RCLError(RuntimeError):
+    """A goal was asked for a transition its state does not allow (rclpy's ``_rclpy.RCLError``)."""
+
+
+class ServerGoalHandle:
+    """One accepted goal, as the script's callbacks get it: its request, state and transitions."""
+
+    def __init__(self, server: ActionServer, native: NativeGoal) -> None:
+        self._server = server
+        self._native = native
+        self._session = server._session
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, ServerGoalHandle) and self.goal_id == other.goal_id
+
+    def __ne__(self, other: object) -> bool:
+        return not self == other
+
+    __hash__ = None  # type: ignore[assignment]  # as rclpy's: equal by goal id, not hashable
+
+    @property
+    def request(self) -> Any:
+        """The goal the client sent (the action's Goal)."""
+        return self._native.request
+
+    @property
+    def goal_id(self) -> UUID:
+        """The goal's UUID."""
+        return self._native.goal_id
+
+    @property
+    def is_active(self) -> bool:
+        """Whether the goal is accepted, executing or canceling."""
+        return self._native.is_active
+
+    @property
+    def is_cancel_requested(self) -> bool:
+        """Whether a cancel request was accepted (the goal is CANCELING)."""
+        return self._native.status == GoalStatus.STATUS_CANCELING
+
+    @property
+    def status(self) -> int:
+        """The goal's GoalStatus value."""
+        return int(self._native.status)
+
+    def execute(self, execute_callback: Callable[[ServerGoalHandle], Any] | None = None) -> None:
+        """Start executing: EXECUTING (unless a cancel came first), and the execute callback as a task
+        of the node's executor (``execute_callback`` instead of the server's, if given).
+
+        Raises RCLError for a goal that has ended or already executes.
+        """
+        callback = self._server._execute_callback if execute_callback is None else execute_callback
+        executor = self._server._node.executor
+        self._transition(self._native.execute, partial(self._server._executing, self, callback, executor))
+
+    def publish_feedback(self, feedback: Any) -> None:
+        """Publish ``feedback`` (the action's Feedback) for this goal; TypeError for anything else."""
+        if not isinstance(feedback, self._server.action_type.Feedback):
+            raise TypeError()
+        self._session.call(_publish_feedback, self._native, feedback, self._session.dispatcher)
+
+    def succeed(self) -> None:
+        """The goal succeeded; RCLError unless it is executing or canceling."""
+        self._transition(self._native.succeed)
+
+    def abort(self) -> None:
+        """The goal failed; RCLError unless it is executing or canceling."""
+        self._transition(self._native.abort)
+
+    def canceled(self) -> None:
+        """The goal stopped on a cancel request; RCLError unless it is canceling."""
+        self._transition(self._native.canceled)
+
+    def destroy(self) -> None:
+        """Nothing to release: the server forgets the goal when its result times out."""
+
+    def _transition(self, change: Callable[..., None], *args: Any) -> None:
+        try:
+            self._session.call(change, *args)
+        except ActionError as exc:
+            raise RCLError(f"Failed to update goal state: {exc}") from None
+
+
+def _publish_feedback(native: NativeGoal, feedback: Any, dispatcher: Any) -> None:
+    native.publish_feedback(feedback)
+    dispatcher.flush()  # a script client's executor has it when publish_feedback returns
+
+
+def default_handle_accepted_callback(goal_handle: ServerGoalHandle) -> None:
+    """Execute the goal."""
+    goal_handle.execute()
+
+
+def default_goal_callback(goal_request: Any) -> GoalResponse:
+    """Accept all goals."""
+    return GoalResponse.ACCEPT
+
+
+def default_cancel_callback(cancel_request: Any) -> CancelResponse:
+    """No cancellations."""
+    return CancelResponse.REJECT
+
+
+class ActionServer(WorkSource):
+    """Serves ``action_name`` on ``node`` (rclpy's signature; the QoS profiles are accepted and not used:
+    an action's services and topics have ROS's default QoS here).
+
+    ``execute_callback(goal_handle)`` (plain or ``async``) runs each executed goal
+    and returns the action's Result; ``goal_callback(goal)`` answers a
+    GoalResponse (default: accept), ``cancel_callback(goal_handle)`` a
+    CancelResponse (default: reject), ``handle_accepted_callback(goal_handle)``
+    runs after a goal is accepted (default: execute it).  Raises TypeError for
+    an execute callback that is not callable, ServiceError when another node
+    serves the action.
+    """
+
+    def __init__(
+        self,
+        node: ScriptNode,
+        action_type: type,
+        action_name: str,
+        execute_callback: Callable[[ServerGoalHandle], Any],
+        *,
+        callback_group: Any = None,
+        goal_callback: Callable[[Any], Any] = default_goal_callback,
+        handle_accepted_callback: Callable[[ServerGoalHandle], Any] = default_handle_accepted_callback,
+        cancel_callback: Callable[[ServerGoalHandle], Any] = default_cancel_callback,
+        goal_service_qos_profile: Any = None,
+        result_service_qos_profile: Any = None,
+        cancel_service_qos_profile: Any = None,
+        feedback_pub_qos_profile: Any = None,
+        status_pub_qos_profile: Any = None,
+        result_timeout: int = 10,
+    ) -> None:
+        if callback_group is None:
+            callback_group = node.default_callback_group
+        self.callback_group = callback_group
+        self._node = node
+        self._session = node._rclpy.session
+        self._action_type = action_type
+        self.register_handle_accepted_callback(handle_accepted_callback)
+        self.register_goal_callback(goal_callback)
+        self.register_cancel_callback(cancel_callback)
+        self.register_execute_callback(execute_callback)
+        self._work: deque[Handler] = deque()
+        self._handles: dict[bytes, ServerGoalHandle] = {}
+        self._logger = node.get_logger().get_child("action_server")
+        self._native: NativeServer
+        self._session.call(self._build, action_name, result_timeout)
+        callback_group.add_entity(self)
+        node.add_waitable(self)
+
+    def _build(self, action_name: str, result_timeout: float) -> None:
+        # On the runtime's thread: the native server, its entities driven before a request can come
+        # (a goal parked before the server existed arrives as soon as it does).
+        native = self._native = NativeNode.create_action_server(
+            self._node, self._action_type, action_name, self._executing_default,
+            goal=self._catch_goal, cancel=self._catch_cancel, accepted=self._catch_accepted,
+            result_timeout=result_timeout,
+        )
+
+    @property
+    def action_type(self) -> type:
+        """The action type served."""
+        return self._action_type
+
+    # -- the catchers: on the runtime's thread, they queue the script's callbacks here -------
+
+    def _queue(self, handler: Handler) -> None:
+        with self._session.lock:
+            self._work.append(handler)
+            self._node._rclpy.notify()
+
+    async def _catch_goal(self, goal: Any) -> GoalResponse:
+        answer: asyncio.Future[GoalResponse] = asyncio.get_running_loop().create_future()
+        self._queue(partial(self._decide, goal, answer))
+        return await answer
+
+    async def _catch_cancel(self, native: NativeGoal) -> CancelResponse:
+        answer: asyncio.Future[CancelResponse] = asyncio.get_running_loop().create_future()
+        self._queue(partial(self._consider_cancel, self._handle(native), answer))
+        return await answer
+
+    def _catch_accepted(self, native: NativeGoal) -> None:
+        self._queue(partial(self._accepted, self._handle(native)))
+
+    def _handle(self, native: NativeGoal) -> ServerGoalHandle:
+        # The one handle of a goal (scripts compare them); forgotten with the native goal.
+        key = bytes(native.goal_id.uuid)
+        with self._session.lock:
+            handle = self._handles.get(key)
+            if handle is None or handle._native is not native:
+                goals = self._native.goals
+                self._handles = {k: h for k, h in self._handles.items() if k in goals}
+                handle = self._handles[key] = ServerGoalHandle(self, native)
+            return handle
+
+    async def _executing_default(self, native: NativeGoal) -> Any:
+        return await self._executing(self._handle(native), self._execute_callback, self._node.executor, native)
+
+    async def _executing(
+        self, handle: ServerGoalHandle, callback: Callable[..., Any], executor: Any, native: NativeGoal
+    ) -> Any:
+        # The native goal's task: the script's execute callback runs as a task of the node's executor.
+        loop = asyncio.get_running_loop()
+        done: asyncio.Future[Any] = loop.create_future()
+        if executor is None:  # as rclpy: nobody spins the node, so nothing executes the goal
+            return await done
+        task: Task[Any] = executor.create_task(self._execute_goal, callback, handle)
+        task._add_resumer(lambda: _settle_threadsafe(loop, done, task))
+        result, error = await done
+        if error is not None:
+            raise error
+        return result
+
+    @staticmethod
+    async def _execute_goal(callback: Callable[..., Any], handle: ServerGoalHandle) -> tuple[Any, Exception | None]:
+        # What the callback raises goes to the native goal (which logs it and aborts), not to spin().
+        try:
+            return await await_or_execute(callback, handle), None
+        except Exception as exc:
+            return None, exc
+
+    # -- on the executor's threads ------------------------------------------------------------
+
+    async def _decide(self, goal: Any, answer: asyncio.Future[GoalResponse]) -> None:
+        try:
+            response = await await_or_execute(self._goal_callback, goal)
+        except Exception as exc:
+            self._settle(answer, None, exc)
+            raise
+        if not isinstance(response, GoalResponse):
+            self._logger.warning("Goal request callback did not return a GoalResponse type. Rejecting goal.")
+            response = GoalResponse.REJECT
+        self._settle(answer, response, None)
+
+    async def _consider_cancel(self, handle: ServerGoalHandle, answer: asyncio.Future[CancelResponse]) -> None:
+        try:
+            response = await await_or_execute(self._cancel_callback, handle)
+        except Exception as exc:
+            self._settle(answer, None, exc)
+            raise
+        self._settle(answer, response, None)
+
+    async def _accepted(self, handle: ServerGoalHandle) -> None:
+        await await_or_execute(self._handle_accepted_callback, handle)
+
+    def _settle(self, answer: asyncio.Future[Any], result: Any, error: BaseException | None) -> None:
+        if self._session.running:
+            self._session.loop.call_soon_threadsafe(_settle, answer, result, error)
+
+    # -- the waitable ---------------------------------------------------------------------------
+
+    def _ready(self) -> bool:
+        return bool(self._work)
+
+    def _take(self) -> Handler | None:
+        return self._work.popleft() if self._work else None
+
+    # -- rclpy's registration methods ------------------------------------------------------------
+
+    def register_handle_accepted_callback(self, handle_accepted_callback: Callable[..., Any] | None) -> None:
+        """Replace the accepted callback (None: execute every accepted goal)."""
+        self._handle_accepted_callback = handle_accepted_callback or default_handle_accepted_callback
+
+    def register_goal_callback(self, goal_callback: Callable[..., Any] | None) -> None:
+        """Replace the goal callback (None: accept every goal)."""
+        self._goal_callback = goal_callback or default_goal_callback
+
+    def register_cancel_callback(self, cancel_callback: Callable[..., Any] | None) -> None:
+        """Replace the cancel callback (None: refuse every cancel request)."""
+        self._cancel_callback = cancel_callback or default_cancel_callback
+
+    def register_execute_callback(self, execute_callback: Callable[..., Any]) -> None:
+        """Replace the execute callback; TypeError if it is not callable."""
+        if not callable(execute_callback):
+            raise TypeError("Failed to register goal execution callback: not callable")
+        self._execute_callback = execute_callback
+
+    def destroy(self) -> None:
+        """Stop serving: goals not finished abort; the node stops taking work from this server."""
+        self._node.remove_waitable(self)
+        state = self._node._rclpy
+        if state.destroyed or not self._session.running:
+            return
+
+        self._session.call(self._native.destroy)
+
+
+def _settle(answer: asyncio.Future[Any], result: Any, error: BaseException | None) -> None:
+    if answer.done():  # the request was given up meanwhile (the node stopped)
+        return
+    if error is not None:
+        answer.set_exception(error)
+    else:
+        answer.set_result(result)
+
+
+def _settle_threadsafe(loop: asyncio.AbstractEventLoop, done: asyncio.Future[Any], task: Task[Any]) -> None:
+    # From the thread that finished the task: hand its outcome to the native goal's task.
+    if loop.is_closed():
+        return
+    if task.cancelled():
+        outcome: Any = (None, RuntimeError("the execute callback's task was cancelled"))
+    else:
+        outcome = (None, task.exception()) if task.exception() is not None else task.result()
+    try:
+        loop.call_soon_threadsafe(_settle, done, outcome, None)
+    except RuntimeError:  # the loop closed meanwhile: nobody waits any more
+        pass
+
