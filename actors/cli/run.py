@@ -24,6 +24,9 @@ def register(groups: Any) -> None:
     parser.add_argument("--graph", metavar="GRAPH.toml", help="run the script beside this graph's nodes")
     parser.add_argument("--log-level", choices=("debug", "info", "warn", "error", "fatal"),
                         help="the console's level (default: info)")
+    parser.add_argument("--with", dest="partners", metavar="PARTNER.py", action="append", default=[],
+                        help="another rclpy program to run beside it in the same runtime, e.g. its action "
+                             "server (quote it with its arguments: --with 'server.py ARGS'); repeatable")
     parser.add_argument("script", help="the rclpy program, e.g. talker.py")
     parser.add_argument("args", nargs=argparse.REMAINDER, help="the program's arguments")
     parser.set_defaults(func=_run)
@@ -34,5 +37,5 @@ def _run(args: argparse.Namespace) -> int:
 
     return run_script(
         args.script, args.args, clock=args.clock, duration=args.duration, graph=args.graph,
-        log_level=args.log_level,
+        log_level=args.log_level, partners=args.partners,
     )

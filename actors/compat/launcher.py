@@ -26,16 +26,18 @@ import signal
 import sys
 import threading
 import traceback
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator, MutableSequence, Sequence
 from contextlib import contextmanager
 from pathlib import Path
 from types import FrameType
 from typing import Any
 
 from actors.compat.overlay import overlaid
+from actors.compat.partners import LINGER, Partner, parse_partner
 from actors.compat.rclpy.context import use_session
 from actors.compat.rclpy.executors import ExternalShutdownException
 from actors.compat.rclpy.utilities import get_default_context, try_shutdown
+from actors.compat.script_state import ScriptArgv
 from actors.compat.session import Session
 from actors.control import ControlEndpoint
 from actors.errors import ActorsError, GraphFileError, RosArgsError
@@ -54,22 +56,33 @@ def run_script(
     duration: float | None = None,
     graph: str | None = None,
     log_level: str | None = None,
+    partners: Sequence[str] = (),
 ) -> int:
     """Run ``script`` with ``argv`` as its arguments; return the process's exit code.
 
     ``clock``, ``duration`` and ``log_level`` default to the graph file's
     ``[runtime]`` settings when ``graph`` is given, else to the wall clock, no
-    end, and info.  Call it on the main thread (it handles SIGINT and SIGTERM).
+    end, and info.  ``partners`` are more scripts (``"server.py ARGS..."``) run
+    beside it in the same runtime (:mod:`actors.compat.partners`); one that
+    fails makes the exit code 1.  Call it on the main thread (it handles SIGINT
+    and SIGTERM).
     """
     path = Path(script)
-    if not path.is_file():
-        print(f"error: {script}: no such script", file=sys.stderr)
+    try:
+        scripts = [parse_partner(spec) for spec in partners]
+    except ValueError as exc:
+        print(f"error: --with: {exc}", file=sys.stderr)
         return 2
+    for each in (path, *(partner for partner, _ in scripts)):
+        if not each.is_file():
+            print(f"error: {each}: no such script", file=sys.stderr)
+            return 2
     if duration is not None and not duration > 0:
         print(f"error: --duration must be > 0 seconds, got {duration}", file=sys.stderr)
         return 2
     try:
-        parse(argv)
+        for arguments in (argv, *(arguments for _, arguments in scripts)):
+            parse(arguments)
         loaded = load_graph(graph) if graph else None
     except (RosArgsError, GraphFileError) as exc:
         print(f"error: {exc}", file=sys.stderr)
@@ -95,10 +108,22 @@ def run_script(
     except BaseException as exc:  # noqa: BLE001 - a graph node that fails to start
         print(f"[FATAL] {graph}: {_one_line(exc)}", file=sys.stderr)
         return 1
+    others = [Partner(session, partner, arguments, _print_script_traceback) for partner, arguments in scripts]
+    # With partners, sys.argv shows each script its own command line.
+    command_line: MutableSequence[str] = [str(path), *argv]
+    saved_argv = sys.argv
+    if others:
+        sys.argv = command_line = ScriptArgv(command_line)  # type: ignore[assignment]
     try:
         with use_session(session), overlaid(), stop.handling_signals(), session.timekeeping():
-            code = _run(path, argv, stop)
+            for partner in others:
+                partner.start()
+            try:
+                code = _run(path, command_line, stop)
+            finally:
+                _finish(others, linger=0 if stop.requested else LINGER)
     finally:
+        sys.argv = saved_argv
         get_default_context().finish()
         try_shutdown()
         session.close()
@@ -106,7 +131,16 @@ def run_script(
     if session.failure is not None:
         print(f"[FATAL] {_one_line(session.failure)}", file=sys.stderr)
         return 1
-    return code
+    return 1 if code == 0 and any(partner.failed for partner in others) else code
+
+
+def _finish(partners: Sequence[Partner], linger: float) -> None:
+    try:
+        for partner in partners:
+            partner.finish(linger)
+    except KeyboardInterrupt:  # Ctrl-C while they finish: stop them now
+        for partner in partners:
+            partner.finish(0.0, wait=False)
 
 
 class _Stop:
@@ -142,9 +176,9 @@ class _Stop:
             signal.signal(signal.SIGTERM, previous[1])
 
 
-def _run(path: Path, argv: Sequence[str], stop: _Stop) -> int:
+def _run(path: Path, command_line: MutableSequence[str], stop: _Stop) -> int:
     saved_argv, saved_path = sys.argv, sys.path[:]
-    sys.argv = [str(path), *argv]
+    sys.argv = command_line  # type: ignore[assignment]
     sys.path.insert(0, str(path.resolve().parent))
     try:
         runpy.run_path(str(path), run_name="__main__")

@@ -23,6 +23,7 @@ from actors.compat.rclpy.utilities import (
 )
 from actors.compat.rclpy.utilities import shutdown as _shutdown
 from actors.compat.rclpy.utilities import try_shutdown as _try_shutdown
+from actors.compat.script_state import script_state
 
 if TYPE_CHECKING:
     from actors.compat.rclpy.executors import Executor
@@ -79,11 +80,9 @@ def init(
     return InitContextManager(args, context, domain_id)
 
 
-_global_executor: list[Executor] = []
-
-
 def get_global_executor() -> Executor:
     """The SingleThreadedExecutor that ``rclpy.spin`` and friends use; replaced after shutdown."""
+    _global_executor = script_state().executors  # the process's, or a partner script's own
     if _global_executor and _global_executor[0].context is not get_default_context():
         _global_executor.clear()  # its context ended without a shutdown callback (an interrupt)
     if not _global_executor:

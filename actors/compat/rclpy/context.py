@@ -10,7 +10,6 @@ arguments (``--ros-args ...``) every node of the context starts from.
 from __future__ import annotations
 
 import logging
-import sys
 import threading
 import weakref
 from collections.abc import Callable, Iterator, Sequence
@@ -18,6 +17,7 @@ from contextlib import contextmanager
 from inspect import ismethod
 from typing import Any, Protocol
 
+from actors.compat.script_state import script_state
 from actors.compat.session import Session
 from actors.log import ROOT_LOGGER, set_logger_level
 from actors.rosargs import RosArgs, parse
@@ -80,7 +80,7 @@ class Context:
                 raise RuntimeError(f"Domain id ({domain_id}) should not be lower than zero.")
             if self._initialized:
                 raise RuntimeError("Context.init() must only be called once")
-            self.ros_args, _ = parse(list(args) if args is not None else sys.argv)
+            self.ros_args, _ = parse(list(args) if args is not None else script_state().argv)
             _apply_log_levels(self.ros_args.log_levels)
             session = current_session()
             if session is None:

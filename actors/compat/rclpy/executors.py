@@ -18,6 +18,7 @@ waitables, node by node) gets its turn before any is looked at again.
 
 from __future__ import annotations
 
+import contextvars
 import os
 import threading
 import warnings
@@ -384,8 +385,9 @@ class MultiThreadedExecutor(Executor):
             session = self._session
             with session.lock:
                 self._in_pool += 1
+            # In a copy of the spinning thread's context: the callback sees its script's rclpy state.
             with session.activity.starting_workers():
-                self._executor.submit(self._run, handler)
+                self._executor.submit(contextvars.copy_context().run, self._run, handler)
             self._futures.append(handler)
         for future in self._futures[:]:
             if future.done():

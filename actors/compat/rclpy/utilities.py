@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-import sys
 import threading
 from collections.abc import Sequence
 
 from actors.compat.rclpy.constants import S_TO_NS
 from actors.compat.rclpy.context import Context
+from actors.compat.script_state import script_state
 from actors.rosargs import remove_ros_args as _remove_ros_args
 
 __all__ = [
@@ -23,12 +23,12 @@ __all__ = [
 
 RMW_IMPLEMENTATION = "rmw_actors"
 
-_default: list[Context] = []
 _lock = threading.Lock()
 
 
 def get_default_context(*, shutting_down: bool = False) -> Context:
     """The default context (made on first use); ``shutting_down`` hands it over and forgets it."""
+    _default = script_state().contexts  # the process's, or a partner script's own (actors run --with)
     with _lock:
         if not _default:
             _default.append(Context())
@@ -52,6 +52,7 @@ def try_shutdown(*, context: Context | None = None) -> None:
     if context is not None:
         context.try_shutdown()
         return
+    _default = script_state().contexts
     with _lock:
         if not _default:
             return
@@ -64,7 +65,7 @@ def try_shutdown(*, context: Context | None = None) -> None:
 
 def remove_ros_args(args: Sequence[str] | None = None) -> list[str]:
     """``args`` (``sys.argv`` if None) without the ``--ros-args ... [--]`` sections."""
-    return _remove_ros_args(list(args) if args is not None else sys.argv)
+    return _remove_ros_args(list(args) if args is not None else script_state().argv)
 
 
 def timeout_sec_to_nsec(timeout_sec: float | None) -> int:
