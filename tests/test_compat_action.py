@@ -104,6 +104,20 @@ def client(rclpy_session: Any) -> tuple[Any, ActionClient]:
     return node, ActionClient(node, Fibonacci, "fibonacci")
 
 
+def send(node: Any, action: ActionClient, order: int) -> ClientGoalHandle:
+    """Wait for the server, send a goal of ``order`` and spin the client until it is answered."""
+    action.wait_for_server()
+    sent = action.send_goal_async(Fibonacci.Goal(order=order))
+    rclpy.spin_until_future_complete(node, sent)
+    return sent.result()
+
+
+def spun(node: Any, future: Any) -> Any:
+    """Spin the client's node until ``future`` is done; its result."""
+    rclpy.spin_until_future_complete(node, future)
+    return future.result()
+
+
 def test_a_goal_runs_to_its_result_with_feedback_messages_while_spun(rclpy_session, serving, client):
     server = serving(callback_group=ReentrantCallbackGroup())
     node, action = client
@@ -112,13 +126,11 @@ def test_a_goal_runs_to_its_result_with_feedback_messages_while_spun(rclpy_sessi
     sent = action.send_goal_async(Fibonacci.Goal(order=4), feedback_callback=lambda m: heard.append((now(rclpy_session), m)))
     rclpy_session.sleep(0.5)
     assert not sent.done()  # the answer waits for the client's node to be spun, as in rclpy
-    rclpy.spin_until_future_complete(node, sent)
-    goal = sent.result()
+    goal = spun(node, sent)
     assert isinstance(goal, ClientGoalHandle) and goal.accepted
     assert goal.status == GoalStatus.STATUS_EXECUTING  # the status topic said so meanwhile
-    result = goal.get_result_async()
-    rclpy.spin_until_future_complete(node, result)
-    assert (result.result().status, result.result().result.sequence) == (SUCCEEDED, [0, 1, 1, 2, 3])
+    result = spun(node, goal.get_result_async())
+    assert (result.status, result.result.sequence) == (SUCCEEDED, [0, 1, 1, 2, 3])
     assert goal.status == SUCCEEDED
     # rclpy's feedback callback gets the whole FeedbackMessage: the goal's id and the feedback.
     assert all(type(m) is Fibonacci.Impl.FeedbackMessage and m.goal_id == goal.goal_id for _, m in heard)
@@ -168,40 +180,29 @@ def test_a_single_threaded_executor_runs_one_blocking_goal_at_a_time(rclpy_sessi
 def test_a_goal_is_rejected_by_the_goal_callback(rclpy_session, serving, client):
     serving(goal_callback=lambda goal: GoalResponse.REJECT if goal.order > 10 else GoalResponse.ACCEPT)
     node, action = client
-    action.wait_for_server()
-    sent = action.send_goal_async(Fibonacci.Goal(order=11))
-    rclpy.spin_until_future_complete(node, sent)
-    goal = sent.result()
+    goal = send(node, action, 11)
     assert not goal.accepted and goal.status == GoalStatus.STATUS_UNKNOWN
-    result = goal.get_result_async()  # as a server answers for a goal it does not know
-    rclpy.spin_until_future_complete(node, result)
-    assert result.result().status == GoalStatus.STATUS_UNKNOWN
+    result = spun(node, goal.get_result_async())  # as a server answers for a goal it does not know
+    assert result.status == GoalStatus.STATUS_UNKNOWN
 
 
 def test_a_goal_callback_that_answers_no_goal_response_rejects_with_a_warning(rclpy_session, serving, client, caplog):
     serving(goal_callback=lambda goal: True)
     node, action = client
-    action.wait_for_server()
-    sent = action.send_goal_async(Fibonacci.Goal(order=1))
-    rclpy.spin_until_future_complete(node, sent)
-    assert not sent.result().accepted
+    goal = send(node, action, 1)
+    assert not goal.accepted
     assert "Goal request callback did not return a GoalResponse type. Rejecting goal." in caplog.text
 
 
 def test_cancel_an_executing_goal(rclpy_session, serving, client):
     server = serving(callback_group=ReentrantCallbackGroup())
     node, action = client
-    action.wait_for_server()
-    sent = action.send_goal_async(Fibonacci.Goal(order=9))
-    rclpy.spin_until_future_complete(node, sent)
-    goal = sent.result()
+    goal = send(node, action, 9)
     rclpy_session.sleep(1.5)
-    cancel = goal.cancel_goal_async()
-    rclpy.spin_until_future_complete(node, cancel)
-    assert [info.goal_id for info in cancel.result().goals_canceling] == [goal.goal_id]
-    result = goal.get_result_async()
-    rclpy.spin_until_future_complete(node, result)
-    assert (result.result().status, result.result().result.sequence) == (CANCELED, [0, 1, 1, 2])
+    cancel = spun(node, goal.cancel_goal_async())
+    assert [info.goal_id for info in cancel.goals_canceling] == [goal.goal_id]
+    result = spun(node, goal.get_result_async())
+    assert (result.status, result.result.sequence) == (CANCELED, [0, 1, 1, 2])
     assert now(rclpy_session) == pytest.approx(2.0)  # the execute callback saw it at its next step
     assert [what for what, _ in server.calls] == ["goal", "cancel"]
 
@@ -209,15 +210,11 @@ def test_cancel_an_executing_goal(rclpy_session, serving, client):
 def test_the_default_cancel_callback_refuses(rclpy_session, serving, client):
     serving(cancel_callback=None)
     node, action = client
-    action.wait_for_server()
-    sent = action.send_goal_async(Fibonacci.Goal(order=2))
-    rclpy.spin_until_future_complete(node, sent)
-    cancel = sent.result().cancel_goal_async()
-    rclpy.spin_until_future_complete(node, cancel)
-    assert cancel.result().goals_canceling == []
-    result = sent.result().get_result_async()
-    rclpy.spin_until_future_complete(node, result)
-    assert result.result().status == SUCCEEDED
+    goal = send(node, action, 2)
+    cancel = spun(node, goal.cancel_goal_async())
+    assert cancel.goals_canceling == []
+    result = spun(node, goal.get_result_async())
+    assert result.status == SUCCEEDED
 
 
 def test_an_execute_callback_that_raises_aborts_the_goal_and_the_server_goes_on(rclpy_session, serving, client, caplog):
@@ -228,14 +225,7 @@ def test_an_execute_callback_that_raises_aborts_the_goal_and_the_server_goes_on(
 
     serving(execute=execute)
     node, action = client
-    action.wait_for_server()
-    outcomes = []
-    for order in (13, 1):
-        sent = action.send_goal_async(Fibonacci.Goal(order=order))
-        rclpy.spin_until_future_complete(node, sent)
-        result = sent.result().get_result_async()
-        rclpy.spin_until_future_complete(node, result)
-        outcomes.append(result.result().status)
+    outcomes = [spun(node, send(node, action, order).get_result_async()).status for order in (13, 1)]
     assert outcomes == [ABORTED, SUCCEEDED]
     assert "ValueError('unlucky')" in caplog.text
 
@@ -255,16 +245,13 @@ def test_deferred_execution_and_the_goal_handle_states(rclpy_session, serving, c
 
     serving(execute=execute, handle_accepted_callback=accepted)
     node, action = client
-    action.wait_for_server()
-    sent = action.send_goal_async(Fibonacci.Goal(order=1))
-    rclpy.spin_until_future_complete(node, sent)
+    sent = send(node, action, 1)
     rclpy_session.sleep(1.0)
     (goal,) = handles
-    assert goal.request.order == 1 and goal.goal_id == sent.result().goal_id and goal == handles[0]
+    assert goal.request.order == 1 and goal.goal_id == sent.goal_id and goal == handles[0]
     goal.execute()  # from the script's thread, when it likes
-    result = sent.result().get_result_async()
-    rclpy.spin_until_future_complete(node, result)
-    assert (result.result().status, result.result().result.sequence) == (ABORTED, [7])
+    result = spun(node, sent.get_result_async())
+    assert (result.status, result.result.sequence) == (ABORTED, [7])
     assert seen == [(GoalStatus.STATUS_ACCEPTED, True, False), (GoalStatus.STATUS_EXECUTING, True, False)]
     assert (goal.status, goal.is_active) == (ABORTED, False)
     with pytest.raises(RCLError, match="cannot succeed from ABORTED"):
@@ -344,14 +331,11 @@ def test_wait_for_server_returns_when_the_context_shuts_down(rclpy_session, clie
 def test_a_destroyed_server_aborts_its_goals_and_a_destroyed_client_stops(rclpy_session, serving, client):
     server = serving(callback_group=ReentrantCallbackGroup())
     node, action = client
-    action.wait_for_server()
-    sent = action.send_goal_async(Fibonacci.Goal(order=9))
-    rclpy.spin_until_future_complete(node, sent)
+    goal = send(node, action, 9)
     rclpy_session.sleep(1.0)
     server.server.destroy()
-    result = sent.result().get_result_async()
-    rclpy.spin_until_future_complete(node, result)
-    assert result.result().status == ABORTED
+    result = spun(node, goal.get_result_async())
+    assert result.status == ABORTED
     assert not action.server_is_ready() and server.server not in server.node.waitables
     action.destroy()
     assert action not in node.waitables

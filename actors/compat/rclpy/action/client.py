@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import asyncio
 import uuid
-from collections import deque
 from collections.abc import Awaitable, Callable
 from functools import partial
 from typing import TYPE_CHECKING, Any
@@ -25,7 +24,8 @@ from typing import TYPE_CHECKING, Any
 from actors.actions import ActionClient as NativeClient
 from actors.actions import ClientGoalHandle as NativeGoal
 from actors.compat.activity import Waiter
-from actors.compat.dispatch import Handler, ScriptNode, WorkSource
+from actors.compat.dispatch import ScriptNode
+from actors.compat.rclpy.action.base import ActionWork, GoalHandle
 from actors.compat.rclpy.task import Future, await_or_execute
 from actors.node import Node as NativeNode
 from interfaces.action_msgs.msg import GoalStatus
@@ -38,28 +38,15 @@ if TYPE_CHECKING:
 __all__ = ["ActionClient", "ClientGoalHandle"]
 
 
-class ClientGoalHandle:
+class ClientGoalHandle(GoalHandle):
     """A goal as its client sees it (what ``send_goal_async``'s Future gives)."""
 
     def __init__(self, action_client: ActionClient, native: NativeGoal) -> None:
         self._action_client = action_client
         self._native = native
 
-    def __eq__(self, other: object) -> bool:
-        return isinstance(other, ClientGoalHandle) and self.goal_id == other.goal_id
-
-    def __ne__(self, other: object) -> bool:
-        return not self == other
-
-    __hash__ = None  # type: ignore[assignment]  # as rclpy's: equal by goal id, not hashable
-
     def __repr__(self) -> str:
         return f"ClientGoalHandle <id={self.goal_id.uuid}, accepted={self.accepted}, status={self.status}>"
-
-    @property
-    def goal_id(self) -> UUID:
-        """The goal's UUID."""
-        return self._native.goal_id
 
     @property
     def stamp(self) -> Time:
@@ -93,7 +80,7 @@ class ClientGoalHandle:
         return self._action_client._get_result_async(self)
 
 
-class ActionClient(WorkSource):
+class ActionClient(ActionWork):
     """A client of ``action_name`` on ``node`` (rclpy's signature; the QoS profiles are accepted and
     not used: an action's services and topics have ROS's default QoS here)."""
 
@@ -110,19 +97,14 @@ class ActionClient(WorkSource):
         feedback_sub_qos_profile: Any = None,
         status_sub_qos_profile: Any = None,
     ) -> None:
-        if callback_group is None:
-            callback_group = node.default_callback_group
-        self.callback_group = callback_group
-        self._node = node
-        self._session = node._rclpy.session
+        super().__init__(node, callback_group)
         self._action_type = action_type
         self._action_name = action_name
-        self._work: deque[Handler] = deque()
         self._calls: set[asyncio.Task[Any]] = set()
         # The native client's status subscription and feedback calls run at once on the runtime's thread
         # (ScriptActor.schedule): they only keep the status or call the feedback catcher below.
         self._native: NativeClient = self._session.call(NativeNode.create_action_client, node, action_type, action_name)
-        callback_group.add_entity(self)
+        self.callback_group.add_entity(self)
         node.add_waitable(self)
 
     # -- requests ---------------------------------------------------------------------------
@@ -197,19 +179,6 @@ class ActionClient(WorkSource):
     def _catch_feedback(self, callback: Callable[[Any], Any], goal_id: UUID, feedback: Any) -> None:
         message = self._action_type.Impl.FeedbackMessage(goal_id=goal_id, feedback=feedback)
         self._queue(partial(await_or_execute, callback, message))
-
-    def _queue(self, handler: Handler) -> None:
-        with self._session.lock:
-            self._work.append(handler)
-            self._node._rclpy.notify()
-
-    # -- the waitable ---------------------------------------------------------------------------
-
-    def _ready(self) -> bool:
-        return bool(self._work)
-
-    def _take(self) -> Handler | None:
-        return self._work.popleft() if self._work else None
 
     # -- the server -----------------------------------------------------------------------------
 

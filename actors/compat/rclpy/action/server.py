@@ -21,22 +21,19 @@ goal's, which only the runtime's thread changes.
 from __future__ import annotations
 
 import asyncio
-from collections import deque
 from collections.abc import Callable
 from functools import partial
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from actors.actions import ActionServer as NativeServer
 from actors.actions import CancelResponse, GoalEvent, GoalResponse
 from actors.actions import ServerGoalHandle as NativeGoal
-from actors.compat.dispatch import Handler, ScriptNode, WorkSource
+from actors.compat.dispatch import ScriptNode
+from actors.compat.rclpy.action.base import ActionWork, GoalHandle
 from actors.compat.rclpy.task import Task, await_or_execute
 from actors.errors import ActionError
 from actors.node import Node as NativeNode
 from interfaces.action_msgs.msg import GoalStatus
-
-if TYPE_CHECKING:
-    from interfaces.unique_identifier_msgs.msg import UUID
 
 __all__ = [
     "ActionServer",
@@ -55,7 +52,7 @@ class RCLError(RuntimeError):
     """A goal was asked for a transition its state does not allow (rclpy's ``_rclpy.RCLError``)."""
 
 
-class ServerGoalHandle:
+class ServerGoalHandle(GoalHandle):
     """One accepted goal, as the script's callbacks get it: its request, state and transitions."""
 
     def __init__(self, server: ActionServer, native: NativeGoal) -> None:
@@ -63,23 +60,10 @@ class ServerGoalHandle:
         self._native = native
         self._session = server._session
 
-    def __eq__(self, other: object) -> bool:
-        return isinstance(other, ServerGoalHandle) and self.goal_id == other.goal_id
-
-    def __ne__(self, other: object) -> bool:
-        return not self == other
-
-    __hash__ = None  # type: ignore[assignment]  # as rclpy's: equal by goal id, not hashable
-
     @property
     def request(self) -> Any:
         """The goal the client sent (the action's Goal)."""
         return self._native.request
-
-    @property
-    def goal_id(self) -> UUID:
-        """The goal's UUID."""
-        return self._native.goal_id
 
     @property
     def is_active(self) -> bool:
@@ -154,7 +138,7 @@ def default_cancel_callback(cancel_request: Any) -> CancelResponse:
     return CancelResponse.REJECT
 
 
-class ActionServer(WorkSource):
+class ActionServer(ActionWork):
     """Serves ``action_name`` on ``node`` (rclpy's signature; the QoS profiles are accepted and not used:
     an action's services and topics have ROS's default QoS here).
 
@@ -185,28 +169,23 @@ class ActionServer(WorkSource):
         status_pub_qos_profile: Any = None,
         result_timeout: int = 10,
     ) -> None:
-        if callback_group is None:
-            callback_group = node.default_callback_group
-        self.callback_group = callback_group
-        self._node = node
-        self._session = node._rclpy.session
+        super().__init__(node, callback_group)
         self._action_type = action_type
         self.register_handle_accepted_callback(handle_accepted_callback)
         self.register_goal_callback(goal_callback)
         self.register_cancel_callback(cancel_callback)
         self.register_execute_callback(execute_callback)
-        self._work: deque[Handler] = deque()
         self._handles: dict[bytes, ServerGoalHandle] = {}
         self._logger = node.get_logger().get_child("action_server")
         self._native: NativeServer
         self._session.call(self._build, action_name, result_timeout)
-        callback_group.add_entity(self)
+        self.callback_group.add_entity(self)
         node.add_waitable(self)
 
     def _build(self, action_name: str, result_timeout: float) -> None:
         # On the runtime's thread: the native server, its entities driven before a request can come
         # (a goal parked before the server existed arrives as soon as it does).
-        native = self._native = NativeNode.create_action_server(
+        self._native = NativeNode.create_action_server(
             self._node, self._action_type, action_name, self._executing_default,
             goal=self._catch_goal, cancel=self._catch_cancel, accepted=self._catch_accepted,
             result_timeout=result_timeout,
@@ -219,19 +198,14 @@ class ActionServer(WorkSource):
 
     # -- the catchers: on the runtime's thread, they queue the script's callbacks here -------
 
-    def _queue(self, handler: Handler) -> None:
-        with self._session.lock:
-            self._work.append(handler)
-            self._node._rclpy.notify()
-
     async def _catch_goal(self, goal: Any) -> GoalResponse:
         answer: asyncio.Future[GoalResponse] = asyncio.get_running_loop().create_future()
-        self._queue(partial(self._decide, goal, answer))
+        self._queue(partial(self._ask, self._goal_callback, goal, answer))
         return await answer
 
     async def _catch_cancel(self, native: NativeGoal) -> CancelResponse:
         answer: asyncio.Future[CancelResponse] = asyncio.get_running_loop().create_future()
-        self._queue(partial(self._consider_cancel, self._handle(native), answer))
+        self._queue(partial(self._ask, self._cancel_callback, self._handle(native), answer))
         return await answer
 
     def _catch_accepted(self, native: NativeGoal) -> None:
@@ -276,23 +250,16 @@ class ActionServer(WorkSource):
 
     # -- on the executor's threads ------------------------------------------------------------
 
-    async def _decide(self, goal: Any, answer: asyncio.Future[GoalResponse]) -> None:
+    async def _ask(self, callback: Callable[[Any], Any], request: Any, answer: asyncio.Future[Any]) -> None:
+        # The goal or cancel callback's answer goes to the native server, which waits for it.
         try:
-            response = await await_or_execute(self._goal_callback, goal)
+            response = await await_or_execute(callback, request)
         except Exception as exc:
             self._settle(answer, None, exc)
             raise
-        if not isinstance(response, GoalResponse):
+        if callback is self._goal_callback and not isinstance(response, GoalResponse):
             self._logger.warning("Goal request callback did not return a GoalResponse type. Rejecting goal.")
             response = GoalResponse.REJECT
-        self._settle(answer, response, None)
-
-    async def _consider_cancel(self, handle: ServerGoalHandle, answer: asyncio.Future[CancelResponse]) -> None:
-        try:
-            response = await await_or_execute(self._cancel_callback, handle)
-        except Exception as exc:
-            self._settle(answer, None, exc)
-            raise
         self._settle(answer, response, None)
 
     async def _accepted(self, handle: ServerGoalHandle) -> None:
@@ -301,14 +268,6 @@ class ActionServer(WorkSource):
     def _settle(self, answer: asyncio.Future[Any], result: Any, error: BaseException | None) -> None:
         if self._session.running:
             self._session.loop.call_soon_threadsafe(_settle, answer, result, error)
-
-    # -- the waitable ---------------------------------------------------------------------------
-
-    def _ready(self) -> bool:
-        return bool(self._work)
-
-    def _take(self) -> Handler | None:
-        return self._work.popleft() if self._work else None
 
     # -- rclpy's registration methods ------------------------------------------------------------
 
