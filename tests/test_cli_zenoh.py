@@ -79,6 +79,7 @@ async def test_node_list_sees_both_processes_and_a_killed_ones_nodes_vanish_with
 
                 watch = TokenWatch(port, "minimal_publisher")
                 try:
+                    await watch.appeared.wait()  # the watch sees the token first, or it could never see it go
                     talker.proc.send_signal(signal.SIGKILL)
                     with anyio.fail_after(5):
                         await watch.gone.wait()
