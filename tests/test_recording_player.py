@@ -281,6 +281,7 @@ def test_record_once_then_assert_forever(bag, tmp_path):
 
 
 def test_the_bag_expectation_fixture(pytester):
+    pytester.makeini("[pytest]\nasyncio_default_fixture_loop_scope = function\n")  # pytest-asyncio warns when unset
     pytester.makepyfile(
         """
         def test_it(bag_expectation, tmp_path):
