@@ -56,6 +56,7 @@ EVICT_AFTER = 0.5
 _SELECT_LIMIT = 1024  # FD_SETSIZE: select() refuses descriptors at or above it
 _OUT_OF_DESCRIPTORS = (errno.EMFILE, errno.ENFILE)
 _REAP_PERIOD = 0.5  # s of runtime clock between looks at the open connections
+_ACCEPT_BATCH = 64  # connections taken per wake-up of the listener
 
 
 class ConnectionLimits(msgspec.Struct, frozen=True, kw_only=True):
@@ -270,6 +271,7 @@ class ConnectionPool:
         self._log = log
         self.connections: dict[Connection, None] = {}
         self._numbers = 0
+        self._starting = 0  # accepted, their tasks not started yet: they count against the limit
         self._peak = 0
         self._refused = 0
         self._evicted = 0
@@ -304,37 +306,44 @@ class ConnectionPool:
             async with anyio.create_task_group() as tg:
                 while True:
                     await anyio.wait_readable(sock)
-                    self._accept(sock, tg)
+                    # A burst queues hundreds of clients: take a batch per wake-up, so that the
+                    # one behind them (a command line) waits for fewer loop iterations.
+                    for _ in range(_ACCEPT_BATCH):
+                        if not self._accept(sock, tg):
+                            break
         finally:
             if self._reserve is not None:
                 os.close(self._reserve)
                 self._reserve = None
 
-    def _accept(self, sock: socket.socket, tg: anyio.abc.TaskGroup) -> None:
+    def _accept(self, sock: socket.socket, tg: anyio.abc.TaskGroup) -> bool:
+        """Take one pending connection; False when there was none (or accepting failed)."""
         try:
             conn, _ = sock.accept()
         except (BlockingIOError, InterruptedError, ConnectionAbortedError):
-            return  # gone before we took it
+            return False  # none pending, or gone before we took it
         except OSError as exc:
             if exc.errno in _OUT_OF_DESCRIPTORS:
                 self._accept_without_descriptors(sock, exc)
             else:
                 self._log(f"control endpoint: accept failed: {exc.strerror or exc}")
-            return
+            return False
         if conn.fileno() >= _SELECT_LIMIT and _uses_select():
             self._refuse(conn, f"the graph has too many open files ({conn.fileno()}) to watch one more")
-            return
-        if len(self.connections) >= self.limits.connections and not self._evict_one():
+            return True
+        if len(self.connections) + self._starting >= self.limits.connections and not self._evict_one():
             self._refuse(
                 conn, f"the graph is busy: {self.limits.connections} connections are open; try again"
             )
-            return
+            return True
         self._numbers += 1
+        self._starting += 1
         conn.setblocking(False)
         tg.start_soon(self._run_connection, conn, self._numbers)
         if not self._reaping:
             self._reaping = True
             tg.start_soon(self._reap)
+        return True
 
     def _accept_without_descriptors(self, sock: socket.socket, exc: OSError) -> None:
         """Refuse one pending connection with the reserve descriptor, so that the listener settles."""
@@ -382,6 +391,7 @@ class ConnectionPool:
 
     async def _run_connection(self, conn: socket.socket, number: int) -> None:
         connection = Connection(self, SocketStream(conn), number)
+        self._starting -= 1
         self.connections[connection] = None
         self._peak = max(self._peak, len(self.connections))
         try:

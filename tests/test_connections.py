@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
+import socket
 import struct
 import zlib
 
@@ -159,3 +161,28 @@ async def test_a_descriptor_select_cannot_watch_is_refused_not_registered(name, 
         assert refused.error.startswith("the graph has too many open files")
         assert pool_of(rt).stats().refused == 1
         await client.stream.aclose()
+
+
+
+async def test_a_burst_queued_before_the_graph_looks_is_held_to_the_limit(name):
+    # Six clients connect before the listener wakes: it takes them in one batch, and those whose
+    # tasks have not started yet must count against the limit as much as the open ones.
+    limits = ConnectionLimits(connections=3)
+    async with Runtime(name=name, attach=[ControlEndpoint(limits)]) as rt:
+        (endpoint,) = rt.attachments
+        raw = []
+        for _ in range(6):  # no await between them: the pool sees all six at once
+            sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+            sock.connect(str(endpoint.server.path))
+            raw.append(sock)
+        clients = [Client(await anyio.abc.SocketStream.from_socket(sock)) for sock in raw]
+        answers = []
+        for client in clients:
+            with contextlib.suppress(anyio.BrokenResourceError, anyio.ClosedResourceError):
+                await client.stream.send(frame(GetGraph()))  # a refused one may be closed already
+            answers.append("served" if (await client.reply()).ok else "refused")
+        stats = pool_of(rt).stats()
+        assert sorted(answers) == ["refused"] * 3 + ["served"] * 3
+        assert (stats.peak, stats.refused) == (3, 3)
+        for client in clients:
+            await client.stream.aclose()
