@@ -484,11 +484,18 @@ class _JumpingSelector(selectors.DefaultSelector):
         self._vloop = loop
 
     def select(self, timeout: float | None = None) -> list[tuple[selectors.SelectorKey, int]]:
-        events = super().select(0)
-        if events or timeout == 0:
-            return events
+        if timeout == 0:
+            return super().select(0)
         loop = self._vloop
-        if loop.threads_busy():
+        # Ask the threads before polling: a thread hands its work over (call_soon_threadsafe
+        # writes the self-pipe) before it goes idle, so once none is busy, the poll below sees
+        # all they handed over.  Polled first, a hand-off between the poll and the question
+        # would be missed and time would jump past the work it brings.
+        busy = loop.threads_busy()
+        events = super().select(0)
+        if events:
+            return events
+        if busy:
             # Real work is running in a thread: wait for it in real time.
             return super().select(timeout)
         if timeout is not None:

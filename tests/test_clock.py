@@ -68,6 +68,31 @@ async def test_no_jump_while_anyio_thread_work_runs():
     far_timer.cancel()
 
 
+def test_work_a_thread_hands_over_as_it_goes_idle_runs_before_any_jump():
+    # A thread hands work to the loop (call_soon_threadsafe) and then goes idle; that may happen
+    # at the very moment the loop asks whether any thread is busy, just before it would jump.
+    class HandOverWhenAsked(VirtualTimeLoop):
+        handed = False
+
+        def threads_busy(self) -> bool:
+            if not self.handed:
+                self.handed = True
+                self.call_soon_threadsafe(lambda: ran_at.append(self.time()))
+            return False
+
+    ran_at: list[float] = []
+
+    async def main() -> None:
+        far = asyncio.ensure_future(asyncio.sleep(100))
+        while not ran_at:
+            await asyncio.sleep(0.5)
+        far.cancel()
+
+    with asyncio.Runner(loop_factory=HandOverWhenAsked) as runner:
+        runner.run(main())
+    assert ran_at == [0.0], "virtual time jumped past work handed over as its thread went idle"
+
+
 def test_waiting_on_nothing_is_a_clear_error():
     async def main() -> None:
         await asyncio.Event().wait()
