@@ -50,8 +50,8 @@ def test_every_shipped_message_has_goldens_or_no_rclpy_package():
     covered = {entry["type"] for entry in ENTRIES}
     lacking = set(GOLDENS["no_rclpy_type"])
     assert covered | lacking == set(SHIPPED)
-    # Only the packages that have no ROS wheel may lack rclpy goldens.
-    assert {name.split("/")[0] for name in lacking} <= {"example_interfaces", "tutorial_interfaces"}
+    # Only the packages that have no ROS wheel may lack rclpy goldens (tf2_msgs: see test_tf_message_*).
+    assert {name.split("/")[0] for name in lacking} <= {"example_interfaces", "tutorial_interfaces", "tf2_msgs"}
 
 
 def test_goldens_hold_more_than_defaults():
@@ -75,6 +75,55 @@ def test_encode_matches_live_rclpy(name, data):
     assert same_wire(msg, theirs) is None
     assert cdr.decode(theirs, type(msg)) == msg
     assert serialization.deserialize_message(cdr.encode(msg), type(to_rclpy(msg))) == to_rclpy(msg)
+
+
+# tf2_msgs has no wheel to make rclpy goldens with, so rosbags (a second, independent implementation of
+# ROS 2's CDR) wrote these bytes: /tf's message with two transforms, strings of odd lengths between doubles.
+TF_MESSAGE_CDR = (
+    "00010000 02000000 0c000000 0065cd1d 05000000 6f646f6d00 000000 0f000000 626173655f666f6f747072696e7400"
+    "0000000000 000000000000f83f 000000000000d0bf 0000000000000000 0000000000000000 0000000000000000"
+    "333333333333e33f 9a9999999999e93f 00000000 00000000 06000000 776f726c6400 0000 05000000 6f646f6d00 000000"
+    "0000000000000000 0000000000000000 0000000000000000 0000000000000000 0000000000000000"
+    "0000000000000000 000000000000f03f"
+)
+
+
+def _tf_message():
+    from interfaces.builtin_interfaces.msg import Time
+    from interfaces.geometry_msgs.msg import Quaternion, Transform, TransformStamped
+    from interfaces.tf2_msgs.msg import TFMessage
+
+    moved = Transform(translation=Vector3(x=1.5, y=-0.25), rotation=Quaternion(z=0.6, w=0.8))
+    return TFMessage(
+        transforms=[
+            TransformStamped(
+                header=Header(stamp=Time(sec=12, nanosec=500_000_000), frame_id="odom"),
+                child_frame_id="base_footprint",
+                transform=moved,
+            ),
+            TransformStamped(header=Header(frame_id="world"), child_frame_id="odom"),
+        ]
+    )
+
+
+def test_tf_message_matches_its_golden():
+    golden = bytes.fromhex(TF_MESSAGE_CDR)
+    assert cdr.encode(_tf_message()) == golden
+    assert codec.decode_cdr(golden, "tf2_msgs/msg/TFMessage") == _tf_message()
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data())
+def test_tf_message_matches_rosbags(data):
+    typesys = pytest.importorskip("rosbags.typesys", reason="the second implementation is rosbags (test extra)")
+    store = typesys.get_typestore(typesys.Stores.ROS2_KILTED)
+    name = "tf2_msgs/msg/TFMessage"
+    msg = message(codec.get_type(name), DrawPick(data))
+    ours = codec.encode_cdr(msg)
+    theirs = store.deserialize_cdr(ours, name)
+    assert [t.child_frame_id for t in theirs.transforms] == [t.child_frame_id for t in msg.transforms]
+    assert bytes(store.serialize_cdr(theirs, name)) == ours
+    assert store.hash_rihs01(name) == codec.type_hash(name)
 
 
 # --------------------------------------------------------------------------- round trips and layout
