@@ -9,6 +9,13 @@ Topics (relative, so a namespace gives ``/robot1/cmd_vel`` and so on):
   publisher) and the robot keeps its last valid command;
 - publishes ``odom`` (nav_msgs/Odometry, 20 Hz): frame ``odom`` (the start
   pose, as on a real robot), child ``base_footprint``, pose and body twist;
+- publishes ``/tf`` (tf2_msgs/TFMessage, with each ``odom``, only while someone
+  subscribes): ``odom`` -> ``base_footprint``, the same pose and stamp, as
+  TurtleBot3's Gazebo simulation does;
+- publishes ``/tf_static`` (tf2_msgs/TFMessage, transient-local depth 1, once):
+  ``world`` -> ``odom`` (the start pose), ``base_footprint`` -> ``base_link``
+  -> ``base_scan``; frames are prefixed with the robot's namespace
+  (``robot1/odom``; see :mod:`world.frames`);
 - publishes ``scan`` (sensor_msgs/LaserScan, 10 Hz): 360 beams over 0..2π from
   the heading, counter-clockwise; +inf where nothing is in range, -inf where
   something is closer than ``range_min`` (REP 117);
@@ -30,12 +37,14 @@ import math
 
 from actors import DurabilityPolicy, Node, QoSProfile
 from actors.errors import MessageRefused, WorldError
-from interfaces.geometry_msgs.msg import PoseStamped, Quaternion, Twist
+from interfaces.geometry_msgs.msg import PoseStamped, Quaternion, Transform, TransformStamped, Twist, Vector3
 from interfaces.nav_msgs.msg import Odometry
 from interfaces.rcl_interfaces.msg import ParameterDescriptor
 from interfaces.sensor_msgs.msg import LaserScan
 from interfaces.std_msgs.msg import Bool, Header
+from interfaces.tf2_msgs.msg import TFMessage
 
+from . import frames
 from .noise import Noise
 from .sim import world_of
 
@@ -83,10 +92,13 @@ class TurtleBot(Node):
         # One message of each kind, refilled and published again each tick: publish() takes a
         # snapshot, so reusing them is safe, and building a fresh Odometry tree each time
         # (nested structs, two 36-float covariances) cost as much as the physics step.
-        self._odom = Odometry(header=Header(frame_id="odom"), child_frame_id="base_footprint")
-        self._ground = PoseStamped(header=Header(frame_id="world"))
+        prefix = frames.frame_prefix(self.get_namespace())
+        odom, base = prefix + frames.ODOM, prefix + frames.BASE_FOOTPRINT
+        self._odom = Odometry(header=Header(frame_id=odom), child_frame_id=base)
+        self._tf = TFMessage(transforms=[TransformStamped(header=Header(frame_id=odom), child_frame_id=base)])
+        self._ground = PoseStamped(header=Header(frame_id=frames.WORLD))
         self._scan = LaserScan(
-            header=Header(frame_id="base_scan"),
+            header=Header(frame_id=prefix + frames.BASE_SCAN),
             angle_min=0.0,
             angle_max=2 * math.pi * (lidar.beams - 1) / lidar.beams,
             angle_increment=2 * math.pi / lidar.beams,
@@ -97,6 +109,12 @@ class TurtleBot(Node):
         self.odom_pub = self.create_publisher(Odometry, "odom", 10)
         self.scan_pub = self.create_publisher(LaserScan, "scan", 10)
         self.pose_pub = self.create_publisher(PoseStamped, "sim/pose", 10)
+        # tf2's broadcasters' topics and QoS: /tf keeps 100, /tf_static is latched.
+        self.tf_pub = self.create_publisher(TFMessage, "/tf", 100)
+        self.tf_static_pub = self.create_publisher(
+            TFMessage, "/tf_static", QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        )
+        self.tf_static_pub.publish(self._static_transforms(prefix))
         self.contact_pub = self.create_publisher(
             Bool, "sim/contact", QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
         )
@@ -133,6 +151,12 @@ class TurtleBot(Node):
         pose.orientation = yaw_quaternion(math.remainder(theta - theta0, math.tau))
         msg.twist.twist.linear.x, msg.twist.twist.angular.z = v, w
         self.odom_pub.publish(msg)
+        if self.tf_pub.get_subscription_count():  # nobody listens: no transform to fill
+            tf = self._tf.transforms[0]
+            tf.header.stamp = stamp
+            tf.transform.translation.x, tf.transform.translation.y = pose.position.x, pose.position.y
+            tf.transform.rotation = pose.orientation
+            self.tf_pub.publish(self._tf)
 
         truth = self.robot.pose
         ground = self._ground
@@ -145,6 +169,26 @@ class TurtleBot(Node):
         if touching != self._touching:
             self._touching = touching
             self.contact_pub.publish(Bool(data=touching))
+
+    def _static_transforms(self, prefix: str) -> TFMessage:
+        """The robot's fixed frames: world -> odom at the start pose, and the body's frames above the floor."""
+        stamp = self.get_clock().now().to_msg()
+        x0, y0, theta0 = self._start
+
+        def fixed(parent: str, child: str, x: float = 0.0, y: float = 0.0, z: float = 0.0, yaw: float = 0.0):
+            return TransformStamped(
+                header=Header(stamp=stamp, frame_id=parent),
+                child_frame_id=child,
+                transform=Transform(translation=Vector3(x=x, y=y, z=z), rotation=yaw_quaternion(yaw)),
+            )
+
+        return TFMessage(
+            transforms=[
+                fixed(frames.WORLD, prefix + frames.ODOM, x0, y0, yaw=theta0),
+                fixed(prefix + frames.BASE_FOOTPRINT, prefix + frames.BASE_LINK, z=frames.BASE_LINK_Z),
+                fixed(prefix + frames.BASE_LINK, prefix + frames.BASE_SCAN, z=frames.SCAN_Z),
+            ]
+        )
 
     def publish_scan(self) -> None:
         """Publish the lidar scan."""
