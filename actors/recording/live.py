@@ -11,13 +11,20 @@ graph nothing and none holds up a publisher.  Log times, and the time the
 server broadcasts ten times per second of graph time, are the runtime clock's
 (virtual time included).  Every service is callable from Foxglove (CDR
 requests and responses).
+
+Beside the topics, the view serves 3D scenes drawn by whoever knows them: a
+node that finds a :class:`SceneHost` among its runtime's attachments offers
+it ``add_scene(topic, draw)`` (the TurtleBot world draws its arena, robots
+and scans on ``/scene``), and the view asks ``draw(now_ns)`` for a
+``foxglove.SceneUpdate`` at each time broadcast while a client subscribes.
 """
 
 from __future__ import annotations
 
 import asyncio
 import concurrent.futures
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
 import anyio
 import anyio.abc
@@ -32,7 +39,7 @@ from actors.topics import type_name
 if TYPE_CHECKING:
     from actors.runtime import Runtime
 
-__all__ = ["FoxgloveView", "VIEW_NODE", "DEFAULT_PORT", "CALL_TIMEOUT"]
+__all__ = ["FoxgloveView", "SceneHost", "Draw", "VIEW_NODE", "DEFAULT_PORT", "CALL_TIMEOUT", "TIME_PERIOD"]
 
 VIEW_NODE = "/_actors_foxglove"
 """The hidden owner of the view's subscriptions, as ``topic info`` names it."""
@@ -44,12 +51,31 @@ CALL_TIMEOUT = 10.0
 """Seconds (wall clock) a service call from Foxglove waits for its response."""
 
 TIME_PERIOD = 0.1
-"""Seconds of graph time between two time broadcasts."""
+"""Seconds of graph time between two time broadcasts (and two updates of each watched scene)."""
+
+Draw = Callable[[int], Any]
+"""A scene's painter: given the runtime clock's time (ns), the ``foxglove.messages.SceneUpdate`` to show."""
+
+
+@runtime_checkable
+class SceneHost(Protocol):
+    """What shows 3D scenes beside a graph (:class:`FoxgloveView` does): nodes that can draw offer it theirs.
+
+    A node finds hosts among its runtime's ``attachments``; the host calls
+    ``draw`` in the graph's loop, so it may read the node's state freely.
+    """
+
+    def add_scene(self, topic: str, draw: Draw) -> None:
+        """Show what ``draw`` paints on ``topic`` (replacing a scene already there)."""
+
+    def remove_scene(self, topic: str) -> None:
+        """Stop showing the scene on ``topic`` (nothing if there is none)."""
 
 
 def _foxglove() -> Any:
     try:
         import foxglove
+        import foxglove.channels
         import foxglove.websocket
     except ImportError as exc:
         raise ImportError("--foxglove needs foxglove-sdk: pip install 'actors[foxglove]'") from exc
@@ -79,6 +105,7 @@ class FoxgloveView:
         self._runtime: Runtime | None = None
         self._owner: TapOwner | None = None
         self._services: dict[str, Client] = {}
+        self._scenes: dict[str, list[Any]] = {}  # topic -> [draw, its channel once started]
 
     def start(self) -> int:
         """Open the WebSocket server; returns its port."""
@@ -94,6 +121,8 @@ class FoxgloveView:
             except Exception as exc:  # the SDK raises RuntimeError for an address in use
                 raise ActorsError(f"--foxglove: cannot serve on {self.host}:{self.port}: {exc}") from None
             self.port = self._server.port
+            for topic in self._scenes:
+                self._open_scene(topic)
         return self.port
 
     @property
@@ -117,13 +146,51 @@ class FoxgloveView:
             runtime.logger.info(f"foxglove: serving the graph on {self.url}")
             task_status.started()
             while True:
-                self._server.broadcast_time(runtime.clock.now_ns())
+                now = runtime.clock.now_ns()
+                self._server.broadcast_time(now)
+                self._draw_scenes(now)
                 await anyio.sleep(TIME_PERIOD)
         finally:
             self._taps.stop()
             if self in runtime.services.listeners:
                 runtime.services.listeners.remove(self)
             self._server.stop()
+
+    # -- scenes (SceneHost) -----------------------------------------------------------------
+
+    def add_scene(self, topic: str, draw: Draw) -> None:
+        """Serve ``draw``'s ``foxglove.SceneUpdate`` on ``topic`` (protobuf, Foxglove's own schema).
+
+        ``draw(now_ns)`` is called at each time broadcast (every
+        :data:`TIME_PERIOD` of graph time) while a client subscribes, never
+        otherwise.  A ``draw`` that raises is logged once and dropped.
+        """
+        self.remove_scene(topic)
+        self._scenes[topic] = [draw, None]
+        if self._server is not None:
+            self._open_scene(topic)
+
+    def remove_scene(self, topic: str) -> None:
+        """Stop serving the scene on ``topic``; its channel goes away for clients."""
+        scene = self._scenes.pop(topic, None)
+        if scene is not None and scene[1] is not None:
+            scene[1].close()
+
+    def _open_scene(self, topic: str) -> None:
+        self._scenes[topic][1] = self._fox.channels.SceneUpdateChannel(topic, context=self._context)
+
+    def _draw_scenes(self, now: int) -> None:
+        for topic, (draw, channel) in list(self._scenes.items()):
+            if not channel.has_sinks():
+                continue
+            try:
+                update = draw(now)
+            except Exception as exc:  # a painter's bug must not take the view (or the graph) down
+                self.remove_scene(topic)
+                assert self._runtime is not None
+                self._runtime.logger.warning(f"foxglove: scene {topic} left out: drawing it raised {exc!r}")
+                continue
+            channel.log(update, log_time=now)
 
     # -- topics ---------------------------------------------------------------------------
 
