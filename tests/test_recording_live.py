@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import base64
+import contextlib
 import json
+import math
 import signal
 import struct
 import subprocess
@@ -13,7 +16,7 @@ import anyio
 import pytest
 
 from actors import Node, Runtime, codec
-from actors.recording.live import FoxgloveView
+from actors.recording.live import FoxgloveView, SceneHost
 from conftest import ROOT, python_env
 from interfaces.nav_msgs.msg import Odometry
 from interfaces.std_srvs.srv import SetBool
@@ -95,10 +98,12 @@ def _open(port: int) -> Any:
     return websockets.connect(f"ws://127.0.0.1:{port}", subprotocols=SUBPROTOCOLS, max_size=None)
 
 
-@pytest.mark.parametrize("clock", ["wall", "virtual"])
-def test_foxglove_client_receives_odom_from_the_running_turtlebot_graph(clock):
-    # The acceptance command (port 0: any free one), on either clock; virtual time runs
-    # as fast as it can, until the end of a duration it will not reach here.
+@contextlib.contextmanager
+def serving_turtlebot(clock: str) -> Any:
+    """The acceptance command (port 0: any free one) in a process; yields it and its port, stops it with Ctrl-C.
+
+    Virtual time runs as fast as it can, until the end of a duration it will not reach here.
+    """
     until = ["--duration", "1e6"] if clock == "virtual" else []
     proc = subprocess.Popen(
         [sys.executable, "-m", "actors.run", "graphs/turtlebot.toml", "--clock", clock, *until, "--foxglove", "0"],
@@ -108,10 +113,22 @@ def test_foxglove_client_receives_odom_from_the_running_turtlebot_graph(clock):
         assert proc.stdout is not None
         for line in proc.stdout:  # the log, on stdout as the graph's console is
             if "foxglove: serving the graph on ws://127.0.0.1:" in line:
-                port = int(line.rsplit(":", 1)[1])
+                yield proc, int(line.rsplit(":", 1)[1])
                 break
         else:
             pytest.fail(f"the graph never said where it serves (exit {proc.wait()})")
+    finally:
+        proc.send_signal(signal.SIGINT)
+        try:
+            proc.communicate(timeout=30)  # the rest of the log: the graph never waits on a full pipe
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.communicate()
+
+
+@pytest.mark.parametrize("clock", ["wall", "virtual"])
+def test_foxglove_client_receives_odom_from_the_running_turtlebot_graph(clock):
+    with serving_turtlebot(clock) as (proc, port):
 
         async def watch() -> list[tuple[int, Odometry]]:
             with anyio.fail_after(60):
@@ -133,13 +150,6 @@ def test_foxglove_client_receives_odom_from_the_running_turtlebot_graph(clock):
                 return received
 
         received = anyio.run(watch)
-    finally:
-        proc.send_signal(signal.SIGINT)
-        try:
-            proc.communicate(timeout=30)  # the rest of the log: the graph never waits on a full pipe
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.communicate()
     assert [m.header.frame_id for _, m in received] == ["odom"] * 5
     times = [t for t, _ in received]
     assert times == sorted(times) and len(set(times)) == 5
@@ -150,6 +160,69 @@ def test_foxglove_client_receives_odom_from_the_running_turtlebot_graph(clock):
     else:
         assert all(0 <= t - s < 10**9 for t, s in zip(times, stamps))
     assert proc.returncode == 0
+
+
+def _protobuf_class(channel: dict[str, Any]) -> Any:
+    """The message class a protobuf channel's advertised schema (a base64 FileDescriptorSet) describes."""
+    from google.protobuf import descriptor_pb2, descriptor_pool, message_factory
+
+    files = descriptor_pb2.FileDescriptorSet.FromString(base64.b64decode(channel["schema"]))
+    pool = descriptor_pool.DescriptorPool()
+    message_factory.GetMessages(list(files.file), pool=pool)
+    return message_factory.GetMessageClass(pool.FindMessageTypeByName(channel["schemaName"]))
+
+
+def test_foxglove_client_sees_the_turtlebot_world_as_a_3d_scene_tied_to_tf():
+    pytest.importorskip("google.protobuf", reason="the scene is decoded with its protobuf schema (test extra)")
+    with serving_turtlebot("virtual") as (proc, port):
+
+        async def watch() -> tuple[dict[str, Any], list[tuple[int, Any]]]:
+            with anyio.fail_after(60):
+                async with _open(port) as ws:
+                    client = FoxgloveClient(ws)
+                    scene = await client.wait_for("channels", "/scene")
+                    for topic in ("/tf", "/tf_static"):
+                        await client.wait_for("channels", topic)
+                    SceneUpdate = _protobuf_class(scene)
+                    await client.subscribe("/scene", 3)
+                    updates = []
+                    while len(updates) < 3 or not any(e.id == "/turtlebot/scan" for e in updates[-1][1].entities):
+                        log_time, payload = await client.message(3)
+                        updates.append((log_time, SceneUpdate.FromString(payload)))
+                    return client.channels, updates
+
+        channels, updates = anyio.run(watch)
+    assert proc.returncode == 0
+    scene = channels["/scene"]
+    assert (scene["encoding"], scene["schemaName"], scene["schemaEncoding"]) == (
+        "protobuf", "foxglove.SceneUpdate", "protobuf"
+    )
+    assert channels["/tf"]["schemaName"] == channels["/tf_static"]["schemaName"] == "tf2_msgs/msg/TFMessage"
+    log_time, update = updates[-1]
+    entities = {e.id: e for e in update.entities}
+    assert set(entities) == {"walls", "obstacles", "/turtlebot", "/turtlebot/scan"}
+    for e in update.entities:  # all in the root of the robot's tf tree, stamped with the graph's clock
+        assert e.frame_id == "world"
+        assert e.timestamp.seconds * 10**9 + e.timestamp.nanos == log_time
+    # The "signs" world: four walls whose inner faces are 3 m from the origin, two boxes, one stop sign.
+    walls = entities["walls"].cubes
+    assert len(walls) == 4
+    assert sorted(round(max(abs(c.pose.position.x), abs(c.pose.position.y)), 3) for c in walls) == [3.05] * 4
+    assert all(sorted([c.size.x, c.size.y]) == pytest.approx([0.1, 6.2]) for c in walls)
+    obstacles = entities["obstacles"]
+    assert [(c.pose.position.x, c.pose.position.y) for c in obstacles.cubes] == [(1.61, 0.0), (-1.0, -0.5)]
+    assert [(c.pose.position.x, c.pose.position.y) for c in obstacles.cylinders] == [(0.15, -2.0)]
+    # The robot drives a circle of 1 m radius about (0, 1), heading along it.
+    (body,) = entities["/turtlebot"].cylinders
+    x, y = body.pose.position.x, body.pose.position.y
+    assert math.hypot(x, y - 1.0) == pytest.approx(1.0, abs=0.05) and body.size.x == pytest.approx(0.21)
+    # The scan: points where the beams ended, none beyond the walls, most of them on the walls' inner faces.
+    points = [(s.pose.position.x, s.pose.position.y) for s in entities["/turtlebot/scan"].spheres]
+    assert 100 <= len(points) <= 360
+    assert all(max(abs(px), abs(py)) <= 3.0 + 1e-6 for px, py in points)
+    on_walls = [p for p in points if max(abs(p[0]), abs(p[1])) >= 3.0 - 1e-6]
+    assert len(on_walls) >= len(points) / 2
+    assert all(math.dist((x, y), p) <= 3.5 + 0.3 for p in points)  # range_max, from where the scan was taken
 
 
 class Switch(Node):
@@ -233,3 +306,42 @@ def test_the_port_is_checked_and_a_port_in_use_is_one_line(run_module):
     assert taken.returncode == 2
     assert taken.stderr.startswith(f"error: --foxglove: cannot serve on 127.0.0.1:{view.port}: ")
     assert "Traceback" not in taken.stderr
+
+
+async def test_a_scene_is_drawn_only_while_watched_and_a_failing_one_is_dropped(caplog):
+    import foxglove.messages as fm
+
+    drawn: list[int] = []
+
+    def draw(now_ns: int) -> Any:
+        drawn.append(now_ns)
+        return fm.SceneUpdate(entities=[fm.SceneEntity(id="thing", frame_id="world")])
+
+    def broken(now_ns: int) -> Any:
+        raise ValueError("no paint")
+
+    view = FoxgloveView(0)
+    assert isinstance(view, SceneHost)
+    async with Runtime(name="live_scene", attach=[view]) as rt:
+        rt.spawn(Switch)
+        view.add_scene("/picture", draw)
+        view.add_scene("/broken", broken)
+        async with _open(view.port) as ws:
+            client = FoxgloveClient(ws)
+            with anyio.fail_after(20):
+                await client.wait_for("channels", "/picture")
+                await client.next_binary(TIME)
+                await client.next_binary(TIME)
+                assert drawn == []  # advertised, never subscribed: never drawn
+                await client.subscribe("/broken", 2)
+                await client.subscribe("/picture", 1)
+                log_time, payload = await client.message(1)
+                while "/broken" in view._scenes:  # dropped at the first broadcast after its subscription lands
+                    await client.next_binary(TIME)
+        view.remove_scene("/picture")
+        view.remove_scene("/picture")  # twice: nothing
+    assert drawn[0] == log_time
+    assert b"thing" in payload and b"world" in payload
+    assert [r.getMessage() for r in caplog.records if "/broken" in r.getMessage()] == [
+        "foxglove: scene /broken left out: drawing it raised ValueError('no paint')"
+    ]

@@ -11,7 +11,8 @@ One World per runtime; TurtleBot nodes started after it find it with
 
 They are read once, at start: each is read-only (``param set`` refuses it).
 The World logs a line when a robot starts touching something and when it
-is free again.
+is free again.  Beside a live view (``--foxglove``) it draws itself as a 3D
+scene on ``/scene`` (:mod:`world.scene`).
 """
 
 from __future__ import annotations
@@ -25,11 +26,13 @@ from actors import Node
 from actors.errors import WorldError
 from interfaces.rcl_interfaces.msg import FloatingPointRange, ParameterDescriptor
 
-from .drive import Contact
+from .drive import Contact, Pose
 from .record import Recorder
+from .scene import SCENE_TOPIC, scene_update
 from .simulation import Simulation
 
 if TYPE_CHECKING:
+    from actors.recording.live import SceneHost
     from actors.runtime import Runtime
 
 __all__ = ["World", "world_of"]
@@ -80,8 +83,12 @@ class World(Node):
                 raise WorldError(f"{self.get_fully_qualified_name()}: image/gif: {exc}") from None
             self.recorder = Recorder(self.sim, every=10, frame_every=10 if self._gif else None)
         self._scans: dict[str, np.ndarray] = {}
+        self._scanned_from: dict[str, Pose] = {}
         self._scanned_at = -1
         _WORLDS[runtime] = self
+        self._scene_hosts = _scene_hosts(runtime)
+        for host in self._scene_hosts:
+            host.add_scene(SCENE_TOPIC, lambda now_ns: scene_update(self, now_ns))
         self._touching: dict[str, tuple[Contact, ...]] = {}
         self.timer = self.create_timer(dt, self.step)
         self.create_timer(CONTACT_PERIOD, self.report_contacts)
@@ -110,8 +117,13 @@ class World(Node):
         """``robot``'s 360 ranges now; all robots are scanned in one batch per physics step."""
         if self._scanned_at != self.sim.steps:
             self._scans = self.sim.scan_all()
+            self._scanned_from = {name: r.pose for name, r in self.sim.robots.items()}
             self._scanned_at = self.sim.steps
         return self._scans[robot]
+
+    def latest_scans(self) -> dict[str, tuple[Pose, np.ndarray]]:
+        """The last batch of scans by robot, each with the pose it was taken from (empty before the first)."""
+        return {name: (self._scanned_from[name], ranges) for name, ranges in self._scans.items()}
 
     def on_shutdown(self) -> None:
         """Draw the run into the files named by ``image`` and ``gif``."""
@@ -128,7 +140,18 @@ class World(Node):
         runtime = self._core.runtime
         if _WORLDS.get(runtime) is self:
             del _WORLDS[runtime]
+            for host in self._scene_hosts:
+                host.remove_scene(SCENE_TOPIC)
         super().destroy_node()
+
+
+def _scene_hosts(runtime: Runtime) -> list[SceneHost]:
+    """What beside the graph shows 3D scenes (a live view); the recording package is imported only if something is attached."""
+    if not runtime.attachments:
+        return []
+    from actors.recording.live import SceneHost
+
+    return [host for host in runtime.attachments if isinstance(host, SceneHost)]
 
 
 def _describe(contact: Contact) -> str:
