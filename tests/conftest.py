@@ -57,6 +57,16 @@ def generated_package(root: Path, package: str, messages: dict[str, str]) -> Non
     codec.register_root(root)
 
 
+def protobuf_class(name: str, file_descriptor_set: bytes) -> type:
+    """The protobuf message class ``name`` as a serialized FileDescriptorSet (a protobuf schema) defines it."""
+    from google.protobuf import descriptor_pb2, descriptor_pool, message_factory
+
+    files = descriptor_pb2.FileDescriptorSet.FromString(file_descriptor_set)
+    pool = descriptor_pool.DescriptorPool()
+    message_factory.GetMessages(list(files.file), pool=pool)
+    return message_factory.GetMessageClass(pool.FindMessageTypeByName(name))
+
+
 @pytest.fixture
 def rclpy_session(rclpy_overlay):
     """The virtual-clock Session under the plugin's rclpy_overlay: the test's thread is the script."""

@@ -17,7 +17,7 @@ import pytest
 
 from actors import Node, Runtime, codec
 from actors.recording.live import FoxgloveView, SceneHost
-from conftest import ROOT, python_env
+from conftest import ROOT, protobuf_class, python_env
 from interfaces.nav_msgs.msg import Odometry
 from interfaces.std_srvs.srv import SetBool
 
@@ -162,16 +162,6 @@ def test_foxglove_client_receives_odom_from_the_running_turtlebot_graph(clock):
     assert proc.returncode == 0
 
 
-def _protobuf_class(channel: dict[str, Any]) -> Any:
-    """The message class a protobuf channel's advertised schema (a base64 FileDescriptorSet) describes."""
-    from google.protobuf import descriptor_pb2, descriptor_pool, message_factory
-
-    files = descriptor_pb2.FileDescriptorSet.FromString(base64.b64decode(channel["schema"]))
-    pool = descriptor_pool.DescriptorPool()
-    message_factory.GetMessages(list(files.file), pool=pool)
-    return message_factory.GetMessageClass(pool.FindMessageTypeByName(channel["schemaName"]))
-
-
 def test_foxglove_client_sees_the_turtlebot_world_as_a_3d_scene_tied_to_tf():
     pytest.importorskip("google.protobuf", reason="the scene is decoded with its protobuf schema (test extra)")
     with serving_turtlebot("virtual") as (proc, port):
@@ -183,7 +173,8 @@ def test_foxglove_client_sees_the_turtlebot_world_as_a_3d_scene_tied_to_tf():
                     scene = await client.wait_for("channels", "/scene")
                     for topic in ("/tf", "/tf_static"):
                         await client.wait_for("channels", topic)
-                    SceneUpdate = _protobuf_class(scene)
+                    # A protobuf channel advertises its schema as a base64 FileDescriptorSet.
+                    SceneUpdate = protobuf_class(scene["schemaName"], base64.b64decode(scene["schema"]))
                     await client.subscribe("/scene", 3)
                     updates = []
                     while len(updates) < 3 or not any(e.id == "/turtlebot/scan" for e in updates[-1][1].entities):
