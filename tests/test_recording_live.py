@@ -20,6 +20,7 @@ from actors.recording.live import FoxgloveView, SceneHost
 from conftest import ROOT, protobuf_class, python_env
 from interfaces.nav_msgs.msg import Odometry
 from interfaces.std_srvs.srv import SetBool
+from interfaces.tf2_msgs.msg import TFMessage
 
 pytest.importorskip("foxglove")
 websockets = pytest.importorskip("websockets")
@@ -166,13 +167,15 @@ def test_foxglove_client_sees_the_turtlebot_world_as_a_3d_scene_tied_to_tf():
     pytest.importorskip("google.protobuf", reason="the scene is decoded with its protobuf schema (test extra)")
     with serving_turtlebot("virtual") as (proc, port):
 
-        async def watch() -> tuple[dict[str, Any], list[tuple[int, Any]]]:
+        async def watch() -> tuple[dict[str, Any], TFMessage, list[tuple[int, Any]]]:
             with anyio.fail_after(60):
                 async with _open(port) as ws:
                     client = FoxgloveClient(ws)
                     scene = await client.wait_for("channels", "/scene")
-                    for topic in ("/tf", "/tf_static"):
-                        await client.wait_for("channels", topic)
+                    await client.wait_for("channels", "/tf")
+                    # Published once, long ago in virtual time: a new viewer gets it as a late ROS subscriber would.
+                    await client.subscribe("/tf_static", 4)
+                    static = codec.decode_cdr((await client.message(4))[1], TFMessage)
                     # A protobuf channel advertises its schema as a base64 FileDescriptorSet.
                     SceneUpdate = protobuf_class(scene["schemaName"], base64.b64decode(scene["schema"]))
                     await client.subscribe("/scene", 3)
@@ -180,15 +183,17 @@ def test_foxglove_client_sees_the_turtlebot_world_as_a_3d_scene_tied_to_tf():
                     while len(updates) < 3 or not any(e.id == "/turtlebot/scan" for e in updates[-1][1].entities):
                         log_time, payload = await client.message(3)
                         updates.append((log_time, SceneUpdate.FromString(payload)))
-                    return client.channels, updates
+                    return client.channels, static, updates
 
-        channels, updates = anyio.run(watch)
+        channels, static, updates = anyio.run(watch)
     assert proc.returncode == 0
     scene = channels["/scene"]
     assert (scene["encoding"], scene["schemaName"], scene["schemaEncoding"]) == (
         "protobuf", "foxglove.SceneUpdate", "protobuf"
     )
     assert channels["/tf"]["schemaName"] == channels["/tf_static"]["schemaName"] == "tf2_msgs/msg/TFMessage"
+    # The scene's frame is the root of the robot's tree: world -> odom -> base_footprint (on /tf).
+    assert ("world", "odom") in {(t.header.frame_id, t.child_frame_id) for t in static.transforms}
     log_time, update = updates[-1]
     entities = {e.id: e for e in update.entities}
     assert set(entities) == {"walls", "obstacles", "/turtlebot", "/turtlebot/scan"}

@@ -7,7 +7,10 @@
 in its metadata), tapped through a :class:`~actors.recording.tap.TapSet`; a
 message is encoded only while a client is subscribed to its channel, and the
 server's queues drop for a slow client, so a view nobody watches costs the
-graph nothing and none holds up a publisher.  Log times, and the time the
+graph nothing and none holds up a publisher.  A client that subscribes to a
+latched topic (``/tf_static``) gets its transient-local history then, as a
+late ROS subscriber would (sent again to the topic's other viewers too: the
+SDK logs to all of a channel's subscribers).  Log times, and the time the
 server broadcasts ten times per second of graph time, are the runtime clock's
 (virtual time included).  Every service is callable from Foxglove (CDR
 requests and responses).
@@ -32,7 +35,7 @@ import anyio.abc
 from actors import codec
 from actors.errors import ActorsError
 from actors.names import is_hidden_name
-from actors.recording.tap import Tap, TapOwner, TapSet
+from actors.recording.tap import Tap, TapOwner, TapSet, latched
 from actors.services import Client, Service
 from actors.topics import type_name
 
@@ -116,7 +119,7 @@ class FoxgloveView:
             try:
                 self._server = fox.start_server(
                     name="actors", host=self.host, port=self.port, capabilities=capabilities,
-                    supported_encodings=["cdr"], context=self._context,
+                    supported_encodings=["cdr"], context=self._context, server_listener=self,
                 )
             except Exception as exc:  # the SDK raises RuntimeError for an address in use
                 raise ActorsError(f"--foxglove: cannot serve on {self.host}:{self.port}: {exc}") from None
@@ -206,6 +209,25 @@ class FoxgloveView:
                 tap.topic_name, schema=schema, message_encoding="cdr", context=self._context,
                 metadata={"topic_type_hash": tap.type_hash},
             )
+
+    def on_subscribe(self, client: Any, channel: Any) -> None:
+        """A client subscribed (told in one of the SDK's threads): send the topic's latched messages, in the loop."""
+        loop = self._loop
+        if loop is not None:
+            try:
+                loop.call_soon_threadsafe(self._replay_latched, channel.topic)
+            except RuntimeError:  # the loop has closed: the graph is gone
+                pass
+
+    def on_unsubscribe(self, client: Any, channel: Any) -> None:
+        """Nothing to do: the channel's ``has_sinks`` already says whether anyone still looks."""
+
+    def _replay_latched(self, topic_name: str) -> None:
+        tap, runtime = self._taps.taps.get(topic_name), self._runtime
+        topic = None if runtime is None else runtime.topics.topics.get(topic_name)
+        if tap is not None and topic is not None:
+            for msg in latched(topic, runtime.loop.time()):  # type: ignore[union-attr]
+                self._deliver(tap, msg)
 
     def _deliver(self, tap: Tap, msg: Any) -> None:
         channel = tap.channel

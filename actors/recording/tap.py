@@ -35,7 +35,7 @@ from actors.topics import (
 if TYPE_CHECKING:
     from actors.runtime import Runtime
 
-__all__ = ["Tap", "TapSet"]
+__all__ = ["Tap", "TapSet", "latched"]
 
 Deliver = Callable[["Tap", Any], None]
 
@@ -145,14 +145,21 @@ class TapSet:
             self.tapped(tap)
         self.taps[topic.name] = tap
         runtime.topics.add_subscription(tap, replay=False)
-        now = runtime.loop.time()
-        for pub in topic.publishers:  # a latched topic's history, as a late subscriber gets it
-            for msg in pub._history or ():
-                if isinstance(msg, Expiring):
-                    if msg.expires <= now:
-                        continue
-                    msg = msg.msg
-                tap._push(msg)
+        for msg in latched(topic, runtime.loop.time()):  # as a late subscriber gets them
+            tap._push(msg)
+
+
+def latched(topic: Topic, now: float) -> list[Any]:
+    """What a late transient-local subscriber of ``topic`` gets now: its publishers' histories, expired ones left out."""
+    found = []
+    for pub in topic.publishers:
+        for msg in pub._history or ():
+            if isinstance(msg, Expiring):
+                if msg.expires <= now:
+                    continue
+                msg = msg.msg
+            found.append(msg)
+    return found
 
 
 class TapOwner:
