@@ -1,4 +1,4 @@
-"""The TurtleBot's /tf and /tf_static on virtual time: TurtleBot3's frames, odometry's stamps, one tree with the world."""
+"""The TurtleBot's /tf and /tf_static on virtual time: TurtleBot3's frames, odometry's stamps, one tree."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""The World as a 3D scene for Foxglove: walls, obstacles, robots and their latest scans, as a foxglove.SceneUpdate.
+"""The World as a 3D scene for Foxglove (a foxglove.SceneUpdate): walls, obstacles, robots and their latest scans.
 
 Everything is in the ``world`` frame, the root of the robots' tf tree
 (:mod:`world.frames`), so Foxglove's 3D panel places the scene and the
@@ -50,6 +50,8 @@ _ROBOT = {"r": 0.15, "g": 0.35, "b": 0.85, "a": 1.0}
 _HEADING = {"r": 1.0, "g": 1.0, "b": 1.0, "a": 1.0}
 _SCAN = {"r": 0.9, "g": 0.1, "b": 0.1, "a": 1.0}
 
+_XY = tuple[float, float]
+
 
 def scene_update(world: World, now_ns: int) -> Any:
     """The whole scene now, stamped ``now_ns`` of the runtime clock: a ``foxglove.messages.SceneUpdate``."""
@@ -71,10 +73,7 @@ def scene_update(world: World, now_ns: int) -> Any:
     for name, robot in sim.robots.items():
         x, y, theta = robot.pose
         radius = robot.model.radius
-        body = fm.CylinderPrimitive(
-            pose=_pose(fm, x, y, ROBOT_HEIGHT / 2, theta), size=fm.Vector3(x=2 * radius, y=2 * radius, z=ROBOT_HEIGHT),
-            bottom_scale=1.0, top_scale=1.0, color=fm.Color(**_ROBOT),
-        )
+        body = _cylinder(fm, (x, y), radius, ROBOT_HEIGHT, _ROBOT)
         heading = fm.ArrowPrimitive(
             pose=_pose(fm, x, y, ROBOT_HEIGHT + 0.01, theta), shaft_length=radius, shaft_diameter=0.02,
             head_length=0.05, head_diameter=0.05, color=fm.Color(**_HEADING),
@@ -89,21 +88,15 @@ def _walls(fm: Any, arena: Arena) -> list[Any]:
     cubes = []
     for wall in arena.walls:
         (x1, y1), (x2, y2) = wall.start, wall.end
-        length = math.hypot(x2 - x1, y2 - y1) + wall.thickness  # square caps close the corners, as in the simulation
-        cubes.append(_cube(fm, ((x1 + x2) / 2, (y1 + y2) / 2), (length, wall.thickness), math.atan2(y2 - y1, x2 - x1), WALL_HEIGHT, _WALL))
+        length = math.hypot(x2 - x1, y2 - y1) + wall.thickness  # square caps close the corners, as simulated
+        center, yaw = ((x1 + x2) / 2, (y1 + y2) / 2), math.atan2(y2 - y1, x2 - x1)
+        cubes.append(_cube(fm, center, (length, wall.thickness), yaw, WALL_HEIGHT, _WALL))
     return cubes
 
 
 def _obstacles(fm: Any, arena: Arena) -> dict[str, list[Any]]:
     cubes = [_cube(fm, box.center, box.size, box.angle, OBSTACLE_HEIGHT, _OBSTACLE) for box in arena.boxes]
-    posts = [
-        fm.CylinderPrimitive(
-            pose=_pose(fm, *sign.position, POST_HEIGHT / 2, 0.0),
-            size=fm.Vector3(x=2 * sign.radius, y=2 * sign.radius, z=POST_HEIGHT),
-            bottom_scale=1.0, top_scale=1.0, color=fm.Color(**_OBSTACLE),
-        )
-        for sign in arena.stop_signs
-    ]
+    posts = [_cylinder(fm, sign.position, sign.radius, POST_HEIGHT, _OBSTACLE) for sign in arena.stop_signs]
     # A polygon is its outline at the floor and at the top, joined at every vertex.
     outlines = []
     for polygon in arena.polygons:
@@ -115,7 +108,9 @@ def _obstacles(fm: Any, arena: Arena) -> dict[str, list[Any]]:
                 points += [fm.Point3(x=x, y=y, z=z), fm.Point3(x=nx, y=ny, z=z)]
             points += [fm.Point3(x=x, y=y, z=0.0), fm.Point3(x=x, y=y, z=OBSTACLE_HEIGHT)]
         outlines.append(
-            fm.LinePrimitive(type=fm.LinePrimitiveLineType.LineList, thickness=0.02, points=points, color=fm.Color(**_OBSTACLE))
+            fm.LinePrimitive(
+                type=fm.LinePrimitiveLineType.LineList, thickness=0.02, points=points, color=fm.Color(**_OBSTACLE)
+            )
         )
     return {"cubes": cubes, "cylinders": posts, "lines": outlines}
 
@@ -127,20 +122,35 @@ def _scan_points(fm: Any, pose: Any, ranges: np.ndarray) -> list[Any]:
     xs = pose.x + ranges[hit] * np.cos(angles[hit])
     ys = pose.y + ranges[hit] * np.sin(angles[hit])
     z = frames.BASE_LINK_Z + frames.SCAN_Z
-    size, color, level = fm.Vector3(x=POINT_SIZE, y=POINT_SIZE, z=POINT_SIZE), fm.Color(**_SCAN), fm.Quaternion(w=1.0)
+    size = fm.Vector3(x=POINT_SIZE, y=POINT_SIZE, z=POINT_SIZE)
+    color, level = fm.Color(**_SCAN), fm.Quaternion(w=1.0)
     return [
         fm.SpherePrimitive(pose=fm.Pose(position=fm.Vector3(x=x, y=y, z=z), orientation=level), size=size, color=color)
         for x, y in zip(xs.tolist(), ys.tolist())
     ]
 
 
-def _cube(fm: Any, center: tuple[float, float], size: tuple[float, float], yaw: float, height: float, rgba: dict[str, float]) -> Any:
+def _cube(fm: Any, center: _XY, size: _XY, yaw: float, height: float, rgba: dict[str, float]) -> Any:
+    """A box standing on the floor: ``size`` (length, width) about ``center``, turned ``yaw``."""
     return fm.CubePrimitive(
-        pose=_pose(fm, *center, height / 2, yaw), size=fm.Vector3(x=size[0], y=size[1], z=height), color=fm.Color(**rgba)
+        pose=_pose(fm, *center, height / 2, yaw),
+        size=fm.Vector3(x=size[0], y=size[1], z=height),
+        color=fm.Color(**rgba),
+    )
+
+
+def _cylinder(fm: Any, center: _XY, radius: float, height: float, rgba: dict[str, float]) -> Any:
+    """An upright cylinder standing on the floor."""
+    return fm.CylinderPrimitive(
+        pose=_pose(fm, *center, height / 2, 0.0),
+        size=fm.Vector3(x=2 * radius, y=2 * radius, z=height),
+        bottom_scale=1.0,
+        top_scale=1.0,
+        color=fm.Color(**rgba),
     )
 
 
 def _pose(fm: Any, x: float, y: float, z: float, yaw: float) -> Any:
-    return fm.Pose(
-        position=fm.Vector3(x=x, y=y, z=z), orientation=fm.Quaternion(x=0.0, y=0.0, z=math.sin(yaw / 2), w=math.cos(yaw / 2))
-    )
+    """A pose turned ``yaw`` radians about z."""
+    turn = fm.Quaternion(x=0.0, y=0.0, z=math.sin(yaw / 2), w=math.cos(yaw / 2))
+    return fm.Pose(position=fm.Vector3(x=x, y=y, z=z), orientation=turn)

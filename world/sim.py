@@ -146,7 +146,10 @@ class World(Node):
 
 
 def _scene_hosts(runtime: Runtime) -> list[SceneHost]:
-    """What beside the graph shows 3D scenes (a live view); the recording package is imported only if something is attached."""
+    """What beside the graph shows 3D scenes (a live view).
+
+    The recording package is imported only when something is attached (it takes tens of ms).
+    """
     if not runtime.attachments:
         return []
     from actors.recording.live import SceneHost

@@ -150,7 +150,7 @@ class TapSet:
 
 
 def latched(topic: Topic, now: float) -> list[Any]:
-    """What a late transient-local subscriber of ``topic`` gets now: its publishers' histories, expired ones left out."""
+    """What a late transient-local subscriber of ``topic`` gets now: its publishers' histories, less what expired."""
     found = []
     for pub in topic.publishers:
         for msg in pub._history or ():
