@@ -496,7 +496,11 @@ class _JumpingSelector(selectors.DefaultSelector):
         if events:
             return events
         if busy:
-            # Real work is running in a thread: wait for it in real time.
+            # Real work is running in a thread: wait for it in real time (looking again after
+            # busy_poll, when set, for threads that stop being busy without waking the loop).
+            poll = loop.busy_poll
+            if poll is not None and (timeout is None or timeout > poll):
+                timeout = poll
             return super().select(timeout)
         if timeout is not None:
             loop._jump()
@@ -530,6 +534,7 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
     def __init__(self, *, epoch: float = 0.0, idle_timeout: float = 5.0) -> None:
         self._now = 0.0
         self._executor_jobs = 0
+        self.busy_poll: float | None = None  # see _JumpingSelector.select
         self.epoch = epoch
         self.idle_timeout = idle_timeout
         super().__init__(selector=_JumpingSelector(self))

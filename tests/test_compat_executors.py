@@ -346,6 +346,143 @@ def test_virtual_time_stands_still_while_the_script_thread_is_busy(session):
     assert ticks == [pytest.approx(start + 0.01)]
 
 
+def test_a_thread_the_script_starts_holds_virtual_time_from_start_until_it_first_waits(session):
+    # However late the OS gets to run it: this one works 0.4 s of real time before its first wait.
+    start = now(session)
+    seen: list[float] = []
+
+    def late() -> None:
+        deadline = time.monotonic() + 0.4
+        while time.monotonic() < deadline:
+            pass
+        seen.append(now(session))
+        time.sleep(0.5)  # through the runtime, as the script's own sleeps are
+        seen.append(now(session))
+
+    thread = threading.Thread(target=late)
+    thread.start()
+    time.sleep(1.0)
+    while thread.is_alive():  # waiting through the runtime (a join would hold the clock)
+        time.sleep(0.5)
+    assert seen == [start, start + 0.5]
+    assert now(session) == start + 1.0
+
+
+def _rescue_after(seconds: float, gate: threading.Event) -> threading.Timer:
+    # If virtual time were held by a parked thread, the test would wait forever: open the gate
+    # after a while of real time so that it fails instead.
+    timer = threading.Timer(seconds, gate.set)
+    timer._actors_token = False  # type: ignore[attr-defined]  # not one of the script's threads
+    timer.start()
+    return timer
+
+
+def test_threads_parked_outside_rclpy_do_not_hold_virtual_time(session):
+    from concurrent.futures import ThreadPoolExecutor
+
+    gate = threading.Event()
+    parked = threading.Thread(target=gate.wait)  # in a wait of threading's from the start
+    parked.start()
+    pool = ThreadPoolExecutor(max_workers=1)
+    assert pool.submit(lambda: 42).result() == 42  # its worker idles in the pool's queue from now
+    rescue = _rescue_after(20.0, gate)
+    start = now(session)
+    time.sleep(2.0)
+    rescued = gate.is_set()
+    gate.set()
+    rescue.cancel()
+    parked.join()
+    pool.shutdown()
+    assert not rescued, "virtual time stood still while the script's other threads were parked"
+    assert now(session) == start + 2.0
+
+
+def test_a_thread_holding_virtual_time_for_long_is_named_in_a_warning(session, monkeypatch):
+    import logging
+
+    import actors.compat.activity
+
+    monkeypatch.setattr(actors.compat.activity, "HOLD_WARNING", 0.05)
+    warnings: list[str] = []
+    warned = threading.Event()
+
+    class Catch(logging.Handler):
+        def emit(self, record: logging.LogRecord) -> None:
+            warnings.append(record.getMessage())
+            warned.set()
+
+    catch = Catch(logging.WARNING)
+    logging.getLogger("actors").addHandler(catch)
+
+    def crunch() -> None:  # never waits: it works until the warning names it (10 s at most)
+        deadline = time.monotonic() + 10.0
+        while not warned.is_set() and time.monotonic() < deadline:
+            pass
+
+    try:
+        thread = threading.Thread(target=crunch, name="cruncher")
+        thread.start()
+        start = now(session)
+        time.sleep(1.0)
+        thread.join()
+    finally:
+        logging.getLogger("actors").removeHandler(catch)
+    assert len(warnings) == 1 and warnings[0].startswith("virtual time waits for thread 'cruncher'")
+    assert "in crunch at " in warnings[0]
+    assert now(session) == start + 1.0
+
+
+def test_a_watcher_is_busy_the_moment_another_party_goes_idle():
+    # Whoever waits for the others to settle is woken as they go idle, in the same step: the loop
+    # looking in between would see nobody busy and jump before the watcher had looked.
+    from actors.compat.activity import Activity, Waiter
+
+    activity = Activity()
+    watcher = Waiter(activity)
+    activity.watch(watcher)
+    with activity.lock:
+        activity.current().busy = False  # the watcher waits (as in Waiter.wait)
+    work = activity.work()
+    seen_by_the_loop: list[bool] = []
+    activity.poke = lambda: seen_by_the_loop.append(activity.busy())  # type: ignore[method-assign]
+    activity.done(work)
+    assert seen_by_the_loop == [True]
+
+
+def test_a_call_the_loop_stopped_before_running_raises_instead_of_hanging():
+    session = Session(clock="virtual").start()
+    loop = session.loop
+    handed, schedule = threading.Event(), loop.call_soon_threadsafe
+
+    def stopping_first(callback: Any, *args: Any) -> Any:
+        if marker in (getattr(callback, "__wrapped__", None), *args[:1]):  # the loop stops before this one
+            handed.set()
+            return None
+        return schedule(callback, *args)
+
+    def marker() -> str:
+        return "ran"
+
+    loop.call_soon_threadsafe = stopping_first  # type: ignore[method-assign]
+    outcome: list[BaseException | str] = []
+
+    def caller() -> None:
+        try:
+            outcome.append(session.call(marker))
+        except RuntimeError as exc:
+            outcome.append(exc)
+
+    thread = threading.Thread(target=caller, daemon=True)
+    thread.start()
+    assert handed.wait(timeout=10.0)
+    session.close()
+    thread.join(timeout=10.0)
+    assert not thread.is_alive(), "the call waits forever for a loop that has stopped"
+    assert [str(error) for error in outcome] == ["the runtime of 'actors' has stopped"]
+    with pytest.raises(RuntimeError, match="has stopped"):
+        session.call(marker)
+
+
 def test_parameter_requests_wait_for_the_spin(session):
     from actors.params import Parameter
     from interfaces.rcl_interfaces.srv import SetParameters

@@ -62,10 +62,12 @@ handed to an executor until it has run (it may run on a pool thread); whoever
 wakes a waiting thread marks it busy first, and every timeout is a loop timer,
 so all waits are measured on the runtime clock and a wake-up is never lost to
 a jump.  A thread a script starts is busy from ``start()`` until it first waits
-on the runtime (``threading.Thread(target=rclpy.spin)`` must not miss a tick);
-one that never does (a pool's idle worker) stops counting after a short
-real-time grace.  A thread blocked elsewhere (``thread.join()``, a lock) counts
-as busy and holds virtual time still.
+on the runtime (``threading.Thread(target=rclpy.spin)`` must not miss a tick,
+however late the OS runs it); before that, it does not count while it is
+parked in a wait of :mod:`threading` outside the overlay's calls (a pool's idle
+worker).  A thread blocked elsewhere (``thread.join()``, a lock, a socket)
+counts as busy and holds virtual time still; one that has never waited on the
+runtime and holds it for seconds of real time is named in a warning.
 
 **What it costs native users: nothing.**  Native nodes, publish, delivery and
 timers run exactly the code they ran before; the hooks the overlay uses are a

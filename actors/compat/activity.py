@@ -18,36 +18,74 @@ waiter, so every wait is measured on the runtime clock, virtual or not.
 
 :class:`ScriptTimeLoop` is the virtual-time loop that asks the activity
 whether anyone is busy before it jumps.
+
+A thread a script starts is busy from ``start()``, before it runs at all, until
+it first waits on the runtime (``threading.Thread(target=rclpy.spin)`` must not
+miss a tick however late the OS runs it).  Until then it is *fresh*: one that
+parks in a wait of :mod:`threading` (or is a thread pool's idle worker) outside
+actors' own calls does not count while it is parked, so a script's own pools
+and helper threads do not stop the clock.  A fresh thread that neither waits
+nor parks (blocked in a C call: a socket, the keyboard) holds virtual time
+still; after :data:`HOLD_WARNING` real seconds one warning names it.
 """
 
 from __future__ import annotations
 
+import concurrent.futures.thread
+import functools
+import logging
+import os
+import sys
+import sysconfig
 import threading
 import time
 import weakref
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from types import FrameType
 from typing import Any
 
 from actors.clock import VirtualTimeLoop
+from actors.log import ROOT_LOGGER
 
-__all__ = ["Activity", "Token", "Waiter", "ScriptTimeLoop"]
+__all__ = ["Activity", "Token", "Waiter", "ScriptTimeLoop", "HOLD_WARNING"]
+
+#: Real seconds a fresh thread may hold virtual time still before a warning names it.
+HOLD_WARNING = 5.0
+
+# Real seconds between looks at fresh threads while they hold virtual time: one that parks does
+# not wake the loop, so the loop looks again.
+_LOOK_AGAIN = 0.005
+
+# Where a thread is parked, as its innermost Python frame shows it: waiting on a Condition (so in
+# Event.wait, Queue.get, Semaphore.acquire...), joining a thread, or a thread pool's worker idle in
+# its queue's get (a C call, so the worker's own frame is the innermost one).
+_PARKED = frozenset({
+    threading.Condition.wait.__code__,
+    threading.Thread._wait_for_tstate_lock.__code__,  # type: ignore[attr-defined]
+    concurrent.futures.thread._worker.__code__,
+})
+
+_STDLIB = sysconfig.get_paths()["stdlib"] + os.sep
+_ACTORS = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep  # the actors package
 
 
 class Token:
     """One party's share of the activity: busy or idle; bound to a thread or not.
 
-    ``until`` (a ``time.monotonic()`` deadline) makes a new thread's token count
-    as busy only for a while, unless the thread waits on the runtime first:
-    see :meth:`Activity.starting`.
+    A *fresh* token is a started thread's that has not waited on the runtime
+    yet: see :meth:`Activity.starting`.  ``held_since`` is when it was last seen
+    holding virtual time without being parked (real seconds), for the warning.
     """
 
-    __slots__ = ("busy", "thread", "until", "__weakref__")
+    __slots__ = ("busy", "thread", "fresh", "held_since", "warned", "__weakref__")
 
-    def __init__(self, thread: threading.Thread | None, until: float | None = None) -> None:
+    def __init__(self, thread: threading.Thread | None, fresh: bool = False) -> None:
         self.busy = True
         self.thread = thread
-        self.until = until
+        self.fresh = fresh
+        self.held_since: float | None = None
+        self.warned = False
 
 
 class Activity:
@@ -59,21 +97,39 @@ class Activity:
         self._local = threading.local()
         self._loop: Any = None
         self._watchers: set[Waiter] = set()
+        self.fresh_working = False  # a fresh thread held time at the last look: look again soon
 
     def attach(self, loop: Any) -> None:
         """The loop to wake when someone goes idle (so it may jump)."""
         self._loop = loop
 
     def busy(self) -> bool:
-        """Whether any live thread or pending callback is busy."""
-        now = time.monotonic()
+        """Whether any live thread or pending callback is busy (a parked fresh thread is not)."""
         with self.lock:
-            gone = [
-                t for t in self._tokens
-                if (t.thread is not None and not t.thread.is_alive()) or (t.until is not None and now >= t.until)
-            ]
+            gone = [t for t in self._tokens if t.thread is not None and not t.thread.is_alive()]
             self._tokens.difference_update(gone)
-            return any(t.busy for t in self._tokens)
+            busy = [t for t in self._tokens if t.busy]
+        self.fresh_working = False
+        if not busy:
+            return False
+        fresh = [t for t in busy if t.fresh and t.thread is not None]
+        if len(fresh) < len(busy):
+            return True
+        # Only threads that never waited on the runtime are busy: working, or parked?
+        frames = sys._current_frames()
+        now = time.monotonic()
+        for token in fresh:
+            frame = frames.get(token.thread.ident)  # type: ignore[union-attr]
+            if frame is None or _parked(frame):
+                token.held_since = None
+                continue
+            self.fresh_working = True
+            if token.held_since is None:
+                token.held_since = now
+            elif not token.warned and now - token.held_since >= HOLD_WARNING:
+                token.warned = True
+                _warn_holding(token.thread, frame)  # type: ignore[arg-type]
+        return self.fresh_working
 
     def busy_besides(self, token: Token) -> bool:
         """Whether anyone but ``token``'s holder is busy."""
@@ -94,21 +150,18 @@ class Activity:
         """Whether the calling thread is inside :meth:`starting_workers`."""
         return bool(getattr(self._local, "workers", False))
 
-    def starting(self, grace: float) -> Token:
-        """A busy token for a thread a script thread is starting (adopted by it with :meth:`adopt`).
+    def starting(self, thread: threading.Thread) -> Token:
+        """A fresh, busy token for ``thread``, which a script thread is about to start; it adopts it.
 
         A thread may start and then wait on the runtime at once (``rclpy.spin`` on
-        a thread of its own): it must hold virtual time still until it waits.
-        But it may also never wait on the runtime (a pool's idle worker), so its
-        token lapses after ``grace`` real seconds unless it waits first.
+        a thread of its own): it holds virtual time still from now until it
+        waits, however late it first runs.  But it may also never wait on the
+        runtime (a pool's idle worker): while it is parked it does not count.
         """
-        token = Token(None, time.monotonic() + grace)
+        token = Token(None, fresh=True)
         with self.lock:
             self._tokens.add(token)
-        lapse = threading.Timer(grace, self.poke)  # let the loop look again when it lapses
-        lapse.daemon = True
-        lapse._actors_token = False  # type: ignore[attr-defined]  # not a script thread: no token
-        lapse.start()
+        thread.run = functools.partial(_adopting, self, token, thread.run)  # type: ignore[method-assign]
         return token
 
     def current(self) -> Token:
@@ -136,7 +189,7 @@ class Activity:
         """``token``'s work is over."""
         with self.lock:
             self._tokens.discard(token)
-            token.busy = False
+            self.idle(token)
         self.poke()
 
     def running(self, token: Token) -> _Running:
@@ -156,16 +209,30 @@ class Activity:
     def set_busy(self, token: Token, busy: bool) -> None:
         """Mark ``token`` busy or idle."""
         with self.lock:
-            token.busy = busy
+            if busy:
+                token.busy = True
+            else:
+                self.idle(token)
         if not busy:
             self.poke()
+
+    def idle(self, token: Token) -> None:
+        """Mark ``token`` idle and wake the watchers, in one step: call it with :attr:`lock` held.
+
+        Done together, the loop never sees everyone idle while a watcher is about
+        to be woken (it would jump before the watcher looked).  Then :meth:`poke`.
+        """
+        token.busy = False
+        for waiter in self._watchers:
+            waiter._token.busy = True
+            waiter._event.set()
 
     def finish_on_collect(self, owner: object, token: Token) -> None:
         """End ``token`` if ``owner`` is garbage collected before its work ran."""
         weakref.finalize(owner, self.done, token)
 
     def watch(self, waiter: Waiter) -> None:
-        """Wake ``waiter`` whenever a token goes idle (until :meth:`unwatch`)."""
+        """Wake ``waiter`` whenever a token goes idle, as it goes idle (until :meth:`unwatch`)."""
         with self.lock:
             self._watchers.add(waiter)
 
@@ -175,18 +242,18 @@ class Activity:
             self._watchers.discard(waiter)
 
     def poke(self) -> None:
-        """Someone went idle: wake the watchers, and the loop, which may wait in real time while
-        anyone is busy."""
-        with self.lock:
-            watchers = list(self._watchers)
-        for waiter in watchers:
-            waiter.wake()
+        """Someone went idle: wake the loop, which may wait in real time while anyone is busy."""
         loop = self._loop
         if isinstance(loop, VirtualTimeLoop) and not loop.is_closed():
             try:
                 loop.call_soon_threadsafe(_nothing)
             except RuntimeError:  # closed meanwhile
                 pass
+
+
+def _adopting(activity: Activity, token: Token, run: Callable[[], None]) -> None:
+    activity.adopt(token)
+    run()
 
 
 class _Running:
@@ -245,12 +312,10 @@ class Waiter:
         """Block until :meth:`wake` (at once if it came already); KeyboardInterrupt gets through."""
         activity = self._activity
         with activity.lock:
-            if self._token.until is not None:  # a new thread that waits on the runtime: tracked for good
-                self._token.until = None
-                activity._tokens.add(self._token)
+            self._token.fresh = False  # a thread that waits on the runtime is a script thread for good
             if self._event.is_set():
                 return
-            self._token.busy = False
+            activity.idle(self._token)
         self._activity.poke()
         try:
             self._event.wait()
@@ -268,4 +333,32 @@ class ScriptTimeLoop(VirtualTimeLoop):
         activity.attach(self)
 
     def threads_busy(self) -> bool:
-        return super().threads_busy() or self.activity.busy()
+        busy = super().threads_busy() or self.activity.busy()
+        self.busy_poll = _LOOK_AGAIN if self.activity.fresh_working else None
+        return busy
+
+
+def _parked(frame: FrameType) -> bool:
+    # Parked in a wait of threading's, and not inside a call of actors' own (a call to the loop
+    # thread waits on a Condition too, but the thread is at work then), up to where it began.
+    if frame.f_code not in _PARKED:
+        return False
+    caller: FrameType | None = frame
+    while caller is not None and caller.f_code is not _adopting.__code__:
+        if caller.f_code.co_filename.startswith(_ACTORS):
+            return False
+        caller = caller.f_back
+    return True
+
+
+def _warn_holding(thread: threading.Thread, frame: FrameType) -> None:
+    # Name the script's own frame, not the standard library's under it (Event.is_set, socket...).
+    shown: FrameType | None = frame
+    while shown is not None and shown.f_code.co_filename.startswith(_STDLIB):
+        shown = shown.f_back
+    frame = shown or frame
+    logging.getLogger(ROOT_LOGGER).warning(
+        "virtual time waits for thread %r (started by the script; now in %s at %s:%d), which has "
+        "not waited on rclpy for %g s of real time: a thread blocked outside rclpy holds virtual time still",
+        thread.name, frame.f_code.co_name, frame.f_code.co_filename, frame.f_lineno, HOLD_WARNING,
+    )

@@ -21,14 +21,13 @@ import functools
 import threading
 import time
 from collections.abc import Awaitable, Callable, Iterator, Sequence
-from concurrent.futures import Future
+from concurrent.futures import CancelledError, Future
 from contextlib import ExitStack, contextmanager
 from typing import Any, TypeVar
 
 import anyio
 import anyio.abc
 import anyio.from_thread
-import anyio.lowlevel
 
 from actors.clock import precise_loop
 from actors.compat.activity import Activity, ScriptTimeLoop, Waiter
@@ -38,12 +37,14 @@ from actors.node import Node
 from actors.run import spawn_graph
 from actors.runtime import Attachment, Runtime
 
-__all__ = ["Session", "THREAD_GRACE"]
+try:  # anyio tells its backend by sniffio when that is installed: a loop callback must say it
+    from sniffio import current_async_library_cvar as _async_library
+except ImportError:  # pragma: no cover - anyio without sniffio finds the running loop itself
+    _async_library = None
+
+__all__ = ["Session"]
 
 T = TypeVar("T")
-
-# Real seconds a thread started by a script counts as busy before it first waits on the runtime.
-THREAD_GRACE = 0.25
 
 
 class Session:
@@ -84,6 +85,8 @@ class Session:
         self._done: Future[None] | None = None
         self._stopping = False
         self._waiting: set[Waiter] = set()  # threads in wait_until, woken when the runtime ends
+        self._calls: set[Future[Any]] = set()  # calls handed to the loop thread, not yet run
+        self._closed = False
         self.runtime: Runtime
         self.dispatcher: Dispatcher
         self.loop: asyncio.AbstractEventLoop
@@ -118,7 +121,6 @@ class Session:
         self.loop = asyncio.get_running_loop()
         self.loop_thread = threading.current_thread()
         self.dispatcher = Dispatcher(self.loop)
-        self._token = anyio.lowlevel.current_token()
         self._stop = anyio.Event()
         policy = self._graph[0].supervisor.policy() if self._graph else None
         async with Runtime(name=self.name, supervisor=policy, attach=self._attach) as rt:
@@ -166,6 +168,12 @@ class Session:
                 _wait_quietly(self._done)
         finally:
             stack.close()
+            # The loop has stopped: a call another thread handed it meanwhile will never run.
+            with self.lock:
+                self._closed = True
+                stranded = list(self._calls)
+            for future in stranded:
+                future.cancel()
 
     def __enter__(self) -> Session:
         return self.start()
@@ -185,12 +193,36 @@ class Session:
         return threading.current_thread() is self.loop_thread
 
     def call(self, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
-        """``fn(*args, **kwargs)`` on the loop thread; its result, or its error raised here."""
+        """``fn(*args, **kwargs)`` on the loop thread; its result, or its error raised here.
+
+        Raises RuntimeError once the loop thread has stopped, also to a call it
+        stopped before running (a pool thread still at work
+        then would otherwise wait forever).
+        """
         if kwargs:
             fn = functools.partial(fn, **kwargs)
         if self.in_loop_thread():
             return fn(*args)
-        return anyio.from_thread.run_sync(fn, *args, token=self._token)
+        future: Future[T] = Future()
+        with self.lock:
+            if self._closed:
+                raise self._ended_error()
+            self._calls.add(future)
+        try:
+            try:
+                self.loop.call_soon_threadsafe(_run_call, fn, args, future)
+            except RuntimeError:  # the loop is closed
+                raise self._ended_error() from None
+            try:
+                return future.result()
+            except CancelledError:
+                raise self._ended_error() from None
+        finally:
+            with self.lock:
+                self._calls.discard(future)
+
+    def _ended_error(self) -> RuntimeError:
+        return RuntimeError(f"the runtime of {self.name!r} has stopped")
 
     def block(self, async_fn: Callable[..., Awaitable[T]], *args: Any) -> T:
         """Await ``async_fn(*args)`` on the loop, the caller waiting (not busy) until it ends.
@@ -229,8 +261,9 @@ class Session:
 
         ``time.sleep`` in a script thread sleeps runtime time (threads that never
         waited on the runtime, and the loop's, sleep in real time), and a thread
-        that a script thread starts counts as busy until it first waits on the
-        runtime (or :data:`THREAD_GRACE` real seconds, if it never does).
+        that a script thread starts counts as busy from ``start()`` until it
+        first waits on the runtime, except while it is parked in a wait of
+        :mod:`threading` (see :mod:`~actors.compat.activity`).
         """
         if not self.virtual:
             yield
@@ -253,14 +286,14 @@ class Session:
                 and not activity.starts_workers()
                 and getattr(thread, "_actors_token", None) is None
             ):
-                token, run = activity.starting(THREAD_GRACE), thread.run
-
-                def adopting_run() -> None:
-                    activity.adopt(token)
-                    run()
-
-                thread.run = adopting_run  # type: ignore[method-assign]
-            real_start(thread)
+                token = activity.starting(thread)
+                try:
+                    real_start(thread)
+                except BaseException:
+                    activity.done(token)  # it never runs: it must not hold the clock
+                    raise
+            else:
+                real_start(thread)
 
         time.sleep, threading.Thread.start = sleep, start  # type: ignore[method-assign]
         try:
@@ -315,6 +348,19 @@ class Session:
                 self._waiting.discard(waiter)
             if timer is not None and not expired:
                 self.cancel(timer)
+
+
+def _run_call(fn: Callable[..., T], args: tuple[Any, ...], future: Future[T]) -> None:
+    if not future.set_running_or_notify_cancel():
+        return
+    if _async_library is not None:
+        _async_library.set("asyncio")
+    try:
+        future.set_result(fn(*args))
+    except BaseException as exc:
+        future.set_exception(exc)
+        if not isinstance(exc, Exception):
+            raise
 
 
 async def _as_coroutine(async_fn: Callable[..., Awaitable[T]], *args: Any) -> T:

@@ -263,8 +263,8 @@ class Task(Future[T]):
         with activity.lock if activity else nullcontext():
             if not self._suspended:
                 return False
-            if token is not None:
-                token.busy = False
+            if token is not None and activity is not None:
+                activity.idle(token)
         if activity is not None:
             activity.poke()
         return True
