@@ -72,15 +72,17 @@ class Timer(WorkSource, NativeProxy):
 
     def cancel(self) -> None:
         """Stop calling back until :meth:`reset`."""
+        # Native first: a tick due at this instant may still come in before the native cancel, and
+        # must be forgotten with the rest.
+        self._session.call(self._native.cancel)
         with self._session.lock:
             self._fired = None
-        self._session.call(self._native.cancel)
 
     def reset(self) -> None:
         """Start the period over from now (also revives a canceled timer)."""
+        self._session.call(self._native.reset)
         with self._session.lock:
             self._fired = None
-        self._session.call(self._native.reset)
 
     def is_ready(self) -> bool:
         """Whether a tick waits to be called back."""
