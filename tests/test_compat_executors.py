@@ -432,6 +432,28 @@ def test_a_thread_holding_virtual_time_for_long_is_named_in_a_warning(session, m
     assert now(session) == start + 1.0
 
 
+def test_a_thread_blocked_in_a_c_call_is_let_go_once_named(session, monkeypatch):
+    # input(), a socket, a bare lock: no Python frame says it waits, so it holds the clock, but only
+    # until the warning names it (else a run with --duration would never end).
+    import actors.compat.activity
+
+    monkeypatch.setattr(actors.compat.activity, "HOLD_WARNING", 0.05)
+    lock = threading.Lock()
+    lock.acquire()
+    rescued: list[bool] = []
+    rescue = threading.Timer(20.0, lambda: (rescued.append(True), lock.release()))
+    rescue._actors_token = False  # type: ignore[attr-defined]  # not one of the script's threads
+    rescue.start()
+    blocked = threading.Thread(target=lock.acquire, daemon=True)
+    blocked.start()
+    start = now(session)
+    time.sleep(1.0)
+    rescue.cancel()
+    assert not rescued, "virtual time stood still for a thread blocked outside Python"
+    assert now(session) == start + 1.0
+    lock.release()
+
+
 def test_a_watcher_is_busy_the_moment_another_party_goes_idle():
     # Whoever waits for the others to settle is woken as they go idle, in the same step: the loop
     # looking in between would see nobody busy and jump before the watcher had looked.

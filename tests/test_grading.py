@@ -73,6 +73,15 @@ def test_a_heartbeat_that_stops_when_the_motor_fails():
     assert "[FATAL] [3.500000000] [pulse]: motor down, heartbeat stops" in run.log
 
 
+def test_a_script_whose_helper_thread_parks_outside_rclpy_is_graded():
+    # The helper waits in Queue.get from the start: the grader must not wait for it to settle.
+    with run_script(TEST_SCRIPTS / "queued_pulse.py") as run:
+        beats = run.record("/heartbeat")
+        run.wait(3.5)
+    assert [b.data for b in beats] == [0, 1, 2]
+    assert "waited 30 s of real time" not in run.log
+
+
 def test_what_the_student_raises_fails_the_test():
     with pytest.raises(ZeroDivisionError):
         with run_script(TEST_SCRIPTS / "broken.py") as run:

@@ -66,8 +66,9 @@ on the runtime (``threading.Thread(target=rclpy.spin)`` must not miss a tick,
 however late the OS runs it); before that, it does not count while it is
 parked in a wait of :mod:`threading` outside the overlay's calls (a pool's idle
 worker).  A thread blocked elsewhere (``thread.join()``, a lock, a socket)
-counts as busy and holds virtual time still; one that has never waited on the
-runtime and holds it for seconds of real time is named in a warning.
+counts as busy and holds virtual time still, except one that has never waited
+on the runtime: after 5 s of real time a warning names it and virtual time goes
+on without it (a thread reading the keyboard must not stop a run).
 
 **What it costs native users: nothing.**  Native nodes, publish, delivery and
 timers run exactly the code they ran before; the hooks the overlay uses are a

@@ -26,7 +26,13 @@ parks in a wait of :mod:`threading` (or is a thread pool's idle worker) outside
 actors' own calls does not count while it is parked, so a script's own pools
 and helper threads do not stop the clock.  A fresh thread that neither waits
 nor parks (blocked in a C call: a socket, the keyboard) holds virtual time
-still; after :data:`HOLD_WARNING` real seconds one warning names it.
+still for :data:`HOLD_WARNING` real seconds; then a warning names it and time
+goes on without it, so that a run with ``--duration`` still ends.
+
+Not covered: a parked fresh thread that a script thread wakes (``queue.put``)
+counts as parked until the OS runs it, so time may move in between; threads
+that exchange work with rclpy code should wait through rclpy (or be started
+before the work they wait for exists).
 """
 
 from __future__ import annotations
@@ -57,12 +63,15 @@ HOLD_WARNING = 5.0
 # not wake the loop, so the loop looks again.
 _LOOK_AGAIN = 0.005
 
+_FRESH = "fresh"  # what Activity._holding returns when only fresh threads hold the clock
+
 # Where a thread is parked, as its innermost Python frame shows it: waiting on a Condition (so in
 # Event.wait, Queue.get, Semaphore.acquire...), joining a thread, or a thread pool's worker idle in
 # its queue's get (a C call, so the worker's own frame is the innermost one).
 _PARKED = frozenset({
     threading.Condition.wait.__code__,
-    threading.Thread._wait_for_tstate_lock.__code__,  # type: ignore[attr-defined]
+    # Thread.join waits in _wait_for_tstate_lock up to Python 3.12, in join itself (a C call) after.
+    getattr(threading.Thread, "_wait_for_tstate_lock", threading.Thread.join).__code__,
     concurrent.futures.thread._worker.__code__,
 })
 
@@ -105,11 +114,20 @@ class Activity:
 
     def busy(self) -> bool:
         """Whether any live thread or pending callback is busy (a parked fresh thread is not)."""
+        busy = self._holding(None)
+        self.fresh_working = busy is _FRESH
+        return bool(busy)
+
+    def busy_besides(self, token: Token) -> bool:
+        """Whether anyone but ``token``'s holder is busy (a parked fresh thread is not)."""
+        return bool(self._holding(token))
+
+    def _holding(self, besides: Token | None) -> object:
+        # False, True, or _FRESH (true: only fresh threads hold the clock, and may park unseen).
         with self.lock:
             gone = [t for t in self._tokens if t.thread is not None and not t.thread.is_alive()]
             self._tokens.difference_update(gone)
-            busy = [t for t in self._tokens if t.busy]
-        self.fresh_working = False
+            busy = [t for t in self._tokens if t.busy and t is not besides]
         if not busy:
             return False
         fresh = [t for t in busy if t.fresh and t.thread is not None]
@@ -118,23 +136,26 @@ class Activity:
         # Only threads that never waited on the runtime are busy: working, or parked?
         frames = sys._current_frames()
         now = time.monotonic()
+        working = False
         for token in fresh:
             frame = frames.get(token.thread.ident)  # type: ignore[union-attr]
-            if frame is None or _parked(frame):
+            if frame is None or token.warned or _parked(frame):
                 token.held_since = None
                 continue
-            self.fresh_working = True
             if token.held_since is None:
                 token.held_since = now
-            elif not token.warned and now - token.held_since >= HOLD_WARNING:
+            elif now - token.held_since >= HOLD_WARNING:
+                # Blocked in a C call, most likely (a socket, input()): named, and let go, so
+                # that a run with --duration still ends.
                 token.warned = True
                 _warn_holding(token.thread, frame)  # type: ignore[arg-type]
-        return self.fresh_working
-
-    def busy_besides(self, token: Token) -> bool:
-        """Whether anyone but ``token``'s holder is busy."""
+                continue
+            working = True
+        if working:
+            return _FRESH
+        # A fresh thread may have woken someone and then parked since the tokens were read.
         with self.lock:
-            return any(t.busy for t in self._tokens if t is not token)
+            return any(t.busy and not t.fresh and t is not besides for t in self._tokens)
 
     @contextmanager
     def starting_workers(self) -> Iterator[None]:
@@ -253,7 +274,10 @@ class Activity:
 
 def _adopting(activity: Activity, token: Token, run: Callable[[], None]) -> None:
     activity.adopt(token)
-    run()
+    try:
+        run()
+    finally:
+        activity.done(token)  # a thread that ends no longer holds the clock: tell the loop now
 
 
 class _Running:
@@ -359,6 +383,6 @@ def _warn_holding(thread: threading.Thread, frame: FrameType) -> None:
     frame = shown or frame
     logging.getLogger(ROOT_LOGGER).warning(
         "virtual time waits for thread %r (started by the script; now in %s at %s:%d), which has "
-        "not waited on rclpy for %g s of real time: a thread blocked outside rclpy holds virtual time still",
+        "not waited on rclpy for %g s of real time: virtual time goes on without it from now",
         thread.name, frame.f_code.co_name, frame.f_code.co_filename, frame.f_lineno, HOLD_WARNING,
     )

@@ -86,6 +86,7 @@ class Session:
         self._stopping = False
         self._waiting: set[Waiter] = set()  # threads in wait_until, woken when the runtime ends
         self._calls: set[Future[Any]] = set()  # calls handed to the loop thread, not yet run
+        self._calls_lock = threading.Lock()
         self._closed = False
         self.runtime: Runtime
         self.dispatcher: Dispatcher
@@ -169,7 +170,7 @@ class Session:
         finally:
             stack.close()
             # The loop has stopped: a call another thread handed it meanwhile will never run.
-            with self.lock:
+            with self._calls_lock:
                 self._closed = True
                 stranded = list(self._calls)
             for future in stranded:
@@ -204,21 +205,28 @@ class Session:
         if self.in_loop_thread():
             return fn(*args)
         future: Future[T] = Future()
-        with self.lock:
-            if self._closed:
-                raise self._ended_error()
-            self._calls.add(future)
-        try:
+        with self._handed(future):
             try:
                 self.loop.call_soon_threadsafe(_run_call, fn, args, future)
             except RuntimeError:  # the loop is closed
                 raise self._ended_error() from None
-            try:
-                return future.result()
-            except CancelledError:
+            return future.result()
+
+    @contextmanager
+    def _handed(self, future: Future[Any]) -> Iterator[None]:
+        # Inside the block, close() cancels ``future`` if the loop stops before finishing it.
+        with self._calls_lock:
+            if self._closed:
+                raise self._ended_error()
+            self._calls.add(future)
+        try:
+            yield
+        except CancelledError:
+            if future.cancelled() and self._closed:
                 raise self._ended_error() from None
+            raise
         finally:
-            with self.lock:
+            with self._calls_lock:
                 self._calls.discard(future)
 
     def _ended_error(self) -> RuntimeError:
@@ -232,15 +240,21 @@ class Session:
         """
         if self.in_loop_thread():
             raise RuntimeError("the runtime's own thread cannot block on the runtime")
-        future = asyncio.run_coroutine_threadsafe(_as_coroutine(async_fn, *args), self.loop)
-        waiter = Waiter(self.activity)
-        future.add_done_callback(lambda _: waiter.wake())
+        coroutine = _as_coroutine(async_fn, *args)
         try:
-            waiter.wait()
-        except BaseException:
-            future.cancel()
-            raise
-        return future.result()
+            future = asyncio.run_coroutine_threadsafe(coroutine, self.loop)
+        except RuntimeError:  # the loop is closed
+            coroutine.close()
+            raise self._ended_error() from None
+        waiter = Waiter(self.activity)
+        with self._handed(future):
+            future.add_done_callback(lambda _: waiter.wake())
+            try:
+                waiter.wait()
+            except BaseException:
+                future.cancel()
+                raise
+            return future.result()
 
     def wake_after(self, seconds: float, wake: Callable[[], None]) -> asyncio.TimerHandle:
         """Call ``wake()`` on the loop thread ``seconds`` of runtime clock from now."""
@@ -308,7 +322,10 @@ class Session:
 
         def run() -> None:
             activity.adopt(token)
-            target()
+            try:
+                target()
+            finally:
+                activity.done(token)  # tell the loop now: an ended thread holds nothing
 
         thread = threading.Thread(target=run, name=name, daemon=True)
         thread._actors_token = token  # type: ignore[attr-defined]
