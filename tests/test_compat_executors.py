@@ -362,8 +362,9 @@ def test_a_thread_the_script_starts_holds_virtual_time_from_start_until_it_first
     thread = threading.Thread(target=late)
     thread.start()
     time.sleep(1.0)
-    while thread.is_alive():  # waiting through the runtime (a join would hold the clock)
+    while len(seen) < 2:  # waiting through the runtime (a join would hold the clock)
         time.sleep(0.5)
+    thread.join()
     assert seen == [start, start + 0.5]
     assert now(session) == start + 1.0
 

@@ -79,7 +79,7 @@ def test_a_script_whose_helper_thread_parks_outside_rclpy_is_graded():
         beats = run.record("/heartbeat")
         run.wait(3.5)
     assert [b.data for b in beats] == [0, 1, 2]
-    assert "waited 30 s of real time" not in run.log
+    assert not [line for line in run.log if "waited 30 s of real time" in line]
 
 
 def test_what_the_student_raises_fails_the_test():

@@ -1,5 +1,5 @@
-"""A heartbeat that hands each beat to a helper thread of its own through a queue (as a logging
-QueueListener would): the helper spends its life parked in ``Queue.get``, outside rclpy."""
+"""A heartbeat that also hands each beat to a helper thread of its own through a queue (as to a
+logging QueueListener): the helper spends its life parked in ``Queue.get``, outside rclpy."""
 
 import queue
 import threading
@@ -19,17 +19,17 @@ class QueuedPulse(Node):
         threading.Thread(target=self.helper, daemon=True).start()
 
     def on_beat(self):
+        self.out.publish(Int64(data=self.count))
         self.handed.put(self.count)
         self.count += 1
 
     def helper(self):
         while True:
             try:
-                count = self.handed.get(timeout=30.0)  # real seconds: only if virtual time never moved
+                self.handed.get(timeout=30.0)  # real seconds: only if virtual time never moved
             except queue.Empty:
                 self.get_logger().error("the helper waited 30 s of real time for a beat")
                 return
-            self.out.publish(Int64(data=count))
 
 
 if __name__ == "__main__":
