@@ -369,13 +369,14 @@ def test_a_thread_the_script_starts_holds_virtual_time_from_start_until_it_first
     assert now(session) == start + 1.0
 
 
-def _rescue_after(seconds: float, gate: threading.Event) -> threading.Timer:
-    # If virtual time were held by a parked thread, the test would wait forever: open the gate
-    # after a while of real time so that it fails instead.
-    timer = threading.Timer(seconds, gate.set)
+def _rescue_after(seconds: float, release: Any) -> tuple[threading.Timer, list[bool]]:
+    # If virtual time were held by the thread under test, the test would wait forever: release it
+    # after a while of real time so that the test fails instead; the list says whether it did.
+    rescued: list[bool] = []
+    timer = threading.Timer(seconds, lambda: (rescued.append(True), release()))
     timer._actors_token = False  # type: ignore[attr-defined]  # not one of the script's threads
     timer.start()
-    return timer
+    return timer, rescued
 
 
 def test_threads_parked_outside_rclpy_do_not_hold_virtual_time(session):
@@ -386,10 +387,9 @@ def test_threads_parked_outside_rclpy_do_not_hold_virtual_time(session):
     parked.start()
     pool = ThreadPoolExecutor(max_workers=1)
     assert pool.submit(lambda: 42).result() == 42  # its worker idles in the pool's queue from now
-    rescue = _rescue_after(20.0, gate)
+    rescue, rescued = _rescue_after(20.0, gate.set)
     start = now(session)
     time.sleep(2.0)
-    rescued = gate.is_set()
     gate.set()
     rescue.cancel()
     parked.join()
@@ -441,10 +441,7 @@ def test_a_thread_blocked_in_a_c_call_is_let_go_once_named(session, monkeypatch)
     monkeypatch.setattr(actors.compat.activity, "HOLD_WARNING", 0.05)
     lock = threading.Lock()
     lock.acquire()
-    rescued: list[bool] = []
-    rescue = threading.Timer(20.0, lambda: (rescued.append(True), lock.release()))
-    rescue._actors_token = False  # type: ignore[attr-defined]  # not one of the script's threads
-    rescue.start()
+    rescue, rescued = _rescue_after(20.0, lock.release)
     blocked = threading.Thread(target=lock.acquire, daemon=True)
     blocked.start()
     start = now(session)

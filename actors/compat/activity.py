@@ -54,7 +54,7 @@ from typing import Any
 from actors.clock import VirtualTimeLoop
 from actors.log import ROOT_LOGGER
 
-__all__ = ["Activity", "Token", "Waiter", "ScriptTimeLoop", "HOLD_WARNING"]
+__all__ = ["Activity", "Token", "Waiter", "ScriptTimeLoop", "HOLD_WARNING", "run_as"]
 
 #: Real seconds a fresh thread may hold virtual time still before a warning names it.
 HOLD_WARNING = 5.0
@@ -62,8 +62,6 @@ HOLD_WARNING = 5.0
 # Real seconds between looks at fresh threads while they hold virtual time: one that parks does
 # not wake the loop, so the loop looks again.
 _LOOK_AGAIN = 0.005
-
-_FRESH = "fresh"  # what Activity._holding returns when only fresh threads hold the clock
 
 # Where a thread is parked, as its innermost Python frame shows it: waiting on a Condition (so in
 # Event.wait, Queue.get, Semaphore.acquire...), joining a thread, or a thread pool's worker idle in
@@ -114,25 +112,24 @@ class Activity:
 
     def busy(self) -> bool:
         """Whether any live thread or pending callback is busy (a parked fresh thread is not)."""
-        busy = self._holding(None)
-        self.fresh_working = busy is _FRESH
-        return bool(busy)
+        busy, self.fresh_working = self._holding(None)
+        return busy
 
     def busy_besides(self, token: Token) -> bool:
         """Whether anyone but ``token``'s holder is busy (a parked fresh thread is not)."""
-        return bool(self._holding(token))
+        return self._holding(token)[0]
 
-    def _holding(self, besides: Token | None) -> object:
-        # False, True, or _FRESH (true: only fresh threads hold the clock, and may park unseen).
+    def _holding(self, besides: Token | None) -> tuple[bool, bool]:
+        # Whether anyone holds the clock, and whether only fresh threads do (they may park unseen).
         with self.lock:
             gone = [t for t in self._tokens if t.thread is not None and not t.thread.is_alive()]
             self._tokens.difference_update(gone)
             busy = [t for t in self._tokens if t.busy and t is not besides]
         if not busy:
-            return False
+            return False, False
         fresh = [t for t in busy if t.fresh and t.thread is not None]
         if len(fresh) < len(busy):
-            return True
+            return True, False
         # Only threads that never waited on the runtime are busy: working, or parked?
         frames = sys._current_frames()
         now = time.monotonic()
@@ -152,10 +149,10 @@ class Activity:
                 continue
             working = True
         if working:
-            return _FRESH
+            return True, True
         # A fresh thread may have woken someone and then parked since the tokens were read.
         with self.lock:
-            return any(t.busy and not t.fresh and t is not besides for t in self._tokens)
+            return any(t.busy and not t.fresh and t is not besides for t in self._tokens), False
 
     @contextmanager
     def starting_workers(self) -> Iterator[None]:
@@ -182,7 +179,7 @@ class Activity:
         token = Token(None, fresh=True)
         with self.lock:
             self._tokens.add(token)
-        thread.run = functools.partial(_adopting, self, token, thread.run)  # type: ignore[method-assign]
+        thread.run = functools.partial(run_as, self, token, thread.run)  # type: ignore[method-assign]
         return token
 
     def current(self) -> Token:
@@ -272,7 +269,8 @@ class Activity:
                 pass
 
 
-def _adopting(activity: Activity, token: Token, run: Callable[[], None]) -> None:
+def run_as(activity: Activity, token: Token, run: Callable[[], object]) -> None:
+    """A thread's whole life: ``run()`` with ``token`` as the thread's own, ended when it returns."""
     activity.adopt(token)
     try:
         run()
@@ -368,7 +366,7 @@ def _parked(frame: FrameType) -> bool:
     if frame.f_code not in _PARKED:
         return False
     caller: FrameType | None = frame
-    while caller is not None and caller.f_code is not _adopting.__code__:
+    while caller is not None and caller.f_code is not run_as.__code__:
         if caller.f_code.co_filename.startswith(_ACTORS):
             return False
         caller = caller.f_back

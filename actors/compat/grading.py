@@ -116,7 +116,6 @@ class ScriptRun:
         return self
 
     def _start(self) -> None:
-        activity = self._session.activity
         saved_argv, saved_path = sys.argv, sys.path[:]
         script = self.target if isinstance(self.target, Path) else None
         sys.argv = [str(script or "student"), *self.argv]
@@ -134,8 +133,7 @@ class ScriptRun:
                 self._main()
             finally:
                 with self._session.lock:
-                    self._done = True
-                activity.done(activity.current())  # wakes whoever waits for the script to settle or end
+                    self._done = True  # the thread's end then wakes whoever waits for it to settle
 
         self._thread, _ = self._session.start_thread(main, "student script")
         self._settle()  # the script runs until it first waits (spins, mostly): its nodes exist then

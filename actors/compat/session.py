@@ -30,7 +30,7 @@ import anyio.abc
 import anyio.from_thread
 
 from actors.clock import precise_loop
-from actors.compat.activity import Activity, ScriptTimeLoop, Waiter
+from actors.compat.activity import Activity, ScriptTimeLoop, Waiter, run_as
 from actors.compat.dispatch import Dispatcher
 from actors.graph import GraphFile
 from actors.node import Node
@@ -317,17 +317,8 @@ class Session:
 
     def start_thread(self, target: Callable[[], Any], name: str) -> tuple[threading.Thread, Any]:
         """Start a daemon thread running ``target()``, busy from now until it first waits; its token."""
-        activity = self.activity
-        token = activity.work()
-
-        def run() -> None:
-            activity.adopt(token)
-            try:
-                target()
-            finally:
-                activity.done(token)  # tell the loop now: an ended thread holds nothing
-
-        thread = threading.Thread(target=run, name=name, daemon=True)
+        token = self.activity.work()
+        thread = threading.Thread(target=run_as, args=(self.activity, token, target), name=name, daemon=True)
         thread._actors_token = token  # type: ignore[attr-defined]
         thread.start()
         return thread, token
