@@ -1,0 +1,40 @@
+"""The benchmark's target table reads each target the right way round."""
+
+from __future__ import annotations
+
+from bench.harness import Result
+from bench.targets import check
+
+SEQ, CONC = "c. service sequential", "c. service 100 callers"
+
+
+def _calls(actors: float, timeout: float, future: float) -> list[Result]:
+    # µs per call: lower is better.
+    return [
+        Result(scenario, case, "µs/call", [value], higher_better=False)
+        for scenario in (SEQ, CONC)
+        for case, value in (("actors", actors), ("actors, timeout=5", timeout), ("future+Queue", future))
+    ]
+
+
+def _row(table: str, goal: str) -> str:
+    return next(line for line in table.splitlines() if goal in line)
+
+
+def test_a_round_trip_is_shown_as_its_cost_against_the_bare_future() -> None:
+    table = check(_calls(actors=9.0, timeout=12.0, future=10.0), "c")
+    assert _row(table, "with a timeout ≤ 1.3×") == (
+        "| c | round trip with a timeout ≤ 1.3× the bare future's (sequential, 100 callers) | 1.20×, 1.20× | met |"
+    )
+    assert _row(table, "without a timeout ≤ 1.0×").endswith("| 0.90×, 0.90× | met |")
+
+
+def test_a_round_trip_dearer_than_its_limit_is_not_met() -> None:
+    table = check(_calls(actors=10.5, timeout=13.5, future=10.0), "c")
+    assert _row(table, "with a timeout ≤ 1.3×").endswith("| 1.35×, 1.35× | **not met** |")
+    assert _row(table, "without a timeout ≤ 1.0×").endswith("| 1.05×, 1.05× | **not met** |")
+    assert _row(table, "round trip ≤ 2×").endswith("| 1.05×, 1.05× | met |")
+
+
+def test_a_target_whose_rows_are_missing_is_not_measured() -> None:
+    assert _row(check([], "g"), "real-time factor").endswith("| not measured | — |")
