@@ -107,6 +107,10 @@ class Scheduler:
             self._armed = True
             self._loop.call_soon(self._flush, context=self._context)
 
+    def hold(self) -> None:
+        """Take wake-ups without a loop callback: the caller promises :meth:`run_now` before it returns."""
+        self._armed = True
+
     def run_now(self) -> None:
         """Run the rounds now that are due soon (from a loop callback, e.g. a timer's: saves an iteration)."""
         if self._armed:

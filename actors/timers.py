@@ -14,7 +14,8 @@ have come when the loop timer fires all fire from it, so timers that share a
 deadline (every node started in the same instant, under virtual time) cost one
 loop timer between them.  Timers due together fire in the order they were armed,
 and their nodes' rounds run right away, in the same loop iteration
-(:meth:`Scheduler.run_now`), not one iteration later.
+(:meth:`Scheduler.run_now`), not one iteration later; the loop timer is set
+again once, after those rounds have re-armed their timers.
 
 As in rclpy, a callback with a parameter annotated ``TimerInfo`` is called with
 the tick's expected and actual times; ``autostart=False`` makes a timer that
@@ -94,7 +95,7 @@ class Deadlines:
     time never jumps to a deadline nobody waits for.
     """
 
-    __slots__ = ("_loop", "_scheduler", "_heap", "_handle", "_armed", "_order", "_stale")
+    __slots__ = ("_loop", "_scheduler", "_heap", "_handle", "_armed", "_order", "_stale", "_firing")
 
     def __init__(self, loop: asyncio.AbstractEventLoop, scheduler: Scheduler | None = None) -> None:
         self._loop = loop
@@ -104,6 +105,7 @@ class Deadlines:
         self._armed = float("inf")  # the deadline the loop timer is set for
         self._order = itertools.count()
         self._stale = 0
+        self._firing = False  # in _fire: the loop timer is set once, when its rounds are done
 
     def __len__(self) -> int:
         """Live deadlines waiting."""
@@ -136,10 +138,12 @@ class Deadlines:
             self._stale -= 1
 
     def _arm(self, when: float) -> None:
+        self._armed = when
+        if self._firing:
+            return
         if self._handle is not None:
             self._handle.cancel()
         self._handle = self._loop.call_at(when, self._fire)
-        self._armed = when
 
     def _disarm(self) -> None:
         if self._handle is not None:
@@ -153,6 +157,12 @@ class Deadlines:
         limit = max(self._loop.time(), self._armed)
         self._handle = None
         self._armed = float("inf")
+        # The callbacks re-arm their timers: one loop timer for all of them afterwards,
+        # rather than one each (asyncio keeps a cancelled one in its heap until it is due).
+        self._firing = True
+        scheduler = self._scheduler
+        if scheduler is not None:
+            scheduler.hold()  # the rounds run below, not from a loop callback of their own
         heap = self._heap
         while heap and heap[0][0] <= limit:
             when, _, timer = heappop(heap)
@@ -160,11 +170,17 @@ class Deadlines:
                 timer._due()
             else:
                 self._stale -= 1
-        self._prune()
-        if heap:
-            self._arm(heap[0][0])
-        if self._scheduler is not None:
-            self._scheduler.run_now()
+        try:
+            if scheduler is not None:
+                scheduler.run_now()
+        finally:
+            self._firing = False
+            self._prune()
+            heap = self._heap  # discard() may have rebuilt it
+            if heap:
+                self._arm(heap[0][0])
+            else:
+                self._armed = float("inf")
 
 
 class Timer:

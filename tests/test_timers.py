@@ -12,6 +12,7 @@ from actors import Node, Runtime
 from actors.clock import Clock, ClockType, Time
 from actors.timers import TimerInfo, _timer_info_parameter
 from conftest import live_loop_timers
+from interfaces.std_msgs.msg import String
 
 pytestmark = pytest.mark.virtual_time
 
@@ -133,6 +134,76 @@ async def test_stale_deadlines_of_canceled_timers_are_swept_out():
         assert len(rt.deadlines._heap) < 200  # rebuilt when stale entries became the majority
         await anyio.sleep(10)
         assert node.timers[0].ticks == 1
+
+
+async def test_ticks_rearm_under_one_loop_timer_and_leave_no_loop_callback_behind():
+    class Mixed(Node):
+        def __init__(self) -> None:
+            super().__init__("mixed")
+            self.seen: list[tuple[int, int]] = []
+            for period in (0.01, 0.03, 0.05):  # made in this order, no loop timer is replaced
+                self.create_timer(period, self.look)
+
+        def look(self) -> None:
+            loop = asyncio.get_running_loop()
+            self.seen.append((len(loop._ready), sum(h.cancelled() for h in loop._scheduled)))  # type: ignore[attr-defined]
+
+    async with Runtime() as rt:
+        node = rt.spawn(Mixed)
+        await anyio.sleep(0.305)
+        # Every round ran from the loop timer itself (no loop callback queued to run it
+        # again later), and re-arming three timers cancelled no loop timer.
+        assert len(node.seen) == 30 + 10 + 6
+        assert set(node.seen) == {(0, 0)}
+        assert [h.when() for h in live_loop_timers()] == [pytest.approx(0.31)]
+
+
+async def test_a_timer_made_or_canceled_by_a_callback_moves_the_loop_timer():
+    class Planner(Node):
+        def __init__(self) -> None:
+            super().__init__("planner")
+            self.fast: list[float] = []
+            self.create_timer(1.0, self.plan)
+            self.later = self.create_timer(1.5, lambda: None)
+
+        def plan(self) -> None:
+            if not self.fast:
+                self.create_timer(0.1, lambda: self.fast.append(asyncio.get_running_loop().time()))
+                self.later.cancel()
+
+    async with Runtime() as rt:
+        node = rt.spawn(Planner)
+        await anyio.sleep(1.05)
+        # Armed for the new timer's first tick, not for the 2.0 tick nor the canceled 1.5.
+        assert [h.when() for h in live_loop_timers()] == [pytest.approx(1.1)]
+        await anyio.sleep(0.2)
+        assert node.fast == pytest.approx([1.1, 1.2])
+
+
+async def test_a_node_a_tick_wakes_runs_in_its_own_round_after_the_ticks():
+    order: list[str] = []
+
+    class Sender(Node):
+        def __init__(self) -> None:
+            super().__init__("sender")
+            self.pub = self.create_publisher(String, "chat", 10)
+            self.create_timer(1.0, self.send)
+
+        def send(self) -> None:
+            order.append("tick")
+            self.pub.publish(String(data="hi"))
+
+    class Receiver(Node):
+        def __init__(self) -> None:
+            super().__init__("receiver")
+            self.create_subscription(String, "chat", lambda msg: order.append(msg.data), 10)
+            self.create_timer(1.0, lambda: order.append("tock"))
+
+    async with Runtime() as rt:
+        rt.spawn(Receiver)
+        rt.spawn(Sender)
+        await anyio.sleep(2.5)
+        assert order == ["tock", "tick", "hi", "tock", "tick", "hi"]
 
 
 class Informed(Node):
