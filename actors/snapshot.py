@@ -35,6 +35,7 @@ import itertools
 import math
 import numbers
 import struct
+import sys
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -117,7 +118,15 @@ def _generate(top: MessageLayout, *, entry: bool) -> Snapshot:
             lines.append(f"{indent}{value} = {obj}.{field.name}")
             ftype = field.type
             if ftype.array:
-                lines.append(f"{indent}{obj}.{field.name} = {_array_call(ftype, field.nested, value, path, names)}")
+                call = _array_call(ftype, field.nested, value, path, names)
+                if ftype.base in FLOATS:
+                    # The common case inlined: a list of floats that fits needs only a copy.
+                    lines.append(f"{indent}if {_float_list_test(ftype, value)}:")
+                    lines.append(f"{indent}    {obj}.{field.name} = {value}.copy()")
+                    lines.append(f"{indent}else:")
+                    lines.append(f"{indent}    {obj}.{field.name} = {call}")
+                else:
+                    lines.append(f"{indent}{obj}.{field.name} = {call}")
             elif field.nested is not None:
                 cls_name = _bind(names, field.nested.cls)
                 copy = f"c{next(counter)}"
@@ -178,6 +187,18 @@ def _scalar(ftype: FieldType, value: str, path: str) -> tuple[str, str]:
     if bound is None:
         return f"type({value}) is not str", f"_str({value}, {path!r}, None)"
     return f"type({value}) is not str or len({value}) > {bound}", f"_str({value}, {path!r}, {bound})"
+
+
+def _float_list_test(ftype: FieldType, value: str) -> str:
+    """The test that a float array's value is a list of floats of the right size and range."""
+    test = f"type({value}) is list"
+    if ftype.array == "fixed":
+        test += f" and len({value}) == {ftype.size}"
+    elif ftype.array == "bounded":
+        test += f" and len({value}) <= {ftype.size}"
+    if ftype.base == "float32":
+        return test + f" and (not {value} or set(map(type, {value})) <= _FLOAT and _fits_float32({value}))"
+    return test + f" and set(map(type, {value})) <= _FLOAT"
 
 
 def _array_call(ftype: FieldType, nested: MessageLayout | None, value: str, path: str, names: dict[str, Any]) -> str:
@@ -304,11 +325,23 @@ _STR = {str}
 
 
 def _floats(value: Any, path: str, shape: Shape, single: bool) -> list[float]:
-    items = _listed(value, path, shape)
+    if _float_vector(value):
+        items = value.tolist()  # a new list of Python floats, made in C: no type to look at
+    else:
+        items = _listed(value, path, shape)
+        if not set(map(type, items)) <= _FLOAT:
+            _sized(items, path, shape)
+            return _each(items, path, lambda item, where: _float(item, where, single))
     _sized(items, path, shape)
-    if set(map(type, items)) <= _FLOAT and (not single or _fits_float32(items)):
-        return items
-    return _each(items, path, lambda item, where: _float(item, where, single))
+    if single and not _fits_float32(items):
+        return _each(items, path, lambda item, where: _float(item, where, True))
+    return items
+
+
+def _float_vector(value: Any) -> bool:
+    """Whether ``value`` is a 1-D numpy array of float64 or float32 (whose ``tolist()`` gives floats)."""
+    numpy = sys.modules.get("numpy")  # not imported: no numpy array can exist
+    return numpy is not None and type(value) is numpy.ndarray and value.ndim == 1 and value.dtype.char in "df"
 
 
 def _fits_float32(items: list[float]) -> bool:
@@ -372,6 +405,8 @@ def _structs(value: Any, path: str, shape: Shape, cls: type, body: Snapshot, exp
 
 _HELPERS: Mapping[str, Any] = {
     "FLOAT32_MAX": FLOAT32_MAX,
+    "_FLOAT": _FLOAT,
+    "_fits_float32": _fits_float32,
     "_Invalid": _Invalid,
     "_invalid": _invalid,
     "_wrong": _wrong,

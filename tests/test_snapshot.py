@@ -15,7 +15,8 @@ from actors.errors import MessageValidationError
 from actors.snapshot import FLOAT32_MAX, snapshot, snapshotter
 from conftest import generated_package
 from goldens.values import DrawPick, message, shipped_messages
-from interfaces.geometry_msgs.msg import Twist, Vector3
+from interfaces.geometry_msgs.msg import PoseWithCovariance, Twist, Vector3
+from interfaces.nav_msgs.msg import Odometry
 from interfaces.rcl_interfaces.msg import ParameterValue
 from interfaces.sensor_msgs.msg import JointState, LaserScan
 from interfaces.std_msgs.msg import Bool, Int8, Int64, String
@@ -86,6 +87,42 @@ def test_what_rclpy_accepts_beyond_the_exact_type_is_delivered_in_the_canonical_
     assert snapshot(LaserScan(ranges=[float("inf"), float("nan"), -FLOAT32_MAX])).ranges[2] == -FLOAT32_MAX
 
 
+def _outcome(msg: object) -> tuple[object, ...]:
+    """What the snapshot makes of ``msg``: its ranges, each value's type, or the error's text."""
+    try:
+        ranges = snapshot(msg).ranges
+    except MessageValidationError as exc:
+        return ("refused", str(exc))
+    return ("delivered", repr(ranges), [type(v) for v in ranges])  # repr: nan equals itself
+
+
+@pytest.mark.parametrize(
+    "values",
+    [
+        np.array([0.5, float("inf"), -float("inf"), float("nan"), -0.0, FLOAT32_MAX]),  # float64
+        np.array([1.0, 1e39, 2.0]),  # finite beyond float32: refused, naming ranges[1]
+        np.array([0.25, float("inf")], dtype=np.float32),
+        np.array([], dtype=np.float64),
+        np.array([[1.0, 2.0]]),  # 2-D: each row is no float
+        np.array([1, 2, 3]),  # ints become floats
+        np.array([True, False]),  # a bool is no float
+        np.array([0.5, 1.5], dtype=np.float16),
+    ],
+    ids=["float64", "beyond-float32", "float32", "empty", "2-D", "int64", "bool", "float16"],
+)
+def test_a_numpy_array_in_a_float_array_field_fares_as_the_list_of_its_values(values):
+    assert _outcome(LaserScan(ranges=values)) == _outcome(LaserScan(ranges=values.tolist()))
+
+
+def test_a_numpy_array_is_delivered_as_a_list_that_later_writes_to_the_array_do_not_reach():
+    ranges = np.array([1.0, 2.0, 3.0])
+    copy = snapshot(LaserScan(ranges=ranges))
+    ranges[0] = 9.0
+    assert copy.ranges == [1.0, 2.0, 3.0] and type(copy.ranges) is list
+    with pytest.raises(MessageValidationError, match=r"expected 36 items \(float64\[36\]\), got 35"):
+        snapshot(Odometry(pose=PoseWithCovariance(covariance=np.zeros(35))))
+
+
 @pytest.mark.parametrize(
     ("msg", "error"),
     [
@@ -93,6 +130,7 @@ def test_what_rclpy_accepts_beyond_the_exact_type_is_delivered_in_the_canonical_
         (Int8(data=128), "field 'data' of std_msgs/msg/Int8: 128 is out of range for int8 (-128..127)"),
         (Twist(linear=Vector3(x=True)), "field 'linear.x' of geometry_msgs/msg/Twist: expected a float, got the bool True"),
         (String(data=b"abc"), "field 'data' of std_msgs/msg/String: expected a str, got the bytes b'abc'"),
+        (LaserScan(ranges=[1.0, True]), "field 'ranges[1]' of sensor_msgs/msg/LaserScan: expected a float, got the bool True"),
         (JointState(name="abc"), "field 'name' of sensor_msgs/msg/JointState: expected a list (string[]), got the str 'abc'"),
         (JointState(name=["a", 2]), "field 'name[1]' of sensor_msgs/msg/JointState: expected a str, got the int 2"),
         (ParameterValue(byte_array_value=[1, 300]),

@@ -194,5 +194,6 @@ class TurtleBot(Node):
         """Publish the lidar scan."""
         scan = self._scan
         scan.header.stamp = self.get_clock().now().to_msg()
-        scan.ranges = self.world.scan(self.name).tolist()
+        # The World's array as it is: publish() lists a float array's values in one C call.
+        scan.ranges = self.world.scan(self.name)
         self.scan_pub.publish(scan)
