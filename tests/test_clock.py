@@ -240,6 +240,29 @@ def test_an_unbound_ros_clock_can_be_driven_by_hand():
         clock.set_ros_time_override(42)
 
 
+def test_now_is_checked_as_a_time_made_by_hand():
+    class Odd(Clock):
+        def __init__(self, ns: object) -> None:
+            super().__init__(clock_type=ClockType.STEADY_TIME)
+            self.ns = ns
+
+        def now_ns(self) -> object:
+            return self.ns
+
+    assert Odd(7).now() == Time(nanoseconds=7, clock_type=ClockType.STEADY_TIME)
+    assert Odd(7.6).now().nanoseconds == 8  # rounded, as Time(nanoseconds=7.6) is
+    with pytest.raises(ValueError, match="negative nanoseconds"):
+        Odd(-1).now()
+    with pytest.raises(OverflowError):
+        Odd(2**63).now()
+    loop = VirtualTimeLoop(epoch=-1.0)  # virtual time 0 is a second before 1970
+    try:
+        with pytest.raises(ValueError, match="negative nanoseconds"):
+            ROSClock(loop).now()
+    finally:
+        loop.close()
+
+
 @pytest.mark.virtual_time
 async def test_the_runtime_clock_is_ros_time_on_the_loop():
     async with Runtime() as rt:

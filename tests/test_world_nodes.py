@@ -120,6 +120,39 @@ async def test_odometry_is_relative_to_the_start_pose():
     assert (x, y) == (pytest.approx(1.0, abs=1e-6), pytest.approx(2.0 + 0.96, abs=0.02))
 
 
+async def test_odometry_and_ground_truth_turn_with_the_robot_message_by_message():
+    class Headings(Node):
+        def __init__(self) -> None:
+            super().__init__("headings")
+            self.odom: dict[tuple[int, int], object] = {}
+            self.truth: dict[tuple[int, int], object] = {}
+            self.create_subscription(Odometry, "odom", lambda m: self.keep(self.odom, m.header, m.pose.pose), 100)
+            self.create_subscription(PoseStamped, "sim/pose", lambda m: self.keep(self.truth, m.header, m.pose), 100)
+
+        def keep(self, into: dict, header: object, pose: object) -> None:
+            into[(header.stamp.sec, header.stamp.nanosec)] = pose.orientation
+
+    def yaw(q: object) -> float:
+        assert (q.x, q.y) == (0.0, 0.0) and q.z**2 + q.w**2 == pytest.approx(1.0)
+        return 2 * math.atan2(q.z, q.w)
+
+    async with Runtime() as rt:
+        rt.spawn(World, params={"world": "empty"})
+        rt.spawn(TurtleBot, params={"theta": 0.3})
+        rt.spawn(ConstantControl, params={"v": 0.0, "omega": 0.5})
+        headings = rt.spawn(Headings)
+        await anyio.sleep(3.0)
+    assert headings.odom.keys() == headings.truth.keys() and len(headings.odom) >= 59
+    odom = [yaw(headings.odom[stamp]) for stamp in sorted(headings.odom)]
+    truth = [yaw(headings.truth[stamp]) for stamp in sorted(headings.truth)]
+    assert odom == pytest.approx([t - 0.3 for t in truth])  # odometry's frame is the start pose
+    assert truth[0] == pytest.approx(0.3) and 1.5 < truth[-1] < 0.3 + 0.5 * 3.0  # after its acceleration ramp
+    # Each message kept its own heading: 0.5 rad/s for 50 ms, give or take the one physics step
+    # that a tick and the World's step falling on the same instant may take in either order.
+    turning = [b - a for a, b in zip(odom[20:], odom[21:])]
+    assert all(step == pytest.approx(0.5 * 0.05, abs=0.5 * 0.01 + 1e-9) for step in turning)
+
+
 async def test_namespaced_robots_have_their_own_topics():
     async with Runtime() as rt:
         rt.spawn(World)

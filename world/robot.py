@@ -56,7 +56,14 @@ SCAN_PERIOD = 0.1
 
 def yaw_quaternion(yaw: float) -> Quaternion:
     """A rotation of ``yaw`` radians about z."""
-    return Quaternion(z=math.sin(yaw / 2), w=math.cos(yaw / 2))
+    rotation = Quaternion()
+    _set_yaw(rotation, yaw)
+    return rotation
+
+
+def _set_yaw(rotation: Quaternion, yaw: float) -> None:
+    # Into a reused message's quaternion too (its x and y stay 0).
+    rotation.z, rotation.w = math.sin(yaw / 2), math.cos(yaw / 2)
 
 
 class TurtleBot(Node):
@@ -88,6 +95,7 @@ class TurtleBot(Node):
             except ValueError as exc:
                 raise WorldError(f"{self.name}: {exc}") from None
         self._start = (x, y, theta)
+        self._start_cos_sin = (math.cos(theta), math.sin(theta))
         lidar = self.robot.model.lidar
         # One message of each kind, refilled and published again each tick: publish() takes a
         # snapshot, so reusing them is safe, and building a fresh Odometry tree each time
@@ -142,27 +150,28 @@ class TurtleBot(Node):
         x, y, theta, v, w = map(float, self.robot.odometry())
         x0, y0, theta0 = self._start
         # Odometry starts at the start pose: express the pose in that frame.
-        c, s = math.cos(theta0), math.sin(theta0)
+        c, s = self._start_cos_sin
         dx, dy = x - x0, y - y0
         msg = self._odom
         msg.header.stamp = stamp
         pose = msg.pose.pose
         pose.position.x, pose.position.y = c * dx + s * dy, -s * dx + c * dy
-        pose.orientation = yaw_quaternion(math.remainder(theta - theta0, math.tau))
+        _set_yaw(pose.orientation, math.remainder(theta - theta0, math.tau))
         msg.twist.twist.linear.x, msg.twist.twist.angular.z = v, w
         self.odom_pub.publish(msg)
         if self.tf_pub.get_subscription_count():  # nobody listens: no transform to fill
             tf = self._tf.transforms[0]
             tf.header.stamp = stamp
             tf.transform.translation.x, tf.transform.translation.y = pose.position.x, pose.position.y
-            tf.transform.rotation = pose.orientation
+            rotation = tf.transform.rotation
+            rotation.z, rotation.w = pose.orientation.z, pose.orientation.w
             self.tf_pub.publish(self._tf)
 
         truth = self.robot.pose
         ground = self._ground
         ground.header.stamp = stamp
         ground.pose.position.x, ground.pose.position.y = truth.x, truth.y
-        ground.pose.orientation = yaw_quaternion(truth.theta)
+        _set_yaw(ground.pose.orientation, truth.theta)
         self.pose_pub.publish(ground)
 
         touching = self.robot.in_contact
