@@ -298,6 +298,57 @@ async def test_the_server_sees_each_request_as_it_was_when_called():
         assert [r.sum for r in await asyncio.gather(*futures)] == [10, 11, 12]
 
 
+@pytest.mark.parametrize("kind", ["plain", "async"])
+async def test_each_caller_gets_the_response_as_the_handler_returned_it(kind):
+    class Reuser(Node):
+        """Answers every call with one response object it keeps and changes: each caller must get its own copy."""
+
+        def __init__(self) -> None:
+            super().__init__("reuser")
+            self.reply = AddTwoInts.Response()
+            self.create_service(AddTwoInts, "add_two_ints", self.add if kind == "plain" else self.add_async)
+
+        def add(self, request: AddTwoInts.Request, response: AddTwoInts.Response) -> AddTwoInts.Response:
+            self.reply.sum = request.a + request.b
+            return self.reply
+
+        async def add_async(self, request: AddTwoInts.Request, response: AddTwoInts.Response) -> AddTwoInts.Response:
+            return self.add(request, response)
+
+    async with Runtime() as rt:
+        reuser = rt.spawn(Reuser)
+        caller = rt.spawn(Caller)
+        futures = [caller.cli.call_async(AddTwoInts.Request(a=i, b=10)) for i in range(3)]  # served in one round
+        responses = await asyncio.gather(*futures)
+        reuser.reply.sum = -1
+        assert [r.sum for r in responses] == [10, 11, 12]
+        assert not any(r is reuser.reply for r in responses)
+
+
+async def test_a_handler_that_cancels_its_own_caller_leaves_the_server_serving():
+    tasks: list[asyncio.Task] = []
+
+    class Canceller(Node):
+        def __init__(self) -> None:
+            super().__init__("canceller")
+            self.create_service(AddTwoInts, "add_two_ints", self.add)
+
+        def add(self, request: AddTwoInts.Request, response: AddTwoInts.Response) -> AddTwoInts.Response:
+            if request.a < 0:
+                tasks[0].cancel()  # the caller's future is cancelled before the answer is set
+            response.sum = request.a + request.b
+            return response
+
+    async with Runtime() as rt:
+        rt.spawn(Canceller)
+        caller = rt.spawn(Caller)
+        tasks.append(asyncio.ensure_future(caller.cli.call(AddTwoInts.Request(a=-1, b=0))))
+        with pytest.raises(asyncio.CancelledError):
+            await tasks[0]
+        assert (await caller.cli.call(AddTwoInts.Request(a=1, b=1), timeout=1)).sum == 2
+        assert rt.graph.nodes()[0].crashes == 0
+
+
 async def test_fields_that_do_not_fit_fail_the_call_naming_the_field(caplog):
     class Sloppy(Node):
         def __init__(self) -> None:
