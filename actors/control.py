@@ -525,7 +525,7 @@ class _Session:
             name=core.fqn,
             subscribers=_pairs((s.topic_name, s.msg_type) for s in core.subscriptions),
             publishers=_pairs((p.topic_name, p.msg_type) for p in core.publishers),
-            servers=_pairs((s.service_name, s.srv_type) for s in core.services),
+            servers=_pairs(core.served()),
             clients=_pairs((c.service_name, c.srv_type) for c in core.clients),
         )
 
@@ -620,7 +620,7 @@ class _Session:
 
     async def _call(self, request: Call) -> Any:
         name = expand(request.service, "/", "_", what="service name")
-        server = self.runtime.services.servers.get(name)
+        server = self.runtime.services.get(name)
         if server is None:
             raise ControlError(f"unknown service {name}")
         srv_type = codec.get_type(request.type)

@@ -201,6 +201,8 @@ class GraphView:
             for name, s in self._rt.services.servers.items()
             if not is_proxy(s)
         }
+        for name, srv_type, node in self._rt.services.deferred():
+            found[name] = ServiceInfo(name=name, type=type_name(srv_type), node=node.fqn, handled=0, queued=0)
         for node in self.remote_nodes():
             for e in node.endpoints:
                 if e.kind == "server" and e.name not in found:
@@ -314,7 +316,7 @@ def _node_info(child: Child) -> NodeInfo:
         last_error=child.last_error,
         publishes=tuple(sorted({p.topic_name for p in core.publishers})),
         subscribes=tuple(sorted({s.topic_name for s in core.subscriptions})),
-        serves=tuple(sorted(s.service_name for s in core.services)),
+        serves=tuple(sorted(name for name, _ in core.served())),
         calls=tuple(sorted({c.service_name for c in core.clients})),
         timers=sum(not t.is_canceled() for t in core.timers),
     )

@@ -29,6 +29,7 @@ from actors.logger_services import serve_logger_levels
 from actors.names import Resolver, fully_qualified, normalize_namespace, validate_node_name
 from actors.node_graph import GraphQueries
 from actors.node_params import ParameterMethods
+from actors.param_services import ParameterServices
 from actors.param_services import serve as serve_parameters
 from actors.params import Parameter, ParameterStore
 from actors.services import Client, Service, ServiceTable
@@ -238,6 +239,22 @@ class NodeCore:
         full = self.resolver.resolve(name, what="service name")
         return self.add_service(Service(self, full, srv_type, handler))
 
+    def defer_services(self, deferred: ParameterServices) -> bool:
+        """Register ``deferred``'s services to be built when first needed; False if they must be built now.
+
+        Remapped names and a restart's hand-over (adopting its predecessor's
+        queues) take the ordinary path.
+        """
+        if self.child.remap or self._inherited:
+            return False
+        return self.runtime.services.defer(self.fqn, deferred)
+
+    def served(self) -> list[tuple[str, type]]:
+        """``(name, type)`` of every service this node serves, those not built yet too."""
+        return [(s.service_name, s.srv_type) for s in self.services] + [
+            (name, srv_type) for name, srv_type, _ in self.runtime.services.deferred(self.fqn)
+        ]
+
     def add_service(self, service: Service) -> Service:
         """Serve a service built by an entity of this node (an action's); adopts a predecessor's queue."""
         old = self._take_inherited("srv", service.service_name, service.srv_type)
@@ -333,6 +350,7 @@ class NodeCore:
 
     def orphan(self) -> dict[tuple[str, str], list[Any]]:
         """Stop this instance but keep its mailboxes attached, for a restarted instance to adopt."""
+        self.runtime.services.materialize(self.fqn)  # calls during the restart queue for the next instance
         self._stop_activity()
         self.destroyed = True
         kept: dict[tuple[str, str], list[Any]] = {}
@@ -363,6 +381,7 @@ class NodeCore:
             self.runtime.topics.remove_subscription(sub)
         for service in self.services:
             self.runtime.services.remove(service)
+        self.runtime.services.undefer(self.fqn, self)
         self.runtime._unregister_node(self)
 
 

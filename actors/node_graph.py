@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from typing import Any, Protocol
 
 from actors.endpoint_info import TopicEndpointInfo, TopicEndpointTypeEnum, endpoint_info
@@ -91,12 +92,14 @@ class GraphQueries:
 
     def get_service_names_and_types(self) -> list[tuple[str, list[str]]]:
         """Every service of the graph (parameter services included) with its type, sorted by name."""
-        servers = self._core.runtime.services.servers
-        return [(name, [type_name(servers[name].srv_type)]) for name in sorted(servers)]
+        table = self._core.runtime.services
+        found = {name: s.srv_type for name, s in table.servers.items()}
+        found.update((name, srv_type) for name, srv_type, _ in table.deferred())
+        return [(name, [type_name(found[name])]) for name in sorted(found)]
 
     def count_services(self, service_name: str) -> int:
         """How many servers ``service_name`` (expanded, not remapped) has: 0 or 1."""
-        return int(self._expanded(service_name, "service name") in self._core.runtime.services.servers)
+        return int(self._core.runtime.services.has(self._expanded(service_name, "service name")))
 
     def count_clients(self, service_name: str) -> int:
         """How many clients of ``service_name`` (expanded, not remapped) the graph's nodes have."""
@@ -105,7 +108,7 @@ class GraphQueries:
 
     def get_service_names_and_types_by_node(self, node_name: str, node_namespace: str) -> list[tuple[str, list[str]]]:
         """The services the node ``node_namespace``/``node_name`` serves, with their types."""
-        return _names_and_types(self._node(node_name, node_namespace).services, "service_name", "srv_type")
+        return _pairs_by_name(self._node(node_name, node_namespace).served())
 
     def get_client_names_and_types_by_node(self, node_name: str, node_namespace: str) -> list[tuple[str, list[str]]]:
         """The services the node ``node_namespace``/``node_name`` has clients of, with their types."""
@@ -120,9 +123,13 @@ class GraphQueries:
 
 
 def _names_and_types(entities: list[Any], name_attr: str, type_attr: str) -> list[tuple[str, list[str]]]:
+    return _pairs_by_name((getattr(entity, name_attr), getattr(entity, type_attr)) for entity in entities)
+
+
+def _pairs_by_name(pairs: Iterable[tuple[str, type]]) -> list[tuple[str, list[str]]]:
     found: dict[str, list[str]] = {}
-    for entity in entities:
-        types = found.setdefault(getattr(entity, name_attr), [])
-        if (kind := type_name(getattr(entity, type_attr))) not in types:
+    for name, type_ in pairs:
+        types = found.setdefault(name, [])
+        if (kind := type_name(type_)) not in types:
             types.append(kind)
     return sorted(found.items())

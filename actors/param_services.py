@@ -18,7 +18,7 @@ from interfaces.rcl_interfaces.srv import (
     SetParametersAtomically,
 )
 
-__all__ = ["ServiceHost", "serve"]
+__all__ = ["ServiceHost", "DeferringHost", "ParameterServices", "serve"]
 
 
 class ServiceHost(Protocol):
@@ -27,31 +27,55 @@ class ServiceHost(Protocol):
     def create_service(self, srv_type: type, name: str, handler: Callable[[Any, Any], Any]) -> Any: ...
 
 
-def serve(store: ParameterStore, host: ServiceHost) -> None:
+class DeferringHost(ServiceHost, Protocol):
+    """A node that may register services now and build them when first needed."""
+
+    fqn: str
+
+    def defer_services(self, deferred: ParameterServices) -> bool: ...
+
+
+def serve(store: ParameterStore, host: DeferringHost) -> None:
     """Serve ``~/describe_parameters``, ``~/get_parameters``, ``~/get_parameter_types``,
     ``~/list_parameters``, ``~/set_parameters`` and ``~/set_parameters_atomically`` from ``store``.
 
     Unlike rclpy's, ``get_parameters`` answers an unknown name with a NOT_SET
     value in its place (rclpy answers nothing at all), so one unknown name does
     not hide the others.  A set of an undeclared name is an unsuccessful result,
-    as in rclpy, never an error.
+    as in rclpy, never an error.  The six are listed and callable at once, but
+    built only when something first needs one (see
+    :class:`actors.services.ServiceTable`): every node has them, hardly any is
+    called, and building them was a third of the cost of spawning a node.
     """
-    handlers = _Handlers(store)
-    host.create_service(DescribeParameters, "~/describe_parameters", handlers.describe)
-    host.create_service(GetParameters, "~/get_parameters", handlers.get)
-    host.create_service(GetParameterTypes, "~/get_parameter_types", handlers.get_types)
-    host.create_service(ListParameters, "~/list_parameters", handlers.list_names)
-    host.create_service(SetParameters, "~/set_parameters", handlers.set_each)
-    host.create_service(SetParametersAtomically, "~/set_parameters_atomically", handlers.set_all)
+    services = ParameterServices(store, host)
+    if not host.defer_services(services):
+        services.build()
 
 
-class _Handlers:
-    # One object whose bound methods are the six handlers: every node serves them, and six
-    # closures cost about 1.2 KB a node against 0.4 KB for six bound methods.
-    __slots__ = ("store",)
+class ParameterServices:
+    """A node's six parameter services as one object, whose bound methods are their handlers."""
 
-    def __init__(self, store: ParameterStore) -> None:
+    __slots__ = ("store", "owner")
+
+    # Last name segment -> (type, handler), in the order rclpy creates them.
+    _SERVED: dict[str, tuple[type, str]] = {
+        "describe_parameters": (DescribeParameters, "describe"),
+        "get_parameters": (GetParameters, "get"),
+        "get_parameter_types": (GetParameterTypes, "get_types"),
+        "list_parameters": (ListParameters, "list_names"),
+        "set_parameters": (SetParameters, "set_each"),
+        "set_parameters_atomically": (SetParametersAtomically, "set_all"),
+    }
+    kinds: dict[str, type] = {kind: srv_type for kind, (srv_type, _) in _SERVED.items()}
+
+    def __init__(self, store: ParameterStore, owner: DeferringHost) -> None:
         self.store = store
+        self.owner = owner
+
+    def build(self) -> None:
+        """Create the six services on the owner."""
+        for kind, (srv_type, handler) in self._SERVED.items():
+            self.owner.create_service(srv_type, "~/" + kind, getattr(self, handler))
 
     def get(self, request: Any, response: Any) -> Any:
         response.values = [self.store.get_or(name).get_parameter_value() for name in request.names]

@@ -31,7 +31,7 @@ import asyncio
 import itertools
 import time
 from collections import deque
-from collections.abc import Awaitable, Callable
+from collections.abc import Awaitable, Callable, Iterator, Mapping
 from functools import partial
 from heapq import heapify, heappop, heappush
 from inspect import isawaitable
@@ -45,7 +45,7 @@ from actors.errors import ServiceError
 from actors.snapshot import snapshotter
 from actors.topics import type_name
 
-__all__ = ["Service", "Client", "CallTimeouts", "ServiceListener", "ServiceTable"]
+__all__ = ["Service", "Client", "CallTimeouts", "ServiceListener", "Deferred", "ServiceTable"]
 
 
 class _Call(msgspec.Struct, eq=False):
@@ -182,6 +182,7 @@ class Client:
 
     def __init__(self, node: Owner, service_name: str, srv_type: type, table: ServiceTable) -> None:
         _check_srv_type(srv_type, "create_client")
+        table.want(service_name)
         self.node = node
         self.service_name = service_name
         self.srv_type = srv_type
@@ -369,13 +370,35 @@ class ServiceListener(Protocol):
     def client_removed(self, client: Client) -> None: ...
 
 
+class Deferred(Protocol):
+    """Services served under one name prefix, built only when first needed: a node's parameter services.
+
+    ``kinds`` maps each service's last name segment to its type; ``build()``
+    creates and registers them for real (through ``ServiceTable.add``).
+    """
+
+    owner: Owner
+    kinds: Mapping[str, type]
+
+    def build(self) -> None: ...
+
+
 class ServiceTable:
     """Every service of a runtime, and the calls waiting for services not yet there.
 
-    ``listeners`` hear of every server and client added or removed (never of a call).
+    ``listeners`` hear of every server and client added or removed (never of a
+    call); one that joins a running graph joins through :meth:`add_listener`.
+
+    Every node serves six parameter services, and almost none of them is ever
+    called: they are *deferred* (:meth:`defer`), one entry per node, and built
+    when something first needs one of them.  ``servers`` holds every service
+    that a client, a listener or a lookup through :meth:`get` may reach: a
+    client's service is built when the client is made, and a node whose
+    services a client already waits for builds them at once.  Listings see the
+    deferred ones through :meth:`deferred`.
     """
 
-    __slots__ = ("servers", "listeners", "_parked", "_watchers", "_timeouts")
+    __slots__ = ("servers", "listeners", "_parked", "_watchers", "_timeouts", "_deferred", "_wanted")
 
     def __init__(self) -> None:
         self.servers: dict[str, Service] = {}
@@ -384,6 +407,78 @@ class ServiceTable:
         # Futures of wait_for_service() callers, by service name (insertion-ordered sets).
         self._watchers: dict[str, dict[asyncio.Future[bool], None]] = {}
         self._timeouts: CallTimeouts | None = None
+        self._deferred: dict[str, Deferred] = {}  # by prefix: the node's full name
+        self._wanted: set[str] = set()  # prefixes of the names clients were made for
+
+    def defer(self, prefix: str, deferred: Deferred) -> bool:
+        """Serve ``prefix/<kind>`` for each of ``deferred.kinds`` without building them yet.
+
+        False (nothing registered: build them now) while listeners listen, when
+        a client was made for a name under ``prefix``, or when one of the names
+        is already served.
+        """
+        if self.listeners or prefix in self._wanted:
+            return False
+        servers = self.servers
+        for kind in deferred.kinds:
+            if prefix + "/" + kind in servers:
+                return False
+        self._deferred[prefix] = deferred
+        return True
+
+    def undefer(self, prefix: str, owner: Owner) -> None:
+        """Forget what ``owner`` deferred under ``prefix`` (its node is gone), without building it."""
+        deferred = self._deferred.get(prefix)
+        if deferred is not None and deferred.owner is owner:
+            del self._deferred[prefix]
+
+    def materialize(self, prefix: str) -> None:
+        """Build and register the services deferred under ``prefix``, if any."""
+        deferred = self._deferred.pop(prefix, None)
+        if deferred is not None:
+            deferred.build()
+
+    def deferred(self, prefix: str | None = None) -> Iterator[tuple[str, type, Owner]]:
+        """``(name, type, owner)`` of each service deferred under ``prefix`` (under every prefix if None)."""
+        if prefix is None:
+            entries = list(self._deferred.items())
+        else:
+            deferred = self._deferred.get(prefix)
+            entries = [] if deferred is None else [(prefix, deferred)]
+        for at, deferred in entries:
+            for kind, srv_type in deferred.kinds.items():
+                yield f"{at}/{kind}", srv_type, deferred.owner
+
+    def get(self, name: str) -> Service | None:
+        """The server of ``name`` (a deferred one is built), or None."""
+        server = self.servers.get(name)
+        if server is None and (prefix := self._deferring(name)) is not None:
+            self.materialize(prefix)
+            server = self.servers.get(name)
+        return server
+
+    def has(self, name: str) -> bool:
+        """Whether ``name`` is served (deferred or not); builds nothing."""
+        return name in self.servers or self._deferring(name) is not None
+
+    def _deferring(self, name: str) -> str | None:
+        # The prefix under which ``name`` is deferred, if it is.
+        if not self._deferred:
+            return None
+        prefix, _, kind = name.rpartition("/")
+        deferred = self._deferred.get(prefix)
+        return prefix if deferred is not None and kind in deferred.kinds else None
+
+    def want(self, name: str) -> None:
+        """A client for ``name`` is made: its server, if deferred, is built, and one deferred later is not."""
+        self._wanted.add(name.rpartition("/")[0])
+        self.get(name)
+
+    def add_listener(self, listener: ServiceListener) -> None:
+        """Let ``listener`` hear of every server added from now on; ``servers`` then holds every one there is."""
+        for prefix in list(self._deferred):
+            self.materialize(prefix)
+        self.listeners.append(listener)
 
     def timeouts(self, loop: asyncio.AbstractEventLoop) -> CallTimeouts:
         """The deadlines of calls with a timeout, on ``loop`` (made at the first such call)."""
@@ -397,7 +492,7 @@ class ServiceTable:
         A transport's stand-in for a server in another process gives way to it.
         """
         name = service.service_name
-        existing = self.servers.get(name)
+        existing = self.get(name)
         if existing is not None and existing is not replacing and not existing.remote:
             raise ServiceError(
                 f"cannot serve {name} from {service.node.fqn}: {existing.node.fqn} already serves it "

@@ -143,7 +143,7 @@ class FoxgloveView:
         self._owner = TapOwner(runtime, VIEW_NODE)
         try:
             self._taps.start(runtime)
-            runtime.services.listeners.append(self)
+            runtime.services.add_listener(self)
             for service in list(runtime.services.servers.values()):
                 self.service_added(service)
             runtime.logger.info(f"foxglove: serving the graph on {self.url}")

@@ -126,7 +126,7 @@ class ZenohTransport:
 
     def _join(self, runtime: Runtime) -> None:
         runtime.topics.listeners.append(self)
-        runtime.services.listeners.append(self)
+        runtime.services.add_listener(self)
         for topic in list(runtime.topics.topics.values()):
             for endpoint in (*topic.publishers, *topic.subscriptions):
                 self.endpoint_added(topic, endpoint)
