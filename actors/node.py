@@ -159,7 +159,7 @@ class NodeCore:
         if not self.params.has("use_sim_time"):
             # Every ROS node has it.  Accepted, and it changes nothing: the graph's clock is
             # simulated (virtual) time or wall time for every node alike.
-            self.params.declare("use_sim_time", False)
+            self.params.declare_default(_USE_SIM_TIME)
         if start_parameter_services:
             serve_parameters(self.params, self)
         if enable_logger_service:
@@ -383,6 +383,9 @@ class NodeCore:
             self.runtime.services.remove(service)
         self.runtime.services.undefer(self.fqn, self)
         self.runtime._unregister_node(self)
+
+
+_USE_SIM_TIME = Parameter("use_sim_time", Parameter.Type.BOOL, False)  # one for every node: a Parameter never changes
 
 
 def _check_type(msg_type: Any, where: str) -> None:

@@ -104,10 +104,12 @@ class ParameterStore:
         self._core = core
         self._values: dict[str, Parameter] = {}
         self._descriptors: dict[str, ParameterDescriptor] = {}
-        # Newest first, as rclpy calls them.
-        self._pre: list[PreSet] = []
-        self._on_set: list[OnSet] = []
-        self._post: list[PostSet] = []
+        # Newest first, as rclpy calls them.  Tuples, replaced when one is added or removed:
+        # most nodes add none, and three empty lists per node were three more objects
+        # for the collector to traverse.
+        self._pre: tuple[PreSet, ...] = ()
+        self._on_set: tuple[OnSet, ...] = ()
+        self._post: tuple[PostSet, ...] = ()
         self._overrides = dict(overrides)
         self.allow_undeclared = allow_undeclared
 
@@ -163,6 +165,23 @@ class ParameterStore:
             error = InvalidParameterTypeException if result.reason.startswith("wrong type") else InvalidParameterValueException
             raise error(f"parameter {name!r} of {self._core.fqn}: {result.reason}")
         return self._values[name]
+
+    def declare_default(self, param: Parameter) -> None:
+        """Declare ``param`` as it is, or from its override: every node's ``use_sim_time``.
+
+        What :meth:`declare` does with a default and no descriptor, without the
+        checks such a default always passes, while no set callback could refuse
+        it; an override (of any type) takes :meth:`declare`'s whole path.
+        """
+        name = param.name
+        if name in self._overrides or self._on_set or self._post:
+            self.declare(name, param.value)
+            return
+        if name in self._values:
+            raise ParameterAlreadyDeclaredException(f"parameter {name!r} of {self._core.fqn} is already declared")
+        self._values[name] = param
+        self._descriptors[name] = ParameterDescriptor(name=name, type=int(param.type_))
+        self._publish_event(new=(param,))
 
     def declare_many(self, namespace: str, parameters: Sequence[tuple[Any, ...]],
                      ignore_override: bool = False) -> list[Parameter]:
@@ -303,28 +322,28 @@ class ParameterStore:
 
     def add_pre_set_callback(self, callback: PreSet) -> None:
         """Call ``callback(parameters)`` first on each set; it returns the list to set instead."""
-        self._pre.insert(0, _callable(callback))
+        self._pre = (_callable(callback), *self._pre)
 
     def add_on_set_callback(self, callback: OnSet) -> OnSet:
         """Call ``callback(parameters)`` to accept or refuse each set and declaration."""
-        self._on_set.insert(0, _callable(callback))
+        self._on_set = (_callable(callback), *self._on_set)
         return callback
 
     def add_post_set_callback(self, callback: PostSet) -> None:
         """Call ``callback(parameters)`` after each accepted set and declaration."""
-        self._post.insert(0, _callable(callback))
+        self._post = (_callable(callback), *self._post)
 
     def remove_pre_set_callback(self, callback: PreSet) -> None:
         """Stop calling ``callback``; ValueError if it was not added."""
-        self._pre.remove(callback)
+        self._pre = _without(self._pre, callback)
 
     def remove_on_set_callback(self, callback: OnSet) -> None:
         """Stop calling ``callback``; ValueError if it was not added."""
-        self._on_set.remove(callback)
+        self._on_set = _without(self._on_set, callback)
 
     def remove_post_set_callback(self, callback: PostSet) -> None:
         """Stop calling ``callback``; ValueError if it was not added."""
-        self._post.remove(callback)
+        self._post = _without(self._post, callback)
 
     # -- setting ----------------------------------------------------------------
 
@@ -445,6 +464,12 @@ def _stored(param: Parameter, descriptor: ParameterDescriptor | None) -> Paramet
     if param.type_ is declared or param.type_ is ParameterType.NOT_SET:
         return param
     return Parameter(param.name, declared, param.value)  # an int for a DOUBLE, [] for a typed array
+
+
+def _without(callbacks: tuple[Any, ...], callback: Any) -> tuple[Any, ...]:
+    rest = list(callbacks)
+    rest.remove(callback)  # ValueError when it was never added, as list.remove
+    return tuple(rest)
 
 
 def _callable(callback: Any) -> Any:

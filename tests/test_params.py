@@ -394,6 +394,14 @@ async def test_every_node_has_use_sim_time():
         assert not node.set_parameters([Parameter("use_sim_time", value="yes")])[0].successful
         with pytest.raises(ParameterAlreadyDeclaredException):
             node.declare_parameter("use_sim_time", False)
+        other = rt.spawn(Bare, name="other")
+        assert other.get_parameter("use_sim_time").value is False  # each node's own
+        assert other.describe_parameter("use_sim_time") == ParameterDescriptor(name="use_sim_time", type=1)
+        assert other.describe_parameter("use_sim_time") is not node.describe_parameter("use_sim_time")
+        given = rt.spawn(Bare, name="given", params={"use_sim_time": True})
+        assert given.get_parameter("use_sim_time").value is True
+        with pytest.raises(InvalidParameterTypeException, match="use_sim_time"):
+            rt.spawn(Bare, name="wrong", params={"use_sim_time": "yes"})
 
 
 
