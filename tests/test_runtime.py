@@ -2,6 +2,11 @@
 
 from __future__ import annotations
 
+import gc
+import json
+import subprocess
+import sys
+
 import anyio
 import pytest
 
@@ -142,8 +147,6 @@ async def test_a_node_built_under_spawning_runs_on_the_actor_it_is_given():
 
 
 def test_frozen_startup_pauses_collection_then_freezes_what_was_built():
-    import gc
-
     from actors.runtime import frozen_startup
 
     assert gc.isenabled()
@@ -155,3 +158,70 @@ def test_frozen_startup_pauses_collection_then_freezes_what_was_built():
         assert gc.isenabled() and gc.get_freeze_count() >= frozen + len(built)
     finally:
         gc.unfreeze()
+
+
+class Spawned(Node):
+    """Notes whether the cyclic collector ran while it was built."""
+
+    collecting: list[bool] = []
+
+    def __init__(self) -> None:
+        super().__init__("spawned")
+        Spawned.collecting.append(gc.isenabled())
+
+
+async def test_a_burst_of_spawns_runs_with_the_collector_paused_until_the_loop_runs_again():
+    Spawned.collecting = []
+    async with Runtime() as rt:
+        assert gc.isenabled()
+        for i in range(3):
+            rt.spawn(Spawned, name=f"s{i}")
+        assert Spawned.collecting == [False, False, False]
+        await anyio.sleep(0)
+        assert gc.isenabled()
+        gc.disable()  # the embedding code's choice is left alone
+        try:
+            rt.spawn(Spawned, name="later")
+            await anyio.sleep(0)
+            assert not gc.isenabled()
+        finally:
+            gc.enable()
+
+
+BURST = """
+import asyncio, gc, json
+from actors import Node, Runtime
+
+class Idle(Node):
+    def __init__(self):
+        super().__init__("idle")
+        self.create_timer(1.0, lambda: None)
+
+full = []
+gc.callbacks.append(lambda phase, info: phase == "start" and info["generation"] == 2 and full.append(1))
+
+async def main():
+    async with Runtime() as rt:
+        rt.spawn(Idle, name="warm")
+        await asyncio.sleep(0)
+        gc.collect()
+        full.clear()
+        for i in range({count}):
+            rt.spawn(Idle, name=f"n{{i}}")
+        during = len(full)
+        await asyncio.sleep(0)
+        print(json.dumps([during, len(full), gc.get_count()[0]]))
+
+asyncio.run(main())
+"""
+
+
+@pytest.mark.parametrize(("count", "collections"), [(50, 0), (3000, 1)])
+def test_a_burst_that_grows_the_heap_by_a_quarter_ends_with_one_full_collection(count, collections):
+    # A fresh interpreter: the test process's own heap would hide the burst.
+    out = subprocess.run([sys.executable, "-c", BURST.format(count=count)], capture_output=True, text=True, check=True)
+    during, after, young = json.loads(out.stdout)
+    assert during == 0  # none while spawning
+    assert after == collections
+    if collections:
+        assert young < 1000  # what the burst built was collected, not left to the next seconds
