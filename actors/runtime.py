@@ -189,7 +189,7 @@ class Runtime:
         if not self._burst:
             self._begin_burst()
         child = Child(
-            cls, name=name, namespace=namespace, params=params, remap=remap, restart=RestartType(restart),
+            cls, name=name, namespace=namespace, params=params, remap=remap, restart=restart,
             args=args, kwargs=kwargs,
         )
         try:

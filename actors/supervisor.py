@@ -95,7 +95,7 @@ class Child:
         namespace: str | None,
         params: Mapping[str, Any] | None,
         remap: Mapping[str, str] | None,
-        restart: RestartType,
+        restart: RestartType | str,
         args: tuple[Any, ...] = (),
         kwargs: Mapping[str, Any] | None = None,
     ) -> None:
@@ -107,7 +107,8 @@ class Child:
         self.namespace = namespace
         self.params = dict(params or {})
         self.remap = dict(remap or {})
-        self.restart = RestartType(restart)
+        # RestartType(x) costs an enum lookup even for a member: once per spawn is enough.
+        self.restart = restart if type(restart) is RestartType else RestartType(restart)
         self.core: NodeCore | None = None
         self.restarts = 0
         self.crashes = 0
