@@ -181,7 +181,10 @@ class Runtime:
         spawn's own, every other argument goes to the constructor (again, to each
         restarted instance).  Returns the instance (a restart makes a new one: see
         :meth:`node`).  Raises what the constructor raises, InvalidNameError for a
-        bad or duplicate name, and RuntimeError outside ``async with``.
+        bad or duplicate name, and RuntimeError outside ``async with``.  Spawns
+        made before the loop runs again run with the cyclic garbage collector
+        paused, and a burst of them that grew the heap by a quarter ends with
+        one full collection.
         """
         self._require_running()
         if not (isinstance(cls, type) and issubclass(cls, Node)):
@@ -313,11 +316,11 @@ def frozen_startup() -> Iterator[None]:
     """Spawn a graph's nodes inside: garbage collection waits, and what they built is frozen after.
 
     A graph allocates most of what it will ever hold while it starts; the
-    cyclic collector then traverses all of it again and again (spawning
-    10,000 nodes cost about twice as much with it on).  Inside the block it is
-    paused; at the end ``gc.freeze()`` moves everything alive into the
-    permanent generation, so later collections (during timer ticks and
-    message delivery) skip it.  ``python -m actors.run`` starts graphs this
+    cyclic collector then traverses all of it again and again.  Inside the
+    block it is paused (``Runtime.spawn`` pauses it only until the loop runs
+    again, and may end with a full collection); at the end ``gc.freeze()``
+    moves everything alive into the permanent generation, so later
+    collections (during timer ticks and message delivery) skip it.  ``python -m actors.run`` starts graphs this
     way.  Process-wide, like ``gc`` itself: embedding code decides.
     """
     enabled = gc.isenabled()
