@@ -43,7 +43,7 @@ from actors.errors import MessageValidationError
 from actors.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType
 from actors.layout import MessageLayout, layout
 
-__all__ = ["snapshotter", "snapshot", "FLOAT32_MAX"]
+__all__ = ["snapshotter", "checker", "snapshot", "FLOAT32_MAX"]
 
 #: The largest finite float32; a float32 field holding a larger finite value is refused.
 FLOAT32_MAX: float = struct.unpack("<f", b"\xff\xff\x7f\x7f")[0]
@@ -51,6 +51,7 @@ FLOAT32_MAX: float = struct.unpack("<f", b"\xff\xff\x7f\x7f")[0]
 Snapshot = Callable[[Any], Any]
 _cache: dict[type, Snapshot] = {}  # entry points, by class
 _bodies: dict[type, Snapshot] = {}  # bodies for array elements (they raise _Invalid), by class
+_checks: dict[type, Callable[[Any], None]] = {}  # the checks without the copy, by class
 
 
 def snapshotter(cls: type) -> Snapshot:
@@ -69,6 +70,27 @@ def snapshotter(cls: type) -> Snapshot:
             found = _identity
         _cache[cls] = found
     return found
+
+
+def checker(cls: type) -> Callable[[Any], None]:
+    """The check of message class ``cls``: :func:`snapshotter`'s function without the copy.
+
+    It raises MessageValidationError for exactly the messages the snapshot
+    refuses, and returns None: for a message nobody will receive, checked as
+    rclpy's serialisation would check it, with nothing copied.
+    """
+    found = _checks.get(cls)
+    if found is None:
+        try:
+            found = _generate(layout(cls), entry=True, copy=False)
+        except TypeError:
+            found = _ignore
+        _checks[cls] = found
+    return found
+
+
+def _ignore(msg: Any) -> None:
+    return None
 
 
 def snapshot(msg: Any) -> Any:
@@ -96,20 +118,27 @@ def _invalid(exc: _Invalid, ros_type: str) -> MessageValidationError:
 # -- the generator ------------------------------------------------------------------
 
 
-def _generate(top: MessageLayout, *, entry: bool) -> Snapshot:
+def _generate(top: MessageLayout, *, entry: bool, copy: bool = True) -> Snapshot:
     """Compile the function for ``top``: nested messages inlined, arrays of messages through their own body.
 
     An entry point turns a field's _Invalid into MessageValidationError (a
     try block costs nothing until it raises); a body lets it out for the
-    array holding it to prefix its index.
+    array holding it to prefix its index.  Without ``copy``, the function
+    makes the same checks and returns None, copying and storing nothing.
     """
     indent = "        " if entry else "    "
-    lines: list[str] = [f"def snapshot_{top.cls.__name__}(m):"]
+    name = f"{'snapshot' if copy else 'check'}_{top.cls.__name__}"
+    lines: list[str] = [f"def {name}(m):"]
     if entry:
         lines.append("    try:")
-    lines.append(f"{indent}c0 = m.__copy__()")
+    if copy:
+        lines.append(f"{indent}c0 = m.__copy__()")
     names: dict[str, Any] = {**_HELPERS, "ros_type": top.ros_type}
     counter = itertools.count(1)
+
+    def store(obj: str, field: str, fixed: str, indent: str) -> None:
+        # Keep what a check made of the value in the copy; a bare check only needs it made.
+        lines.append(f"{indent}{obj}.{field} = {fixed}" if copy else f"{indent}{fixed}")
 
     def emit(fields: MessageLayout, obj: str, prefix: str, indent: str) -> None:
         for field in fields.fields if not fields.placeholder else ():
@@ -119,35 +148,41 @@ def _generate(top: MessageLayout, *, entry: bool) -> Snapshot:
             ftype = field.type
             if ftype.array:
                 call = _array_call(ftype, field.nested, value, path, names)
-                if ftype.base in FLOATS:
+                if ftype.base not in FLOATS:
+                    store(obj, field.name, call, indent)
+                elif copy:
                     # The common case inlined: a list of floats that fits needs only a copy.
                     lines.append(f"{indent}if {_float_list_test(ftype, value)}:")
                     lines.append(f"{indent}    {obj}.{field.name} = {value}.copy()")
                     lines.append(f"{indent}else:")
                     lines.append(f"{indent}    {obj}.{field.name} = {call}")
                 else:
-                    lines.append(f"{indent}{obj}.{field.name} = {call}")
+                    lines.append(f"{indent}if not ({_float_list_test(ftype, value)}):")
+                    lines.append(f"{indent}    _check_floats{call[len('_floats'):]}")
             elif field.nested is not None:
                 cls_name = _bind(names, field.nested.cls)
-                copy = f"c{next(counter)}"
                 lines.append(f"{indent}if type({value}) is not {cls_name}:")
                 lines.append(f"{indent}    _wrong({path!r}, {_describe(ftype)!r}, {value})")
-                lines.append(f"{indent}{copy} = {value}.__copy__()")
-                emit(field.nested, copy, path + ".", indent)
-                lines.append(f"{indent}{obj}.{field.name} = {copy}")
+                if copy:
+                    nested = f"c{next(counter)}"
+                    lines.append(f"{indent}{nested} = {value}.__copy__()")
+                    emit(field.nested, nested, path + ".", indent)
+                    lines.append(f"{indent}{obj}.{field.name} = {nested}")
+                else:
+                    emit(field.nested, value, path + ".", indent)
             else:
                 test, fix = _scalar(ftype, value, path)
                 lines.append(f"{indent}if {test}:")
-                lines.append(f"{indent}    {obj}.{field.name} = {fix}")
+                store(obj, field.name, fix, indent + "    ")
 
-    emit(top, "c0", "", indent)
-    lines.append(f"{indent}return c0")
+    emit(top, "c0" if copy else "m", "", indent)
+    lines.append(f"{indent}return {'c0' if copy else 'None'}")
     if entry:
         lines.append("    except _Invalid as exc:")
         lines.append("        raise _invalid(exc, ros_type) from None")
     source = "\n".join(lines) + "\n"
-    exec(compile(source, f"<snapshot of {top.ros_type}>", "exec"), names)  # noqa: S102 - our own source
-    function: Snapshot = names[f"snapshot_{top.cls.__name__}"]
+    exec(compile(source, f"<{'snapshot' if copy else 'check'} of {top.ros_type}>", "exec"), names)  # noqa: S102 - our own source
+    function: Snapshot = names[name]
     return function
 
 
@@ -338,6 +373,22 @@ def _floats(value: Any, path: str, shape: Shape, single: bool) -> list[float]:
     return items
 
 
+def _check_floats(value: Any, path: str, shape: Shape, single: bool) -> None:
+    """What :func:`_floats` checks, without the list: a float numpy vector is checked where it is."""
+    if _float_vector(value):
+        _sized(value, path, shape)
+        if not single or value.dtype.char == "f" or _vector_fits_float32(value):
+            return
+    _floats(value, path, shape, single)  # anything else, and to name the value that does not fit
+
+
+def _vector_fits_float32(vector: Any) -> bool:
+    # No finite value beyond float32's range (infinities and NaN fit): whatever lies beyond
+    # it is an infinity.  Five calls into numpy, none of which makes a Python float.
+    numpy = sys.modules["numpy"]
+    return numpy.count_nonzero(numpy.abs(vector) > FLOAT32_MAX) == numpy.count_nonzero(numpy.isinf(vector))
+
+
 def _float_vector(value: Any) -> bool:
     """Whether ``value`` is a 1-D numpy array of float64 or float32 (whose ``tolist()`` gives floats)."""
     numpy = sys.modules.get("numpy")  # not imported: no numpy array can exist
@@ -415,6 +466,7 @@ _HELPERS: Mapping[str, Any] = {
     "_float": _float,
     "_str": _str,
     "_floats": _floats,
+    "_check_floats": _check_floats,
     "_ints": _ints,
     "_bools": _bools,
     "_strs": _strs,

@@ -2,7 +2,8 @@
 
 ``Publisher.publish`` is synchronous and O(subscribers): it checks the type,
 takes a snapshot of the message (:mod:`actors.snapshot`: every field checked,
-what is mutable copied, never serialised), appends that one snapshot to each
+what is mutable copied, never serialised; with no one to receive it, only
+checked), appends that one snapshot to each
 matched subscription's queue and wakes the owning node once per batch.  What
 subscribers receive is the message as it was when published, whatever the
 publisher does with its object afterwards, as in rclpy.  Each
@@ -49,7 +50,7 @@ import msgspec
 from actors.actor import CallbackFailed, Mailbox, Owner
 from actors.errors import MessageRefused, TopicTypeError
 from actors.refusals import Refusals
-from actors.snapshot import snapshotter
+from actors.snapshot import checker, snapshotter
 from actors.qos import (
     DurabilityPolicy,
     HistoryPolicy,
@@ -120,7 +121,7 @@ class Publisher:
     """Publishes messages of one type on one topic.  Create with ``Node.create_publisher``."""
 
     __slots__ = (
-        "topic_name", "msg_type", "qos", "node", "_subs", "_tracked", "_history", "_snapshot", "_events",
+        "topic_name", "msg_type", "qos", "node", "_subs", "_tracked", "_history", "_snapshot", "_check", "_events",
         "__weakref__",
     )
 
@@ -135,6 +136,7 @@ class Publisher:
                                           durability=DurabilityPolicy.TRANSIENT_LOCAL)
         self.qos = qos
         self._snapshot = snapshotter(msg_type)
+        self._check = checker(msg_type)
         self._events: Any = None  # an actors.qos_events.EndpointEvents, for endpoints with event callbacks
         self._subs: dict[Subscription, None] = {}  # matched subscriptions, in match order
         self._tracked: dict[Subscription, None] = {}  # those of them that note who sent what
@@ -156,6 +158,9 @@ class Publisher:
                 f"publisher on {self.topic_name} takes {type_name(self.msg_type)}, "
                 f"got {type_name(type(msg))}"
             )
+        if not self._subs and self._history is None:
+            self._check(msg)  # nobody receives it: checked as rclpy's serialisation checks it, not copied
+            return
         msg = self._snapshot(msg)
         if self._history is not None:
             self._history.append(msg)

@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from actors import codec
 from actors.errors import MessageValidationError
-from actors.snapshot import FLOAT32_MAX, snapshot, snapshotter
+from actors.snapshot import FLOAT32_MAX, checker, snapshot, snapshotter
 from conftest import generated_package
 from goldens.values import DrawPick, message, shipped_messages
 from interfaces.geometry_msgs.msg import PoseWithCovariance, Twist, Vector3
@@ -52,6 +52,16 @@ def test_a_snapshot_equals_the_message_and_shares_nothing_mutable(name, data):
     assert _shared_mutables(copy, msg) == []
 
 
+@settings(max_examples=150, deadline=None)
+@given(name=st.sampled_from(SHIPPED), data=st.data())
+def test_the_check_alone_passes_what_the_snapshot_passes_and_leaves_the_message_as_it_was(name, data):
+    cls = codec.get_type(name)
+    msg = message(cls, DrawPick(data))
+    before = snapshot(msg)
+    assert checker(cls)(msg) is None
+    assert msg == before and _shared_mutables(msg, before) == []
+
+
 def test_immutable_leaves_are_shared_not_copied():
     text, blob = "x" * 1000, bytes(1000)
     msg = ParameterValue(string_value=text, byte_array_value=blob)
@@ -88,11 +98,22 @@ def test_what_rclpy_accepts_beyond_the_exact_type_is_delivered_in_the_canonical_
 
 
 def _outcome(msg: object) -> tuple[object, ...]:
-    """What the snapshot makes of ``msg``: its ranges, each value's type, or the error's text."""
+    """What the snapshot makes of ``msg``: its ranges, each value's type, or the error's text.
+
+    The check alone must refuse it with the same text, or pass it.
+    """
+    try:
+        checker(type(msg))(msg)
+    except MessageValidationError as exc:
+        checked = str(exc)
+    else:
+        checked = None
     try:
         ranges = snapshot(msg).ranges
     except MessageValidationError as exc:
+        assert checked == str(exc)
         return ("refused", str(exc))
+    assert checked is None
     return ("delivered", repr(ranges), [type(v) for v in ranges])  # repr: nan equals itself
 
 
@@ -145,6 +166,9 @@ def test_errors_name_the_type_the_field_and_the_value(msg, error):
     with pytest.raises(MessageValidationError) as raised:
         snapshot(msg)
     assert str(raised.value) == error
+    with pytest.raises(MessageValidationError) as raised:
+        checker(type(msg))(msg)
+    assert str(raised.value) == error
 
 
 SHAPES = """\
@@ -177,9 +201,10 @@ def test_bounds_and_sizes_are_checked(shapes):
         (shape(parts=[part(id=-1)]), f"field 'parts[0].id' of {where}: -1 is out of range for uint8 (0..255)"),
     ]
     for msg, error in cases:
-        with pytest.raises(MessageValidationError) as raised:
-            snapshot(msg)
-        assert str(raised.value) == error
+        for check in (snapshot, checker(shape)):
+            with pytest.raises(MessageValidationError) as raised:
+                check(msg)
+            assert str(raised.value) == error
     good = shape(name="abcd", few=[1, 2], xyz=[1.0, 2.0, 3.0], parts=[part(id=7, tag="ok")])
     copy = snapshot(good)
     assert copy == good and copy.parts[0] is not good.parts[0]
