@@ -548,6 +548,7 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
     def __init__(self, *, epoch: float = 0.0, idle_timeout: float = 5.0) -> None:
         self._now = 0.0
         self._executor_jobs = 0
+        self._thread_limiter: Any = None  # anyio's default thread limiter of this loop, once it exists
         self.busy_poll: float | None = None  # see _JumpingSelector.select
         self.epoch = epoch
         self.idle_timeout = idle_timeout
@@ -580,13 +581,18 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
 
     def threads_busy(self) -> bool:
         """Whether executor jobs or anyio worker-thread calls are still running."""
-        return self._executor_jobs > 0 or _anyio_threads_busy(self)
+        if self._executor_jobs > 0:
+            return True
+        limiter = self._thread_limiter
+        if limiter is None:  # made by anyio at the loop's first to_thread call, then kept
+            limiter = self._thread_limiter = _anyio_thread_limiter(self)
+        return limiter is not None and limiter.borrowed_tokens > 0
 
 
 _anyio_run_vars: Any = None  # anyio's per-loop run vars and its limiter's key, looked up once
 
 
-def _anyio_threads_busy(loop: asyncio.AbstractEventLoop) -> bool:
+def _anyio_thread_limiter(loop: asyncio.AbstractEventLoop) -> Any:
     # anyio runs ``to_thread.run_sync`` in its own workers, outside run_in_executor,
     # holding a token of the loop's default limiter while the call runs.  anyio has
     # no public way to ask this from outside a task, so read its per-loop run vars;
@@ -602,8 +608,7 @@ def _anyio_threads_busy(loop: asyncio.AbstractEventLoop) -> bool:
         else:
             _anyio_run_vars = (_run_vars, _default_thread_limiter)
     if not _anyio_run_vars:  # pragma: no cover - a future anyio
-        return False
+        return None
     run_vars, key = _anyio_run_vars
     found = run_vars.get(loop)
-    limiter = found.get(key) if found else None
-    return limiter is not None and limiter.borrowed_tokens > 0
+    return found.get(key) if found else None

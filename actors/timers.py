@@ -112,7 +112,7 @@ class Deadlines:
         return len(self._heap) - self._stale
 
     def add(self, when: float, timer: Timer) -> None:
-        """Fire ``timer._due()`` at loop time ``when``, unless ``timer._when`` changes first."""
+        """Schedule ``timer`` in its node at loop time ``when``, unless ``timer._when`` changes first."""
         heappush(self._heap, (when, next(self._order), timer))
         if when < self._armed:
             self._arm(when)
@@ -167,7 +167,8 @@ class Deadlines:
         while heap and heap[0][0] <= limit:
             when, _, timer = heappop(heap)
             if timer._when == when:
-                timer._due()
+                timer._when = None  # due: it waits for no deadline until its callback has run
+                timer.node.actor.schedule(timer)
             else:
                 self._stale -= 1
         try:
@@ -241,10 +242,6 @@ class Timer:
             self._when = None
             self._deadlines.discard()
 
-    def _due(self) -> None:
-        self._when = None
-        self.node.actor.schedule(self)
-
     def _run(self) -> Awaitable[None] | None:
         if self._canceled:
             return None
@@ -274,11 +271,17 @@ class Timer:
 
     def _rearm(self) -> None:
         if not self._canceled and self._when is None:
-            # Next deadline: the first multiple of the period after now.  The
-            # max() guards float rounding when now sits exactly on a deadline.
-            elapsed = self._loop.time() - self._start
-            self._k = max(self._k + 1, int(elapsed / self.period) + 1)
-            self._arm()
+            # Next deadline: the next multiple of the period, or after an overrun the first
+            # one after now (the max() guards float rounding when now sits on a deadline).
+            k = self._k + 1
+            when = self._start + k * self.period
+            now = self._loop.time()
+            if when <= now:
+                k = max(k, int((now - self._start) / self.period) + 1)
+                when = self._start + k * self.period
+            self._k = k
+            self._when = when
+            self._deadlines.add(when, self)
 
     def _info(self) -> TimerInfo:
         actual = self.clock.now_ns()
