@@ -35,6 +35,7 @@ def test_same_seed_same_numbers_and_streams_are_independent() -> None:
     assert odometry != (1.0, 2.0, 0.0, 0.2, 0.1) and odometry == pytest.approx(
         (1.0, 2.0, 0.0, 0.2, 0.1), abs=0.3
     )
+    assert {type(value) for value in odometry} == {float}  # what a message field takes as it is
 
 
 def test_infinite_ranges_stay_infinite() -> None:

@@ -51,12 +51,12 @@ class NoiseSource:
     def odometry(
         self, x: float, y: float, theta: float, v: float, w: float
     ) -> tuple[float, float, float, float, float]:
-        """The pose (m, m, rad) and twist (m/s, rad/s) plus noise; unchanged when it is off."""
+        """The pose (m, m, rad) and twist (m/s, rad/s) plus noise, as Python floats; unchanged when it is off."""
         noise = self.noise
         if not noise.odometry:
             return x, y, theta, v, w
         scale = (noise.position, noise.position, noise.heading, noise.linear, noise.angular)
-        dx, dy, dtheta, dv, dw = self._odometry.normal(0.0, scale)
+        dx, dy, dtheta, dv, dw = self._odometry.normal(0.0, scale).tolist()  # not numpy scalars
         return x + dx, y + dy, theta + dtheta, v + dv, w + dw
 
     def ranges(self, distances: np.ndarray) -> np.ndarray:

@@ -146,8 +146,7 @@ class TurtleBot(Node):
     def publish_odometry(self) -> None:
         """Publish odom, the ground-truth pose, and the contact state if it changed."""
         stamp = self.get_clock().now().to_msg()
-        # Plain floats: noise arrives as numpy scalars, which no codec encodes.
-        x, y, theta, v, w = map(float, self.robot.odometry())
+        x, y, theta, v, w = self.robot.odometry()
         x0, y0, theta0 = self._start
         # Odometry starts at the start pose: express the pose in that frame.
         c, s = self._start_cos_sin
