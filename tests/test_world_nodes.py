@@ -153,6 +153,22 @@ async def test_odometry_and_ground_truth_turn_with_the_robot_message_by_message(
     assert all(step == pytest.approx(0.5 * 0.05, abs=0.5 * 0.01 + 1e-9) for step in turning)
 
 
+async def test_scans_at_10_hz_odometry_at_20_hz_and_the_ground_truth_without_odometry_noise():
+    def ms(header: object) -> int:
+        return header.stamp.sec * 1000 + header.stamp.nanosec // 1_000_000
+
+    async with Runtime() as rt:
+        rt.spawn(World, params={"world": "empty"})
+        rt.spawn(TurtleBot, params={"noise_position": 0.05, "seed": 3})  # starts at the world's origin
+        observer = rt.spawn(Observer)
+        await anyio.sleep(1.02)
+    assert [ms(scan.header) for scan in observer.scans] == list(range(100, 1001, 100))
+    assert [ms(odom.header) for odom in observer.odom] == list(range(50, 1001, 50))
+    # The robot stands still at the origin: the truth says so, the odometry is off by its noise.
+    assert {(x, y) for _, x, y in observer.poses} == {(0.0, 0.0)} and len(observer.poses) == 20
+    assert all(odom.pose.pose.position.x != 0.0 for odom in observer.odom)
+
+
 async def test_namespaced_robots_have_their_own_topics():
     async with Runtime() as rt:
         rt.spawn(World)

@@ -51,7 +51,8 @@ from .sim import world_of
 __all__ = ["TurtleBot"]
 
 ODOM_PERIOD = 0.05
-SCAN_PERIOD = 0.1
+SCAN_EVERY = 2  # odometry ticks per scan
+SCAN_PERIOD = ODOM_PERIOD * SCAN_EVERY
 
 
 def yaw_quaternion(yaw: float) -> Quaternion:
@@ -129,8 +130,17 @@ class TurtleBot(Node):
         self._touching: bool | None = None
         # Commands come from outside (the command line, other nodes): name who sends a bad one.
         self.create_subscription(Twist, "cmd_vel", self.on_cmd_vel, 10).track_senders()
-        self.create_timer(ODOM_PERIOD, self.publish_odometry)
-        self.create_timer(SCAN_PERIOD, self.publish_scan)
+        # One timer for both: the scan's ticks fell on every other odometry tick anyway, and
+        # each tick of a timer costs the runtime a wake-up of the node.
+        self._ticks = 0
+        self.create_timer(ODOM_PERIOD, self.tick)
+
+    def tick(self) -> None:
+        """Publish odometry (20 Hz) and, on every other tick, the scan (10 Hz)."""
+        self.publish_odometry()
+        self._ticks += 1
+        if self._ticks % SCAN_EVERY == 0:
+            self.publish_scan()
 
     def on_cmd_vel(self, msg: Twist) -> None:
         """Command the robot: linear.x (m/s) and angular.z (rad/s); MessageRefused if they are not finite.
@@ -146,7 +156,8 @@ class TurtleBot(Node):
     def publish_odometry(self) -> None:
         """Publish odom, the ground-truth pose, and the contact state if it changed."""
         stamp = self.get_clock().now().to_msg()
-        x, y, theta, v, w = self.robot.odometry()
+        odometry = self.robot.odometry()
+        x, y, theta, v, w = odometry
         x0, y0, theta0 = self._start
         # Odometry starts at the start pose: express the pose in that frame.
         c, s = self._start_cos_sin
@@ -166,7 +177,8 @@ class TurtleBot(Node):
             rotation.z, rotation.w = pose.orientation.z, pose.orientation.w
             self.tf_pub.publish(self._tf)
 
-        truth = self.robot.pose
+        # Without odometry noise the odometry is the truth, read from the body once.
+        truth = self.robot.pose if self.robot.noise.odometry else odometry
         ground = self._ground
         ground.header.stamp = stamp
         ground.pose.position.x, ground.pose.position.y = truth.x, truth.y
