@@ -27,6 +27,7 @@ import asyncio
 import math
 import selectors
 import time
+import weakref
 from collections.abc import Callable
 from enum import IntEnum
 from typing import Any
@@ -496,17 +497,25 @@ class _JumpingSelector(selectors.DefaultSelector):
     def __init__(self, loop: VirtualTimeLoop) -> None:
         super().__init__()
         self._vloop = loop
+        # epoll says whether anything is ready in one C call (it is level-triggered: what it
+        # saw is still there for select()), where select() spends a microsecond in Python.
+        self._peek = self._selector.poll if isinstance(self, selectors.EpollSelector) else None
+
+    def _poll(self) -> list[tuple[selectors.SelectorKey, int]]:
+        if self._peek is not None and not self._peek(0, 1):
+            return []
+        return super().select(0)
 
     def select(self, timeout: float | None = None) -> list[tuple[selectors.SelectorKey, int]]:
         if timeout == 0:
-            return super().select(0)
+            return self._poll()
         loop = self._vloop
         # Ask the threads before polling: a thread hands its work over (call_soon_threadsafe
         # writes the self-pipe) before it goes idle, so once none is busy, the poll below sees
         # all they handed over.  Polled first, a hand-off between the poll and the question
         # would be missed and time would jump past the work it brings.
         busy = loop.threads_busy()
-        events = super().select(0)
+        events = self._poll()
         if events:
             return events
         if busy:
@@ -549,6 +558,7 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
         self._now = 0.0
         self._executor_jobs = 0
         self._thread_limiter: Any = None  # anyio's default thread limiter of this loop, once it exists
+        self._itself = weakref.ref(self)  # how anyio's per-loop run vars know this loop
         self.busy_poll: float | None = None  # see _JumpingSelector.select
         self.epoch = epoch
         self.idle_timeout = idle_timeout
@@ -585,14 +595,14 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
             return True
         limiter = self._thread_limiter
         if limiter is None:  # made by anyio at the loop's first to_thread call, then kept
-            limiter = self._thread_limiter = _anyio_thread_limiter(self)
+            limiter = self._thread_limiter = _anyio_thread_limiter(self._itself)
         return limiter is not None and limiter.borrowed_tokens > 0
 
 
 _anyio_run_vars: Any = None  # anyio's per-loop run vars and its limiter's key, looked up once
 
 
-def _anyio_thread_limiter(loop: asyncio.AbstractEventLoop) -> Any:
+def _anyio_thread_limiter(loop: weakref.ref[asyncio.AbstractEventLoop]) -> Any:
     # anyio runs ``to_thread.run_sync`` in its own workers, outside run_in_executor,
     # holding a token of the loop's default limiter while the call runs.  anyio has
     # no public way to ask this from outside a task, so read its per-loop run vars;
@@ -610,5 +620,7 @@ def _anyio_thread_limiter(loop: asyncio.AbstractEventLoop) -> Any:
     if not _anyio_run_vars:  # pragma: no cover - a future anyio
         return None
     run_vars, key = _anyio_run_vars
-    found = run_vars.get(loop)
+    # The WeakKeyDictionary's own dict, by the loop's weak reference: its get() builds one
+    # per call, and this runs on every jump until anyio makes the limiter.
+    found = run_vars.data.get(loop)
     return found.get(key) if found else None
