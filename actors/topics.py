@@ -121,8 +121,8 @@ class Publisher:
     """Publishes messages of one type on one topic.  Create with ``Node.create_publisher``."""
 
     __slots__ = (
-        "topic_name", "msg_type", "qos", "node", "_subs", "_tracked", "_history", "_snapshot", "_check", "_events",
-        "__weakref__",
+        "topic_name", "msg_type", "qos", "node", "_subs", "_feeds", "_tracked", "_history", "_snapshot",
+        "_check", "_events", "__weakref__",
     )
 
     def __init__(self, node: Owner, topic_name: str, msg_type: type, qos: QoSProfile | QoSSnapshot | int) -> None:
@@ -139,6 +139,9 @@ class Publisher:
         self._check = checker(msg_type)
         self._events: Any = None  # an actors.qos_events.EndpointEvents, for endpoints with event callbacks
         self._subs: dict[Subscription, None] = {}  # matched subscriptions, in match order
+        # The same as a tuple, made again by the first publish after a change (None): a loop
+        # over a tuple costs 30 ns less per publish than one over a dict, and a change stays O(1).
+        self._feeds: tuple[Subscription, ...] | None = ()
         self._tracked: dict[Subscription, None] = {}  # those of them that note who sent what
         self._history: deque[Any] | None = (
             deque(maxlen=qos.depth) if qos.durability == DurabilityPolicy.TRANSIENT_LOCAL else None
@@ -158,13 +161,16 @@ class Publisher:
                 f"publisher on {self.topic_name} takes {type_name(self.msg_type)}, "
                 f"got {type_name(type(msg))}"
             )
-        if not self._subs and self._history is None:
+        feeds = self._feeds
+        if feeds is None:
+            feeds = self._feeds = tuple(self._subs)
+        if not feeds and self._history is None:
             self._check(msg)  # nobody receives it: checked as rclpy's serialisation checks it, not copied
             return
         msg = self._snapshot(msg)
         if self._history is not None:
             self._history.append(msg)
-        for sub in self._subs:
+        for sub in feeds:
             # Subscription._push, inlined: this loop is the hottest path of the runtime.
             queue = sub._queue
             if len(queue) >= sub._limit:
@@ -177,6 +183,18 @@ class Publisher:
         if self._tracked:  # rare: subscriptions that refused messages (Subscription.track_senders)
             for sub in self._tracked:
                 sub._senders.append((msg, self))  # type: ignore[union-attr]
+
+    def _connect(self, sub: Subscription) -> None:
+        """Feed ``sub`` from the next publish on (the topic table's matching, a transport's outlet)."""
+        self._subs[sub] = None
+        self._feeds = None
+
+    def _disconnect(self, sub: Subscription) -> bool:
+        """Stop feeding ``sub``; whether it was fed."""
+        if self._subs.pop(sub, False) is None:
+            self._feeds = None
+            return True
+        return False
 
     def get_subscription_count(self) -> int:
         """How many subscriptions this publisher feeds."""
@@ -448,7 +466,7 @@ class TopicTable:
             return False
         if sub._queue is None:
             sub._queue = deque()
-        pub._subs[sub] = None
+        pub._connect(sub)
         if sub._senders is not None:
             pub._tracked[sub] = None
         if pub.qos.lifespan_ns:
@@ -470,10 +488,8 @@ class TopicTable:
         topic.subscriptions[new] = None
         new._topic = topic
         for pub in topic.publishers:
-            subs = pub._subs
-            if old in subs:
-                del subs[old]
-                subs[new] = None
+            if pub._disconnect(old):
+                pub._connect(new)
                 pub._tracked.pop(old, None)  # the new one tracks again if it adopts the old one's senders
 
     def remove_publisher(self, pub: Publisher) -> None:
@@ -486,6 +502,7 @@ class TopicTable:
             for sub in pub._subs:
                 _tell(pub, sub, -1, to_pub=False)  # the publisher itself is gone: only its subscriptions hear
             pub._subs = {}
+            pub._feeds = ()
             pub._tracked = {}
             for listener in self.listeners:
                 listener.endpoint_removed(topic, pub)
@@ -503,7 +520,7 @@ class TopicTable:
                 sub._events.stop()
             for pub in topic.publishers:
                 pub._tracked.pop(sub, None)
-                if pub._subs.pop(sub, False) is None:
+                if pub._disconnect(sub):
                     _tell(pub, sub, -1, to_sub=False)
             for listener in self.listeners:
                 listener.endpoint_removed(topic, sub)

@@ -180,6 +180,41 @@ async def test_removing_a_subscription_keeps_the_others_in_order():
         assert woken == ["s1", "s3", "s4"]  # woken in subscription order
 
 
+async def test_each_publish_feeds_the_subscriptions_matched_at_that_moment():
+    # The publisher keeps its subscriptions as a tuple made again after each change: one
+    # that joins, leaves or is replaced by a restart between two publishes must count.
+    heard: dict[str, list[int]] = {}
+
+    class Listener(Node):
+        def __init__(self) -> None:
+            super().__init__("listener")
+            heard.setdefault(self.get_name(), [])
+            self.sub = self.create_subscription(Int64, "numbers", self.on_number, 10)
+
+        def on_number(self, msg: Int64) -> None:
+            heard[self.get_name()].append(msg.data)
+            if msg.data == 3 and self.get_name() == "crashy":
+                raise RuntimeError("restart on purpose")
+
+    async with Runtime() as rt:
+        source = rt.spawn(Source)
+        first = rt.spawn(Listener, name="first")
+        source.pub.publish(Int64(data=1))
+        await anyio.sleep(0.01)
+        rt.spawn(Listener, name="late")
+        rt.spawn(Listener, name="crashy")
+        source.pub.publish(Int64(data=2))
+        await anyio.sleep(0.01)
+        first.destroy_subscription(first.sub)
+        source.pub.publish(Int64(data=3))
+        await anyio.sleep(5)  # crashy crashes on 3 and is restarted
+        assert [n.crashes for n in rt.graph.nodes() if n.name == "/crashy"] == [1]
+        source.pub.publish(Int64(data=4))
+        await anyio.sleep(0.01)
+        assert heard == {"first": [1, 2], "late": [2, 3, 4], "crashy": [2, 3, 4]}
+        assert source.pub.get_subscription_count() == 2
+
+
 async def test_keep_last_drops_the_oldest_and_counts_the_drops():
     class SlowSink(Sink):
         qos = 10

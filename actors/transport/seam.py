@@ -117,11 +117,11 @@ class Outlet(Subscription):
 
     def attach(self) -> None:
         """Start receiving what the publisher publishes (only its messages, not its topic's)."""
-        self.publisher._subs[self] = None
+        self.publisher._connect(self)
 
     def detach(self) -> None:
         """Stop receiving; what is queued is still sent."""
-        self.publisher._subs.pop(self, None)
+        self.publisher._disconnect(self)
 
 
 def _fresh(msg: Any) -> Any:
