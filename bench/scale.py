@@ -7,10 +7,11 @@ seconds, then stops the whole graph.  ``spawn`` is wall time per node until
 every node runs; ``tick`` is process CPU time per timer tick (the machine is
 shared: CPU time is what one tick costs, wall time also holds other
 processes' load); ``stop`` is the wall time of the graceful stop (reverse
-order, hooks).  MODE ``plain`` spawns with the garbage collector as it is;
-``frozen`` spawns inside :func:`actors.runtime.frozen_startup`, as
-``python -m actors.run`` starts a graph (collection paused, then
-``gc.freeze()``).  The floor for a tick is 10,000 bare ``loop.call_at``
+order, hooks).  MODE ``plain`` spawns as embedding code does, with the
+garbage collector as it is (``Runtime.spawn`` pauses it for the burst and ends
+the burst with one full collection, counted in ``spawn``); ``frozen`` spawns
+inside :func:`actors.runtime.frozen_startup`, as ``python -m actors.run``
+starts a graph (collection paused, then ``gc.freeze()``).  The floor for a tick is 10,000 bare ``loop.call_at``
 chains at 10 Hz on the same loop, each tick a plain function call.
 """
 
