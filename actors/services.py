@@ -398,7 +398,7 @@ class ServiceTable:
     deferred ones through :meth:`deferred`.
     """
 
-    __slots__ = ("servers", "listeners", "_parked", "_watchers", "_timeouts", "_deferred", "_wanted")
+    __slots__ = ("servers", "listeners", "_parked", "_watchers", "_timeouts", "_deferred", "_wanted", "_prefixes")
 
     def __init__(self) -> None:
         self.servers: dict[str, Service] = {}
@@ -409,20 +409,17 @@ class ServiceTable:
         self._timeouts: CallTimeouts | None = None
         self._deferred: dict[str, Deferred] = {}  # by prefix: the node's full name
         self._wanted: set[str] = set()  # prefixes of the names clients were made for
+        self._prefixes: dict[str, int] = {}  # how many servers are registered under each prefix
 
     def defer(self, prefix: str, deferred: Deferred) -> bool:
         """Serve ``prefix/<kind>`` for each of ``deferred.kinds`` without building them yet.
 
         False (nothing registered: build them now) while listeners listen, when
-        a client was made for a name under ``prefix``, or when one of the names
-        is already served.
+        a client was made for a name under ``prefix``, or when a server already
+        has a name under it (building them then finds any clash).
         """
-        if self.listeners or prefix in self._wanted:
+        if self.listeners or prefix in self._wanted or prefix in self._prefixes:
             return False
-        servers = self.servers
-        for kind in deferred.kinds:
-            if prefix + "/" + kind in servers:
-                return False
         self._deferred[prefix] = deferred
         return True
 
@@ -499,6 +496,9 @@ class ServiceTable:
                 f"({type_name(existing.srv_type)})"
             )
         self.servers[name] = service
+        if existing is None:
+            prefix = name.rpartition("/")[0]
+            self._prefixes[prefix] = self._prefixes.get(prefix, 0) + 1
         if existing is None or existing is not replacing:  # a restart takes its place unheard
             for listener in self.listeners:
                 listener.service_added(service)
@@ -514,6 +514,11 @@ class ServiceTable:
         """Unregister ``service``; its queued calls fail."""
         if self.servers.get(service.service_name) is service:
             del self.servers[service.service_name]
+            prefix = service.service_name.rpartition("/")[0]
+            if self._prefixes[prefix] == 1:
+                del self._prefixes[prefix]
+            else:
+                self._prefixes[prefix] -= 1
             for listener in self.listeners:
                 listener.service_removed(service)
         while service._queue:

@@ -153,6 +153,11 @@ async def test_a_parameter_service_name_served_by_another_node_is_refused_either
         rt.spawn(Tuned)
         with pytest.raises(ServiceError, match="/tuned already serves it"):
             rt.spawn(Squatter)
+    async with Runtime() as rt:
+        rt.spawn(Squatter)
+        await rt.stop("squatter")
+        rt.spawn(Tuned)  # the name is free again, and the services wait to be needed as usual
+        assert list(rt.services.deferred("/tuned")) and "/tuned/get_parameters" not in rt.services.servers
 
 
 async def test_a_listener_joining_a_running_graph_sees_every_parameter_service():
