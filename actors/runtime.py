@@ -83,6 +83,7 @@ class Runtime:
         self._rosout: Publisher | None = None
         self._stopped: anyio.Event | None = None
         self._burst = False  # spawns since the loop last ran (see _begin_burst)
+        self._old_heap = 0  # objects in the oldest generation when a burst last counted them
 
     # -- lifecycle ------------------------------------------------------------
 
@@ -225,9 +226,16 @@ class Runtime:
         # instead, once, still part of the burst.  A smaller one is left to the collector's
         # ordinary course.  (While collection waits, nothing leaves the youngest generation:
         # its count is what the burst built, the oldest generation what was there before.)
+        # Counting the oldest generation takes a pass over it (tens of milliseconds for a
+        # few million objects): skipped when the last count, plus what a collection then
+        # kept, already shows the burst is too small.  If much of that died since, CPython
+        # runs the full collection itself later, as it would have anyway.
         built = gc.get_count()[0]
-        if built > _BIG_BURST and built > len(gc.get_objects(generation=2)) // 4:
-            gc.collect()
+        if built > _BIG_BURST and built * 4 > self._old_heap:
+            self._old_heap = len(gc.get_objects(generation=2))
+            if built * 4 > self._old_heap:
+                gc.collect()
+                self._old_heap += built
         gc.enable()
 
     async def stop(self, name: str) -> None:
