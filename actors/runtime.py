@@ -210,17 +210,24 @@ class Runtime:
         # The spawns made before the loop runs again are one burst, during which the cyclic
         # collector waits.  With it running, 10,000 spawns paid for four to six full
         # collections (each traversing everything built so far: half the cost of spawning);
-        # afterwards _end_burst does at most one.
+        # afterwards _end_burst does at most one.  It waits by a youngest-generation threshold
+        # no allocation count reaches, not by gc.disable(): the embedding code may disable or
+        # retune the collector meanwhile, and _end_burst must not undo that.
         self._burst = True
-        paused = gc.isenabled()  # not when the embedding code (or frozen_startup) paused it
-        if paused:
-            gc.disable()
-        self.loop.call_soon(self._end_burst, paused)
+        before = gc.get_threshold()
+        if gc.isenabled() and before[0] not in (0, _BURST_THRESHOLD):  # not paused already
+            gc.set_threshold(_BURST_THRESHOLD, *before[1:])
+            self.loop.call_soon(self._end_burst, before)
+        else:
+            self.loop.call_soon(self._end_burst, None)
 
-    def _end_burst(self, paused: bool) -> None:
+    def _end_burst(self, before: tuple[int, ...] | None) -> None:
         self._burst = False
-        if not paused:
-            return
+        if before is None or gc.get_threshold() != (_BURST_THRESHOLD, *before[1:]):
+            return  # not paused by this burst, or retuned since by the embedding code: theirs
+        gc.set_threshold(*before)
+        if not gc.isenabled():
+            return  # disabled meanwhile by the embedding code: no collection from us either
         # A burst that grew the heap by more than a quarter would make CPython's next full
         # collection come within seconds, among timer ticks and deliveries: it is done here
         # instead, once, still part of the burst.  A smaller one is left to the collector's
@@ -236,7 +243,6 @@ class Runtime:
             if built * 4 > self._old_heap:
                 gc.collect()
                 self._old_heap += built
-        gc.enable()
 
     async def stop(self, name: str) -> None:
         """Stop the node ``name`` (full or plain name) for good, running its shutdown hooks."""
@@ -308,6 +314,7 @@ class Runtime:
 
 
 
+_BURST_THRESHOLD = 2**31 - 1  # the youngest generation's threshold while a burst of spawns runs
 _BIG_BURST = 10_000  # container objects (a node with a publisher, a subscription and a timer builds about 24)
 
 

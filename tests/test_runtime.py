@@ -161,16 +161,26 @@ def test_frozen_startup_pauses_collection_then_freezes_what_was_built():
 
 
 class Spawned(Node):
-    """Notes whether the cyclic collector ran while it was built."""
+    """Notes whether the cyclic collector could run while it was built."""
 
     collecting: list[bool] = []
 
     def __init__(self) -> None:
         super().__init__("spawned")
-        Spawned.collecting.append(gc.isenabled())
+        # Paused means no allocation count can reach the youngest generation's threshold.
+        Spawned.collecting.append(gc.isenabled() and 0 < gc.get_threshold()[0] < 2**31 - 1)
 
 
-async def test_a_burst_of_spawns_runs_with_the_collector_paused_until_the_loop_runs_again():
+@pytest.fixture
+def collector():
+    """The collector as the test found it, restored afterwards."""
+    enabled, threshold = gc.isenabled(), gc.get_threshold()
+    yield threshold
+    gc.set_threshold(*threshold)
+    (gc.enable if enabled else gc.disable)()
+
+
+async def test_a_burst_of_spawns_runs_with_the_collector_paused_until_the_loop_runs_again(collector):
     Spawned.collecting = []
     async with Runtime() as rt:
         assert gc.isenabled()
@@ -178,14 +188,23 @@ async def test_a_burst_of_spawns_runs_with_the_collector_paused_until_the_loop_r
             rt.spawn(Spawned, name=f"s{i}")
         assert Spawned.collecting == [False, False, False]
         await anyio.sleep(0)
-        assert gc.isenabled()
-        gc.disable()  # the embedding code's choice is left alone
-        try:
-            rt.spawn(Spawned, name="later")
-            await anyio.sleep(0)
-            assert not gc.isenabled()
-        finally:
-            gc.enable()
+        assert gc.isenabled() and gc.get_threshold() == collector
+
+
+async def test_the_embedding_codes_own_collector_settings_outlast_a_burst(collector):
+    async with Runtime() as rt:
+        rt.spawn(Spawned, name="a")
+        gc.disable()  # after a spawn, in the same loop iteration
+        await anyio.sleep(0)
+        assert not gc.isenabled() and gc.get_threshold() == collector
+        rt.spawn(Spawned, name="b")  # a burst while disabled: left alone
+        await anyio.sleep(0)
+        assert not gc.isenabled()
+        gc.enable()
+        rt.spawn(Spawned, name="c")
+        gc.set_threshold(5000, 20, 20)  # retuned during the burst: kept
+        await anyio.sleep(0)
+        assert gc.isenabled() and gc.get_threshold() == (5000, 20, 20)
 
 
 BURST = """
