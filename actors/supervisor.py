@@ -232,7 +232,7 @@ class Supervisor:
 
     async def run(self) -> None:
         """Handle node exits until cancelled; raise Escalation when intensity is exceeded."""
-        async with self._receive:
+        with self._send, self._receive:  # closed here: a runtime leaves no stream to warn when collected
             async for exit_ in self._receive:
                 await self._handle(exit_)
 

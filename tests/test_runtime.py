@@ -6,6 +6,7 @@ import gc
 import json
 import subprocess
 import sys
+import warnings
 
 import anyio
 import pytest
@@ -244,3 +245,14 @@ def test_a_burst_that_grows_the_heap_by_a_quarter_ends_with_one_full_collection(
     assert after == collections
     if collections:
         assert young < 1000  # what the burst built was collected, not left to the next seconds
+
+
+async def test_a_closed_runtime_leaves_no_stream_to_warn_when_collected():
+    gc.collect()  # what earlier tests left
+    async with Runtime() as rt:
+        rt.spawn(Spawned, name="s")
+    del rt
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        gc.collect()
+    assert [str(w.message) for w in caught if issubclass(w.category, ResourceWarning)] == []
