@@ -177,7 +177,6 @@ class NodeCore:
     # -- entities -------------------------------------------------------------
 
     def _take_inherited(self, kind: str, name: str, type_: type) -> Any:
-        # Called only on a restart (``_inherited`` not empty): a first start has nothing to take over.
         olds = self._inherited.get((kind, name))
         if olds:
             old = olds[0]
@@ -203,7 +202,7 @@ class NodeCore:
             pub: Publisher = WatchedPublisher(self, name, msg_type, snapshot, event_callbacks)
         else:
             pub = Publisher(self, name, msg_type, snapshot)
-        old = self._take_inherited("pub", name, msg_type) if self._inherited else None
+        old = self._take_inherited("pub", name, msg_type)
         if old is not None and old._history is not None and pub._history is not None:
             pub._history.extend(old._history)
         self.runtime.topics.add_publisher(pub)
@@ -224,7 +223,7 @@ class NodeCore:
         sub = Subscription(self, name, msg_type, callback, as_qos(qos))
         if event_callbacks is not None:
             sub._events = EndpointEvents(sub, event_callbacks)
-        old = self._take_inherited("sub", name, msg_type) if self._inherited else None
+        old = self._take_inherited("sub", name, msg_type)
         if old is not None:
             self.runtime.topics.replace_subscription(old, sub)
             sub._adopt(old)
@@ -267,7 +266,7 @@ class NodeCore:
 
     def add_service(self, service: Service) -> Service:
         """Serve a service built by an entity of this node (an action's); adopts a predecessor's queue."""
-        old = self._take_inherited("srv", service.service_name, service.srv_type) if self._inherited else None
+        old = self._take_inherited("srv", service.service_name, service.srv_type)
         self.runtime.services.add(service, replacing=old)
         if old is not None:
             service._adopt(old)

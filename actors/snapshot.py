@@ -147,7 +147,7 @@ def _generate(top: MessageLayout, *, entry: bool, copy: bool = True) -> Snapshot
             lines.append(f"{indent}{value} = {obj}.{field.name}")
             ftype = field.type
             if ftype.array:
-                call = _array_call(ftype, field.nested, value, path, names)
+                call = _array_call(ftype, field.nested, value, path, names, "_floats" if copy else "_check_floats")
                 if ftype.base not in FLOATS:
                     store(obj, field.name, call, indent)
                 elif copy:
@@ -158,7 +158,7 @@ def _generate(top: MessageLayout, *, entry: bool, copy: bool = True) -> Snapshot
                     lines.append(f"{indent}    {obj}.{field.name} = {call}")
                 else:
                     lines.append(f"{indent}if not ({_float_list_test(ftype, value)}):")
-                    lines.append(f"{indent}    _check_floats{call[len('_floats'):]}")
+                    lines.append(f"{indent}    {call}")
             elif field.nested is not None:
                 cls_name = _bind(names, field.nested.cls)
                 lines.append(f"{indent}if type({value}) is not {cls_name}:")
@@ -236,7 +236,9 @@ def _float_list_test(ftype: FieldType, value: str) -> str:
     return test + f" and set(map(type, {value})) <= _FLOAT"
 
 
-def _array_call(ftype: FieldType, nested: MessageLayout | None, value: str, path: str, names: dict[str, Any]) -> str:
+def _array_call(ftype: FieldType, nested: MessageLayout | None, value: str, path: str, names: dict[str, Any],
+                floats: str = "_floats") -> str:
+    # ``floats``: the helper a float array goes through (``_check_floats`` for a bare check).
     shape = (ftype.array, ftype.size, _spelled(ftype))
     if ftype.base in OCTETS:
         return f"_octets({value}, {path!r}, {shape!r})"
@@ -250,7 +252,7 @@ def _array_call(ftype: FieldType, nested: MessageLayout | None, value: str, path
     if base in INTEGER_RANGES:
         return f"_ints({value}, {path!r}, {shape!r}, {base!r})"
     if base in FLOATS:
-        return f"_floats({value}, {path!r}, {shape!r}, {base == 'float32'})"
+        return f"{floats}({value}, {path!r}, {shape!r}, {base == 'float32'})"
     return f"_strs({value}, {path!r}, {shape!r}, {ftype.string_bound})"
 
 

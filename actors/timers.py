@@ -274,14 +274,11 @@ class Timer:
             # Next deadline: the next multiple of the period, or after an overrun the first
             # one after now (the max() guards float rounding when now sits on a deadline).
             k = self._k + 1
-            when = self._start + k * self.period
             now = self._loop.time()
-            if when <= now:
+            if self._start + k * self.period <= now:
                 k = max(k, int((now - self._start) / self.period) + 1)
-                when = self._start + k * self.period
             self._k = k
-            self._when = when
-            self._deadlines.add(when, self)
+            self._arm()
 
     def _info(self) -> TimerInfo:
         actual = self.clock.now_ns()
