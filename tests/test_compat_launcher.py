@@ -6,6 +6,7 @@ import os
 import signal
 import subprocess
 import sys
+import weakref
 
 import pytest
 
@@ -227,3 +228,32 @@ def test_qos_and_argparse_beside_ros_arguments():
                           "-r", "__node:=ear")
     assert listener.returncode == 0, listener.stderr
     assert messages(listener, "ear") == ["reliable listener", "got Hello World: 0", "got Hello World: 1"]
+
+
+def test_ctrl_c_landing_in_a_finaliser_still_interrupts_the_script():
+    # Python drops what a __del__ or a weakref finaliser raises: the KeyboardInterrupt is asked for again.
+    done = actors_run(script("interrupted_in_finaliser.py"), timeout=30)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == "interrupted\n"
+    assert "Exception ignored" not in done.stderr and "Traceback" not in done.stderr
+
+
+def test_both_kinds_of_finaliser_are_recognised_where_the_signal_lands():
+    from actors.compat.launcher import _in_finaliser
+
+    seen: dict[str, object] = {}
+
+    class Owner:
+        def __del__(self) -> None:
+            seen["__del__"] = sys._getframe()
+
+    class Task:
+        pass
+
+    task = Task()
+    weakref.finalize(task, lambda: seen.setdefault("finalize", sys._getframe()))
+    Owner()
+    del task
+    assert set(seen) == {"__del__", "finalize"}
+    assert all(_in_finaliser(frame) for frame in seen.values())  # type: ignore[arg-type]
+    assert not _in_finaliser(sys._getframe())

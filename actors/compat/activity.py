@@ -245,9 +245,10 @@ class Activity:
             waiter._token.busy = True
             waiter._event.set()
 
-    def finish_on_collect(self, owner: object, token: Token) -> None:
-        """End ``token`` if ``owner`` is garbage collected before its work ran."""
-        weakref.finalize(owner, self.done, token)
+    def finish_on_collect(self, owner: object, token: Token) -> weakref.finalize:
+        """End ``token`` if ``owner`` is garbage collected before its work ran; calling what this
+        returns ends it now instead, and nothing runs at collection."""
+        return weakref.finalize(owner, self.done, token)
 
     def watch(self, waiter: Waiter) -> None:
         """Wake ``waiter`` whenever a token goes idle, as it goes idle (until :meth:`unwatch`)."""

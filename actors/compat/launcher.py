@@ -20,12 +20,15 @@ time: it waits on the runtime like any other wait.
 
 from __future__ import annotations
 
+import _thread
 import os
 import runpy
 import signal
 import sys
 import threading
+import time
 import traceback
+import weakref
 from collections.abc import Iterator, MutableSequence, Sequence
 from contextlib import contextmanager
 from pathlib import Path
@@ -149,6 +152,7 @@ class _Stop:
     def __init__(self) -> None:
         self.requested = False
         self._main = threading.main_thread()
+        self._handling = False
 
     def interrupt(self) -> None:
         """From any thread: stop the script as Ctrl-C would."""
@@ -160,7 +164,18 @@ class _Stop:
         # previous handler's KeyboardInterrupt.
         self.requested = True
         get_default_context().interrupt()
+        if _in_finaliser(frame):
+            # Python prints and drops what a finaliser raises ("Exception ignored in ..."): the
+            # script would never see its KeyboardInterrupt.  Ask again once the finaliser is over.
+            _thread.start_new_thread(self._interrupt_soon, ())
+            return
         raise KeyboardInterrupt
+
+    def _interrupt_soon(self) -> None:
+        # A bare thread: it is no script thread, so it holds no virtual time and sleeps in real time.
+        time.sleep(_FINALISER_GRACE)
+        if self._handling:  # past the script, Python's own handler would raise in the launcher
+            self.interrupt()
 
     def _on_sigterm(self, signum: int, frame: FrameType | None) -> None:
         self.requested = True
@@ -169,11 +184,27 @@ class _Stop:
     @contextmanager
     def handling_signals(self) -> Iterator[None]:
         previous = signal.signal(signal.SIGINT, self._on_sigint), signal.signal(signal.SIGTERM, self._on_sigterm)
+        self._handling = True
         try:
             yield
         finally:
+            self._handling = False
             signal.signal(signal.SIGINT, previous[0])
             signal.signal(signal.SIGTERM, previous[1])
+
+
+# Where the signal may land while a finaliser runs: a ``__del__`` (rclpy's futures have one) or a
+# weakref.finalize callback (a task collected before it ran ends its work in one).
+_FINALISERS = frozenset({weakref.finalize.__call__.__code__})
+_FINALISER_GRACE = 0.001  # seconds; finalisers are short, and a signal landing in one again waits again
+
+
+def _in_finaliser(frame: FrameType | None) -> bool:
+    while frame is not None:
+        if frame.f_code in _FINALISERS or frame.f_code.co_name == "__del__":
+            return True
+        frame = frame.f_back
+    return False
 
 
 def _run(path: Path, command_line: MutableSequence[str], stop: _Stop) -> int:

@@ -199,12 +199,13 @@ class Task(Future[T]):
         self._task_lock = threading.Lock()
         self._activity: Activity | None = None
         self._token: Token | None = None
+        self._release: Callable[[], Any] | None = None  # ends the token once, now or on collection
 
     def _count_as_work(self, activity: Activity) -> None:
         # Virtual time does not move while this task is ready to run or running.
         self._activity = activity
         self._token = activity.work()
-        activity.finish_on_collect(self, self._token)
+        self._release = activity.finish_on_collect(self, self._token)
 
     def __call__(self) -> None:
         """Run or resume the task (a no-op when done, already running, or waiting on a Future)."""
@@ -221,8 +222,8 @@ class Task(Future[T]):
         finally:
             self._task_lock.release()
         if not self._pending():
-            if activity is not None and token is not None:
-                activity.done(token)
+            if self._release is not None:
+                self._release()
         elif not self._idle_if_suspended():
             self._handed = False  # it yielded without waiting on a Future: run it again
             self._poke()
@@ -295,5 +296,5 @@ class Task(Future[T]):
         if self._pending() and inspect.iscoroutine(self._handler):
             self._handler.close()
         super().cancel()
-        if self._activity is not None and self._token is not None:
-            self._activity.done(self._token)
+        if self._release is not None:
+            self._release()
