@@ -257,3 +257,12 @@ def test_both_kinds_of_finaliser_are_recognised_where_the_signal_lands():
     assert set(seen) == {"__del__", "finalize"}
     assert all(_in_finaliser(frame) for frame in seen.values())  # type: ignore[arg-type]
     assert not _in_finaliser(sys._getframe())
+
+
+def test_ctrl_c_while_the_main_thread_holds_the_overlays_lock_does_not_deadlock():
+    # The handler runs between two bytecodes of whatever the main thread does: waking the context's
+    # spins (here a second thread's) happens on a thread of its own, as in rclpy.
+    done = actors_run(script("interrupted_holding_a_lock.py"), timeout=30)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == "KeyboardInterrupt\n"
+    assert "Traceback" not in done.stderr

@@ -162,8 +162,7 @@ class _Stop:
     def _on_sigint(self, signum: int, frame: FrameType | None) -> None:
         # As rclpy's handler: the context stops (spins raise ExternalShutdownException), then the
         # previous handler's KeyboardInterrupt.
-        self.requested = True
-        get_default_context().interrupt()
+        self._shut_down()
         if _in_finaliser(frame):
             # Python prints and drops what a finaliser raises ("Exception ignored in ..."): the
             # script would never see its KeyboardInterrupt.  Ask again once the finaliser is over.
@@ -178,8 +177,13 @@ class _Stop:
             self.interrupt()
 
     def _on_sigterm(self, signum: int, frame: FrameType | None) -> None:
+        self._shut_down()
+
+    def _shut_down(self) -> None:
+        # On a thread of its own, as rclpy's deferred signal handler does it: the handler runs on the
+        # main thread between two bytecodes, perhaps inside a lock that the context's wake-ups take.
         self.requested = True
-        get_default_context().interrupt()
+        _thread.start_new_thread(_interrupt_default_context, ())
 
     @contextmanager
     def handling_signals(self) -> Iterator[None]:
@@ -191,6 +195,10 @@ class _Stop:
             self._handling = False
             signal.signal(signal.SIGINT, previous[0])
             signal.signal(signal.SIGTERM, previous[1])
+
+
+def _interrupt_default_context() -> None:
+    get_default_context().interrupt()  # a bare thread sees the main script's (see script_state)
 
 
 # Where the signal may land while a finaliser runs: a ``__del__`` (rclpy's futures have one) or a
