@@ -5,11 +5,13 @@ overruns (an ``async`` callback that awaits past its next deadline) skips the
 ticks it missed instead of firing them in a burst: the next deadline is the
 first multiple of the period after the callback returns.
 
-Every timer of a runtime waits in one :class:`Deadlines` heap under a single
+Every timer of a runtime waits in one :class:`Deadlines` under a single
 loop timer, rather than in a loop timer of its own.  asyncio's ``TimerHandle``
 orders its heap with a Python-level ``__lt__`` (about 0.1 µs a comparison,
 log2(n) of them per push and per pop), which made the loop's heap a third of
-a tick's cost with 10,000 timers; tuples compare in C.  Timers whose deadlines
+a tick's cost with 10,000 timers.  Deadlines keeps the timers of each period
+in a FIFO lane (a re-armed timer's next deadline is the latest of its
+period), and only the lanes' first deadlines in a heap.  Timers whose deadlines
 have come when the loop timer fires all fire from it, so timers that share a
 deadline (every node started in the same instant, under virtual time) cost one
 loop timer between them.  Timers due together fire in the order they were armed,
@@ -30,7 +32,8 @@ import asyncio
 import inspect
 import itertools
 from collections.abc import Awaitable, Callable
-from heapq import heapify, heappop, heappush
+from collections import deque
+from heapq import heappop, heappush, heapreplace
 from inspect import isawaitable
 from typing import Any
 
@@ -82,25 +85,55 @@ def _timer_info_parameter(callback: Callable[..., Any]) -> str | None:
             return parameter.name
     return None
 
-_COMPACT_AT = 64  # stale entries tolerated before the heap is rebuilt without them
+_COMPACT_AT = 64  # stale entries tolerated before the heap and lanes are rebuilt without them
+_MAX_LANES = 256  # distinct periods given a lane; timers of any further period wait in the heap alone
+
+
+class _Lane:
+    """The deadlines of timers of one period after the earliest, in order: a re-armed timer's goes last.
+
+    A timer re-armed from its tick waits one period past a deadline that has
+    come, so timers of one period come due in the order they re-arm: a FIFO
+    keeps them sorted, with no comparison.  Only the lane's earliest entry is
+    in the heap; the next one takes its place when it leaves.
+    """
+
+    __slots__ = ("queue", "tail", "open")
+
+    def __init__(self) -> None:
+        self.queue: deque[_Entry] = deque()  # the lane's entries after its head, in order
+        self.tail = 0.0  # the latest deadline in the lane (while open)
+        self.open = False  # whether the lane has a head in the heap
+
+
+_Entry = tuple[float, int, "Timer", "_Lane | None"]
 
 
 class Deadlines:
-    """The deadlines of a runtime's timers: a heap of ``(when, order, timer)`` under one loop timer.
+    """The deadlines of a runtime's timers under one loop timer: a heap of lane heads, and per-period lanes.
 
-    An entry is live while its timer still waits for that deadline
-    (``timer._when == when``); a canceled or reset timer leaves a stale entry
-    behind, skipped when it comes up and swept out once stale entries are the
-    majority.  The loop timer is always armed for a live deadline, so virtual
-    time never jumps to a deadline nobody waits for.
+    An entry ``(when, order, timer, lane)`` is live while its timer still
+    waits for that deadline (``timer._when == when``); a canceled or reset
+    timer leaves a stale entry behind, skipped when it comes up and swept out
+    once stale entries are the majority.  The loop timer is always armed for a
+    live deadline, so virtual time never jumps to a deadline nobody waits for.
+
+    With 10,000 timers a heap of them cost a microsecond per tick (log2 n
+    tuple comparisons for each push and pop, each a cache miss); a timer's
+    deadline usually goes at the end of its period's :class:`_Lane` instead,
+    and the heap holds one entry per lane.  A deadline earlier than its
+    lane's last (a timer reset, or ticking late) waits in the heap alone.
+    Entries pop in ``(when, order)`` order either way: timers due together
+    fire in the order they were armed.
     """
 
-    __slots__ = ("_loop", "_scheduler", "_heap", "_handle", "_armed", "_order", "_stale", "_firing")
+    __slots__ = ("_loop", "_scheduler", "_heap", "_lanes", "_handle", "_armed", "_order", "_stale", "_firing")
 
     def __init__(self, loop: asyncio.AbstractEventLoop, scheduler: Scheduler | None = None) -> None:
         self._loop = loop
         self._scheduler = scheduler
-        self._heap: list[tuple[float, int, Timer]] = []
+        self._heap: list[_Entry] = []
+        self._lanes: dict[float, _Lane] = {}
         self._handle: asyncio.TimerHandle | None = None
         self._armed = float("inf")  # the deadline the loop timer is set for
         self._order = itertools.count()
@@ -109,32 +142,87 @@ class Deadlines:
 
     def __len__(self) -> int:
         """Live deadlines waiting."""
-        return len(self._heap) - self._stale
+        return self._entries() - self._stale
+
+    def _entries(self) -> int:
+        return len(self._heap) + sum(len(lane.queue) for lane in self._lanes.values())
+
+    def lane(self, period: float) -> _Lane | None:
+        """The lane of timers of ``period`` (None once too many periods have one)."""
+        lane = self._lanes.get(period)
+        if lane is None and len(self._lanes) < _MAX_LANES:
+            lane = self._lanes[period] = _Lane()
+        return lane
 
     def add(self, when: float, timer: Timer) -> None:
-        """Schedule ``timer`` in its node at loop time ``when``, unless ``timer._when`` changes first."""
-        heappush(self._heap, (when, next(self._order), timer))
+        """Schedule ``timer`` in its node at loop time ``when`` (its ``_when`` from now), unless that changes first."""
+        timer._when = when
+        lane = timer._lane
+        if lane is None:
+            heappush(self._heap, (when, next(self._order), timer, None))
+        elif not lane.open:
+            lane.open = True
+            lane.tail = when
+            heappush(self._heap, (when, next(self._order), timer, lane))
+        elif when >= lane.tail:
+            lane.tail = when
+            lane.queue.append((when, next(self._order), timer, lane))
+        else:  # before the lane's last: in the heap alone
+            heappush(self._heap, (when, next(self._order), timer, None))
         if when < self._armed:
             self._arm(when)
 
     def discard(self) -> None:
         """Note that a timer stopped waiting for its deadline (its entry is now stale)."""
         self._stale += 1
-        heap = self._heap
-        if self._stale > _COMPACT_AT and self._stale * 2 > len(heap):
-            self._heap = heap = [entry for entry in heap if entry[2]._when == entry[0]]
-            heapify(heap)
-            self._stale = 0
+        if self._stale > _COMPACT_AT and self._stale * 2 > self._entries():
+            self._compact()
         self._prune()
+        heap = self._heap
         if not heap:
             self._disarm()
         elif heap[0][0] > self._armed:
             self._arm(heap[0][0])  # the head went stale: wait for the next live deadline
 
+    def _compact(self) -> None:
+        # Every live entry again, in order: each lane's first one its head, as add() would.
+        live = [entry for entry in self._heap if entry[2]._when == entry[0]]
+        for lane in self._lanes.values():
+            live += [entry for entry in lane.queue if entry[2]._when == entry[0]]
+            lane.queue.clear()
+            lane.open = False
+        live.sort()
+        self._heap = heap = []
+        for entry in live:
+            lane = entry[3]
+            if lane is not None and lane.open:
+                lane.queue.append(entry)
+            else:
+                if lane is not None:
+                    lane.open = True
+                heap.append(entry)  # in order: a heap already
+            if lane is not None:
+                lane.tail = entry[0]
+        self._stale = 0
+
+    def _pop(self) -> _Entry:
+        # The earliest entry out of the heap, its lane's next entry in its place.
+        heap = self._heap
+        entry = heap[0]
+        lane = entry[3]
+        if lane is None:
+            heappop(heap)
+        elif lane.queue:
+            heapreplace(heap, lane.queue.popleft())
+        else:
+            heappop(heap)
+            lane.open = False
+        return entry
+
     def _prune(self) -> None:
         heap = self._heap
         while heap and heap[0][2]._when != heap[0][0]:
-            heappop(heap)
+            self._pop()
             self._stale -= 1
 
     def _arm(self, when: float) -> None:
@@ -165,7 +253,15 @@ class Deadlines:
             scheduler.hold()  # the rounds run below, not from a loop callback of their own
         heap = self._heap
         while heap and heap[0][0] <= limit:
-            when, _, timer = heappop(heap)
+            when, _, timer, lane = heap[0]
+            # _pop, inlined: once per tick.
+            if lane is None:
+                heappop(heap)
+            elif lane.queue:
+                heapreplace(heap, lane.queue.popleft())
+            else:
+                heappop(heap)
+                lane.open = False
             if timer._when == when:
                 timer._when = None  # due: it waits for no deadline until its callback has run
                 timer.node.actor.schedule(timer)
@@ -194,6 +290,7 @@ class Timer:
         "clock",
         "_loop",
         "_deadlines",
+        "_lane",
         "_start",
         "_k",
         "_when",
@@ -215,6 +312,7 @@ class Timer:
         self.clock = clock
         self._loop: asyncio.AbstractEventLoop = node.loop
         self._deadlines = deadlines
+        self._lane = deadlines.lane(self.period)
         self._when: float | None = None  # the deadline this timer waits for; None when not armed
         # The callback whose signature was last read, and its TimerInfo parameter (None: none).
         self._checked: Any = None
@@ -228,14 +326,9 @@ class Timer:
             self._start, self._k = self._last_call, 1
 
     def _restart(self) -> None:
-        self._start = self._loop.time()
+        self._start = start = self._loop.time()
         self._k = 1
-        self._arm()
-
-    def _arm(self) -> None:
-        when = self._start + self._k * self.period
-        self._when = when
-        self._deadlines.add(when, self)
+        self._deadlines.add(start + self.period, self)
 
     def _disarm(self) -> None:
         if self._when is not None:
@@ -274,11 +367,13 @@ class Timer:
             # Next deadline: the next multiple of the period, or after an overrun the first
             # one after now (the max() guards float rounding when now sits on a deadline).
             k = self._k + 1
+            when = self._start + k * self.period
             now = self._loop.time()
-            if self._start + k * self.period <= now:
+            if when <= now:
                 k = max(k, int((now - self._start) / self.period) + 1)
+                when = self._start + k * self.period
             self._k = k
-            self._arm()
+            self._deadlines.add(when, self)
 
     def _info(self) -> TimerInfo:
         actual = self.clock.now_ns()
@@ -301,6 +396,7 @@ class Timer:
             raise ValueError(f"timer period must be > 0 ns, got {value}")
         self._start, self._k = self.next_deadline, 0  # re-anchored on the scheduled tick
         self.period = value / _NS
+        self._lane = self._deadlines.lane(self.period)
 
     @property
     def next_deadline(self) -> float:

@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import asyncio
+import random
 import time
+from typing import Any
 
 import anyio
 import pytest
@@ -134,6 +136,120 @@ async def test_stale_deadlines_of_canceled_timers_are_swept_out():
         assert len(rt.deadlines._heap) < 200  # rebuilt when stale entries became the majority
         await anyio.sleep(10)
         assert node.timers[0].ticks == 1
+
+
+class Bare(Node):
+    """Timers made, canceled, reset and retuned from outside, each tick noted as (time, index)."""
+
+    def __init__(self) -> None:
+        super().__init__("bare")
+        self.fired: list[tuple[float, int]] = []
+        self.timers: list[Any] = []
+
+    def add(self, period: float) -> Any:
+        index = len(self.timers)
+        self.timers.append(self.create_timer(period, lambda: self.fired.append((self.now(), index))))
+        return self.timers[-1]
+
+    def now(self) -> float:
+        return asyncio.get_running_loop().time()
+
+
+async def test_timers_made_reset_canceled_and_retuned_at_scattered_instants_tick_on_their_own_multiples():
+    # Each timer's ticks, from a model of its own: start + k * period from when it was made
+    # or reset, the tick already scheduled kept by a period change; nothing else fires.
+    rng = random.Random(16)
+    periods = (0.1, 0.25, 0.3)
+    async with Runtime() as rt:
+        node = rt.spawn(Bare)
+        model: list[list[Any]] = []  # per timer: [start, k, period, canceled, expected ticks]
+        end = 6.0
+
+        def ticks_until(entry: list[Any], t: float) -> None:
+            # The model's ticks up to t: each at start + k * period, re-anchored by a period change.
+            start, k, period, canceled, expected = entry
+            while not canceled and start + k * period <= t:
+                expected.append(start + k * period)
+                k += 1
+            entry[1] = k
+
+        while node.now() < end - 1:
+            await anyio.sleep(rng.uniform(0.001, 0.05))
+            now = node.now()
+            for entry in model:
+                ticks_until(entry, now)
+            op = rng.random()
+            if op < 0.4 or not model:
+                node.add(rng.choice(periods))
+                model.append([now, 1, node.timers[-1].period, False, []])
+                continue
+            i = rng.randrange(len(model))
+            timer, entry = node.timers[i], model[i]
+            if op < 0.6:
+                timer.cancel()
+                entry[3] = True
+            elif op < 0.8:
+                timer.reset()
+                entry[0:4] = [now, 1, timer.period, False]
+            elif not entry[3]:
+                new = rng.choice(periods)
+                timer.timer_period_ns = int(new * 1e9)
+                entry[0:3] = [entry[0] + entry[1] * entry[2], 0, new]
+        await anyio.sleep(end - node.now())
+        for entry in model:
+            ticks_until(entry, end)
+        for i, entry in enumerate(model):
+            assert [t for t, index in node.fired if index == i] == pytest.approx(entry[4], abs=1e-9), i
+        assert [t for t, _ in node.fired] == sorted(t for t, _ in node.fired)
+        assert len(rt.deadlines) == sum(not entry[3] for entry in model)
+
+
+async def test_a_timer_re_armed_after_an_overrun_before_its_periods_last_deadline_ticks_on_time():
+    class Overrun(Ticker):
+        period = 1.0
+
+        async def tick(self) -> None:
+            self.stamps.append(asyncio.get_running_loop().time())
+            if len(self.stamps) == 1:
+                await anyio.sleep(1.95)  # returns at 2.95: next tick 3.0, before the other's 3.9
+
+    async with Runtime() as rt:
+        slow = rt.spawn(Overrun, name="slow")
+        await anyio.sleep(0.9)
+        other = rt.spawn(Overrun, name="other")
+        other.work = 0.0
+        other.stamps.append(-1.0)  # no sleep at its first tick
+        await anyio.sleep(4.05)
+        assert slow.stamps == pytest.approx([1.0, 3.0, 4.0])
+        assert other.stamps[1:] == pytest.approx([1.9, 2.9, 3.9, 4.9])
+
+
+async def test_stale_deadlines_of_timers_sharing_a_period_are_swept_out():
+    async with Runtime() as rt:
+        node = rt.spawn(Bare)
+        for _ in range(1000):  # one period, made at different instants: one lane of deadlines
+            node.add(10.0)
+            await anyio.sleep(0.001)
+        for timer in reversed(node.timers[:-1]):  # the earliest last: stale entries pile up behind it
+            timer.cancel()
+        assert len(rt.deadlines) == 1
+        assert rt.deadlines._entries() < 200  # rebuilt when stale entries became the majority
+        await anyio.sleep(10)
+        assert node.fired == [(pytest.approx(10.999, abs=1e-9), 999)]
+
+
+async def test_timers_of_more_periods_than_lanes_tick_on_their_own_multiples():
+    async with Runtime() as rt:
+        node = rt.spawn(Bare)
+        periods = [0.5 + i / 1000 for i in range(300)]
+        for period in periods:
+            node.add(period)
+            await anyio.sleep(0.0007)
+        await anyio.sleep(2.5)
+        for i, period in enumerate(periods):
+            start = i * 0.0007
+            expected = [start + k * period for k in range(1, 10) if start + k * period <= node.now()]
+            assert [t for t, index in node.fired if index == i] == pytest.approx(expected, abs=1e-9)
 
 
 async def test_ticks_rearm_under_one_loop_timer_and_leave_no_loop_callback_behind():
