@@ -32,12 +32,15 @@ class DeferringHost(ServiceHost, Protocol):
 
     fqn: str
 
+    @property
+    def params(self) -> ParameterStore: ...
+
     def defer_services(self, deferred: ParameterServices) -> bool: ...
 
 
-def serve(store: ParameterStore, host: DeferringHost) -> None:
+def serve(host: DeferringHost) -> None:
     """Serve ``~/describe_parameters``, ``~/get_parameters``, ``~/get_parameter_types``,
-    ``~/list_parameters``, ``~/set_parameters`` and ``~/set_parameters_atomically`` from ``store``.
+    ``~/list_parameters``, ``~/set_parameters`` and ``~/set_parameters_atomically`` from ``host.params``.
 
     Unlike rclpy's, ``get_parameters`` answers an unknown name with a NOT_SET
     value in its place (rclpy answers nothing at all), so one unknown name does
@@ -47,7 +50,7 @@ def serve(store: ParameterStore, host: DeferringHost) -> None:
     :class:`actors.services.ServiceTable`): every node has them, hardly any is
     called, and building them was a third of the cost of spawning a node.
     """
-    services = ParameterServices(store, host)
+    services = ParameterServices(host)
     if not host.defer_services(services):
         services.build()
 
@@ -55,7 +58,7 @@ def serve(store: ParameterStore, host: DeferringHost) -> None:
 class ParameterServices:
     """A node's six parameter services as one object, whose bound methods are their handlers."""
 
-    __slots__ = ("store", "owner")
+    __slots__ = ("owner",)
 
     # Last name segment -> (type, handler), in the order rclpy creates them.
     _SERVED: dict[str, tuple[type, str]] = {
@@ -68,9 +71,13 @@ class ParameterServices:
     }
     kinds: dict[str, type] = {kind: srv_type for kind, (srv_type, _) in _SERVED.items()}
 
-    def __init__(self, store: ParameterStore, owner: DeferringHost) -> None:
-        self.store = store
+    def __init__(self, owner: DeferringHost) -> None:
         self.owner = owner
+
+    @property
+    def store(self) -> ParameterStore:
+        """The owner's parameters (read when a call comes: a node makes its store at first use)."""
+        return self.owner.params
 
     def build(self) -> None:
         """Create the six services on the owner."""

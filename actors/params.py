@@ -166,12 +166,13 @@ class ParameterStore:
             raise error(f"parameter {name!r} of {self._core.fqn}: {result.reason}")
         return self._values[name]
 
-    def declare_default(self, param: Parameter) -> None:
+    def declare_default(self, param: Parameter, *, announce: bool = True) -> None:
         """Declare ``param`` as it is, or from its override: every node's ``use_sim_time``.
 
         What :meth:`declare` does with a default and no descriptor, without the
         checks such a default always passes, while no set callback could refuse
         it; an override (of any type) takes :meth:`declare`'s whole path.
+        ``announce=False`` publishes no parameter event for it.
         """
         name = param.name
         if name in self._overrides or self._on_set or self._post:
@@ -181,7 +182,8 @@ class ParameterStore:
             raise ParameterAlreadyDeclaredException(f"parameter {name!r} of {self._core.fqn} is already declared")
         self._values[name] = param
         self._descriptors[name] = ParameterDescriptor(name=name, type=int(param.type_))
-        self._publish_event(new=(param,))
+        if announce:
+            self._publish_event(new=(param,))
 
     def declare_many(self, namespace: str, parameters: Sequence[tuple[Any, ...]],
                      ignore_override: bool = False) -> list[Parameter]:

@@ -31,11 +31,11 @@ until the callback has unwound.
 from __future__ import annotations
 
 import asyncio
-import functools
 import inspect
 from collections import deque
 from collections.abc import Mapping
 from enum import StrEnum
+from types import MappingProxyType
 from typing import Any, Protocol
 
 import anyio
@@ -102,11 +102,11 @@ class Child:
         self.cls = cls
         # The constructor's own arguments, given again to every restarted instance.
         self.args = args
-        self.kwargs = dict(kwargs or {})
+        self.kwargs = dict(kwargs) if kwargs else _NOTHING
         self.name = name
         self.namespace = namespace
-        self.params = dict(params or {})
-        self.remap = dict(remap or {})
+        self.params = dict(params) if params else _NOTHING
+        self.remap = dict(remap) if remap else _NOTHING
         # RestartType(x) costs an enum lookup even for a member: once per spawn is enough.
         self.restart = restart if type(restart) is RestartType else RestartType(restart)
         self.core: NodeCore | None = None
@@ -115,17 +115,31 @@ class Child:
         self.last_error: str | None = None
         self.last_exception: BaseException | None = None  # the Escalation's cause
         self.state = "starting"
-        self._inheritance: dict[tuple[str, str], list[Any]] = {}
+        self.supervisor: Supervisor | None = None  # set when it starts
+        self._inheritance: dict[tuple[str, str], list[Any]] | None = None  # made when something is given back
 
-    def give_back(self, entities: dict[tuple[str, str], list[Any]]) -> None:
+    def give_back(self, entities: Mapping[tuple[str, str], list[Any]]) -> None:
         """Keep ``entities`` (a failed instance's) for the next instance to adopt."""
         for key, olds in entities.items():
+            if self._inheritance is None:
+                self._inheritance = {}
             self._inheritance.setdefault(key, []).extend(olds)
 
-    def take_inheritance(self) -> dict[tuple[str, str], list[Any]]:
-        """The previous instance's entities, handed once to the new instance."""
-        inherited, self._inheritance = self._inheritance, {}
-        return inherited
+    def take_inheritance(self) -> Mapping[tuple[str, str], list[Any]]:
+        """The previous instance's entities, handed once to the new instance (read-only)."""
+        inherited, self._inheritance = self._inheritance, None
+        return _NOTHING if inherited is None else inherited
+
+    def _exited(self, error: BaseException | None) -> None:
+        # Its current instance's actor ended by itself (its ``on_exit``): a bound method of
+        # the child is one object for the collector to traverse, a partial two.
+        assert self.supervisor is not None and self.core is not None
+        self.supervisor._exited(self, self.core, error)
+
+
+# The kwargs, params, remaps and inheritance of the children that have none: one shared,
+# read-only mapping instead of four empty dicts per node.
+_NOTHING: Mapping[Any, Any] = MappingProxyType({})
 
 
 class _Exit(msgspec.Struct):
@@ -171,7 +185,8 @@ class Supervisor:
             core.actor.schedule(OneShot(on_start, "on_start"))
         child.core = core
         child.state = "running"
-        core.actor.on_exit = functools.partial(Supervisor._exited, self, child, core)
+        child.supervisor = self
+        core.actor.on_exit = child._exited
         return core
 
     def _exited(self, child: Child, core: NodeCore, error: BaseException | None) -> None:

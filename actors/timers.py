@@ -318,12 +318,11 @@ class Timer:
         self._checked: Any = None
         self._info_arg: str | None = None
         self.ticks = 0
-        self._last_call = self._loop.time()
+        self._last_call = self._start = self._loop.time()  # one float for both
+        self._k = 1
         self._canceled = not autostart
         if autostart:
-            self._restart()
-        else:
-            self._start, self._k = self._last_call, 1
+            self._deadlines.add(self._start + self.period, self)
 
     def _restart(self) -> None:
         self._start = start = self._loop.time()

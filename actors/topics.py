@@ -142,7 +142,7 @@ class Publisher:
         # The same as a tuple, made again by the first publish after a change (None): a loop
         # over a tuple costs 30 ns less per publish than one over a dict, and a change stays O(1).
         self._feeds: tuple[Subscription, ...] | None = ()
-        self._tracked: dict[Subscription, None] = {}  # those of them that note who sent what
+        self._tracked: dict[Subscription, None] | None = None  # those of them that note who sent what
         self._history: deque[Any] | None = (
             deque(maxlen=qos.depth) if qos.durability == DurabilityPolicy.TRANSIENT_LOCAL else None
         )
@@ -183,6 +183,12 @@ class Publisher:
         if self._tracked:  # rare: subscriptions that refused messages (Subscription.track_senders)
             for sub in self._tracked:
                 sub._senders.append((msg, self))  # type: ignore[union-attr]
+
+    def _track(self, sub: Subscription) -> None:
+        """Note ``sub``'s senders from the next publish on (see Subscription.track_senders)."""
+        if self._tracked is None:
+            self._tracked = {}  # made only then: hardly any publisher needs one
+        self._tracked[sub] = None
 
     def _connect(self, sub: Subscription) -> None:
         """Feed ``sub`` from the next publish on (the topic table's matching, a transport's outlet)."""
@@ -290,7 +296,7 @@ class Subscription(Mailbox):
         if self._topic is not None:
             for pub in self._topic.publishers:
                 if self in pub._subs:
-                    pub._tracked[self] = None
+                    pub._track(self)
 
     def _refuse(self, msg: Any, refusal: MessageRefused) -> None:
         """Drop ``msg``, which the callback refused: count it, and log it if it is news."""
@@ -468,7 +474,7 @@ class TopicTable:
             sub._queue = deque()
         pub._connect(sub)
         if sub._senders is not None:
-            pub._tracked[sub] = None
+            pub._track(sub)
         if pub.qos.lifespan_ns:
             sub._expiring = True
         _tell(pub, sub, +1)
@@ -490,7 +496,8 @@ class TopicTable:
         for pub in topic.publishers:
             if pub._disconnect(old):
                 pub._connect(new)
-                pub._tracked.pop(old, None)  # the new one tracks again if it adopts the old one's senders
+                if pub._tracked:
+                    pub._tracked.pop(old, None)  # the new one tracks again if it adopts the old one's senders
 
     def remove_publisher(self, pub: Publisher) -> None:
         """Forget ``pub``; drop the topic when it has no endpoint left.  O(1)."""
@@ -503,7 +510,7 @@ class TopicTable:
                 _tell(pub, sub, -1, to_pub=False)  # the publisher itself is gone: only its subscriptions hear
             pub._subs = {}
             pub._feeds = ()
-            pub._tracked = {}
+            pub._tracked = None
             for listener in self.listeners:
                 listener.endpoint_removed(topic, pub)
             self._drop_if_empty(topic)
@@ -519,7 +526,8 @@ class TopicTable:
             if sub._events is not None:
                 sub._events.stop()
             for pub in topic.publishers:
-                pub._tracked.pop(sub, None)
+                if pub._tracked:
+                    pub._tracked.pop(sub, None)
                 if pub._disconnect(sub):
                     _tell(pub, sub, -1, to_sub=False)
             for listener in self.listeners:

@@ -26,6 +26,7 @@ from interfaces.rcl_interfaces.msg import (
     ParameterEvent,
     SetParametersResult,
 )
+from interfaces.rcl_interfaces.srv import GetParameters
 from nodes.param_talker import MinimalParam
 
 pytestmark = pytest.mark.virtual_time
@@ -151,6 +152,24 @@ async def test_each_accepted_change_appears_once_on_parameter_events():
         assert all(e.node == "/tuned" for e in log.events)
         declared = [p.name for e in log.events for p in e.new_parameters]
         assert declared == ["use_sim_time", "speed", "count", "model", "names", "flag"]
+
+
+async def test_a_node_whose_parameters_nobody_used_yet_has_use_sim_time_and_does_not_announce_it_late():
+    # Nobody listened when it started: its store is made at first use, with use_sim_time,
+    # which a listener that came since does not hear of (at the start it was not announced either).
+    async with Runtime() as rt:
+        node = rt.spawn(Bare)
+        log = rt.spawn(EventLog)
+        node.declare_parameter("gain", 0.5)
+        await anyio.sleep(0.1)
+        assert [p.name for e in log.events for p in e.new_parameters] == ["gain"]
+        assert node.list_parameters([], 0).names == ["use_sim_time", "gain"]
+        assert node.get_parameter("use_sim_time").value is False
+        other = rt.spawn(Bare, name="other")
+        got = await log._core.create_client(GetParameters, "/other/get_parameters").call(
+            GetParameters.Request(names=["use_sim_time"]), timeout=1)
+        assert [value_from_msg(v) for v in got.values] == [False]  # its services read the store made now
+        assert other.has_parameter("use_sim_time")
 
 
 async def test_an_int_is_accepted_for_a_double_everywhere():
