@@ -253,15 +253,7 @@ class Deadlines:
             scheduler.hold()  # the rounds run below, not from a loop callback of their own
         heap = self._heap
         while heap and heap[0][0] <= limit:
-            when, _, timer, lane = heap[0]
-            # _pop, inlined: once per tick.
-            if lane is None:
-                heappop(heap)
-            elif lane.queue:
-                heapreplace(heap, lane.queue.popleft())
-            else:
-                heappop(heap)
-                lane.open = False
+            when, _, timer, _ = self._pop()
             if timer._when == when:
                 timer._when = None  # due: it waits for no deadline until its callback has run
                 timer.node.actor.schedule(timer)
