@@ -35,6 +35,7 @@ from collections.abc import Awaitable, Callable, Iterator, Mapping
 from functools import partial
 from heapq import heapify, heappop, heappush
 from inspect import isawaitable
+from sys import getrefcount
 from typing import Any, Protocol
 
 import msgspec
@@ -42,7 +43,7 @@ import msgspec
 from actors.actor import Mailbox, Owner
 from actors.clock import VirtualTimeLoop
 from actors.errors import ServiceError
-from actors.snapshot import snapshotter
+from actors.snapshot import ALONE, adopter, snapshotter
 from actors.topics import type_name
 
 __all__ = ["Service", "Client", "CallTimeouts", "ServiceListener", "Deferred", "ServiceTable"]
@@ -73,7 +74,7 @@ def _check_srv_type(srv_type: Any, where: str) -> None:
 class Service(Mailbox):
     """A service server.  Create with ``Node.create_service``."""
 
-    __slots__ = ("node", "service_name", "srv_type", "handler", "handled", "_snapshot")
+    __slots__ = ("node", "service_name", "srv_type", "handler", "handled", "_snapshot", "_adopt_response")
     remote = False  # a transport's stand-in for a server elsewhere, which a local server replaces
 
     def __init__(self, node: Owner, service_name: str, srv_type: type, handler: Callable[..., Any]) -> None:
@@ -86,6 +87,9 @@ class Service(Mailbox):
         self.handler = handler
         self.handled = 0
         self._snapshot = snapshotter(srv_type.Response)
+        # A response nobody else holds (the handler filled the one it was given, or made
+        # one, and kept no reference) is checked in place: the caller gets it, not a copy.
+        self._adopt_response = adopter(srv_type.Response)
         # The queue is made on the first call: most services (every node's parameter
         # services) are never called, and an empty deque costs 760 bytes.
         super().__init__(node.actor)
@@ -108,7 +112,7 @@ class Service(Mailbox):
     def _run(self) -> Awaitable[None] | None:
         queue = self._queue
         assert queue is not None  # scheduled only by _push or _adopt, with calls queued
-        handler, snapshot = self.handler, self._snapshot
+        handler, snapshot, adopt = self.handler, self._snapshot, self._adopt_response
         response_type = self.srv_type.Response
         for left in range(len(queue) - 1, -1, -1):
             call = queue.popleft()
@@ -122,7 +126,7 @@ class Service(Mailbox):
                     if isawaitable(response):
                         return self._run_async(response, call, left)
                     self._wrong(response)
-                response = snapshot(response)
+                response = (adopt if getrefcount(response) == ALONE else snapshot)(response)
             except Exception as exc:
                 self._fail(call, exc)
                 continue
@@ -160,7 +164,7 @@ class Service(Mailbox):
     def _answer(self, call: _Call, response: Any) -> None:
         if type(response) is not self.srv_type.Response:
             self._wrong(response)
-        response = self._snapshot(response)
+        response = self._snapshot(response)  # copied: the frame that awaited it may hold it too
         self.handled += 1
         if not call.future.done():
             call.future.set_result(response)

@@ -20,6 +20,11 @@ function for its type, which
   (rclpy accepts both: it sends 1), a tuple or numpy array a list, a
   bytearray ``bytes``.
 
+A message without fields is its own snapshot: nothing in it can change.
+:func:`adopter` gives the variant for a message nobody else holds (a service
+response the handler did not keep): the same checks and canonical values,
+written into the message itself, with only its mutable parts copied.
+
 The function is Python source generated from the type's field layout
 (:func:`actors.layout.layout`) and compiled once per type at first use:
 nested messages are inlined, so a ``Twist`` is two attribute reads and an
@@ -43,7 +48,7 @@ from actors.errors import MessageValidationError
 from actors.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType
 from actors.layout import MessageLayout, layout
 
-__all__ = ["snapshotter", "checker", "snapshot", "FLOAT32_MAX"]
+__all__ = ["snapshotter", "checker", "adopter", "snapshot", "FLOAT32_MAX", "ALONE"]
 
 #: The largest finite float32; a float32 field holding a larger finite value is refused.
 FLOAT32_MAX: float = struct.unpack("<f", b"\xff\xff\x7f\x7f")[0]
@@ -52,6 +57,18 @@ Snapshot = Callable[[Any], Any]
 _cache: dict[type, Snapshot] = {}  # entry points, by class
 _bodies: dict[type, Snapshot] = {}  # bodies for array elements (they raise _Invalid), by class
 _checks: dict[type, Callable[[Any], None]] = {}  # the checks without the copy, by class
+_adopters: dict[type, Snapshot] = {}  # the snapshots in place, by class
+
+
+def _held_by_one_local() -> int:
+    fresh = object()
+    return sys.getrefcount(fresh)
+
+
+#: What ``sys.getrefcount(x)`` reports when a function's local variable ``x`` is the only
+#: reference to the object: measured, not assumed, since interpreters count borrowed
+#: references differently (3.14 borrows some).  More means someone else holds it too.
+ALONE: int = _held_by_one_local()
 
 
 def snapshotter(cls: type) -> Snapshot:
@@ -62,14 +79,7 @@ def snapshotter(cls: type) -> Snapshot:
     class that is not a generated interface type (no ``__ros_definition__``)
     gets the identity: actors cannot know its fields.
     """
-    found = _cache.get(cls)
-    if found is None:
-        try:
-            found = _generate(layout(cls), entry=True)
-        except TypeError:
-            found = _identity
-        _cache[cls] = found
-    return found
+    return _made(_cache, cls, "copy", _identity)
 
 
 def checker(cls: type) -> Callable[[Any], None]:
@@ -79,13 +89,33 @@ def checker(cls: type) -> Callable[[Any], None]:
     refuses, and returns None: for a message nobody will receive, checked as
     rclpy's serialisation would check it, with nothing copied.
     """
-    found = _checks.get(cls)
+    return _made(_checks, cls, "check", _ignore)
+
+
+def adopter(cls: type) -> Snapshot:
+    """:func:`snapshotter`'s function for a message of ``cls`` that nobody else holds: it returns the message itself.
+
+    Same checks, same errors and the same canonical values as the snapshot,
+    written into the message instead of a copy; nested messages and arrays
+    are still copied (someone may hold those).  Only for an object whose sole
+    reference is the caller's: ``sys.getrefcount(msg) == ALONE`` in the
+    caller's frame, where ``msg`` is a local variable.
+    """
+    return _made(_adopters, cls, "adopt", _identity)
+
+
+def _made(cache: dict[type, Any], cls: type, mode: str, otherwise: Callable[[Any], Any]) -> Any:
+    # The function of ``mode`` for ``cls`` from ``cache``, generated at its first use;
+    # ``otherwise`` for a class that is not a generated interface type.
+    found = cache.get(cls)
     if found is None:
         try:
-            found = _generate(layout(cls), entry=True, copy=False)
+            top = layout(cls)
         except TypeError:
-            found = _ignore
-        _checks[cls] = found
+            found = otherwise
+        else:
+            found = _identity if top.placeholder and mode != "check" else _generate(top, entry=True, mode=mode)
+        cache[cls] = found
     return found
 
 
@@ -118,20 +148,23 @@ def _invalid(exc: _Invalid, ros_type: str) -> MessageValidationError:
 # -- the generator ------------------------------------------------------------------
 
 
-def _generate(top: MessageLayout, *, entry: bool, copy: bool = True) -> Snapshot:
+def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy") -> Snapshot:
     """Compile the function for ``top``: nested messages inlined, arrays of messages through their own body.
 
     An entry point turns a field's _Invalid into MessageValidationError (a
     try block costs nothing until it raises); a body lets it out for the
-    array holding it to prefix its index.  Without ``copy``, the function
+    array holding it to prefix its index.  ``mode`` "copy" returns the
+    checked copy; "adopt" writes what the checks make into ``m`` itself and
+    returns it (nested messages and arrays copied all the same); "check"
     makes the same checks and returns None, copying and storing nothing.
     """
+    copy = mode != "check"
     indent = "        " if entry else "    "
-    name = f"{'snapshot' if copy else 'check'}_{top.cls.__name__}"
+    name = f"{'check' if mode == 'check' else 'snapshot'}_{top.cls.__name__}"
     lines: list[str] = [f"def {name}(m):"]
     if entry:
         lines.append("    try:")
-    if copy:
+    if mode == "copy":
         lines.append(f"{indent}c0 = m.__copy__()")
     names: dict[str, Any] = {**_HELPERS, "ros_type": top.ros_type}
     counter = itertools.count(1)
@@ -175,13 +208,14 @@ def _generate(top: MessageLayout, *, entry: bool, copy: bool = True) -> Snapshot
                 lines.append(f"{indent}if {test}:")
                 store(obj, field.name, fix, indent + "    ")
 
-    emit(top, "c0" if copy else "m", "", indent)
-    lines.append(f"{indent}return {'c0' if copy else 'None'}")
+    top_name = "c0" if mode == "copy" else "m"
+    emit(top, top_name, "", indent)
+    lines.append(f"{indent}return {top_name if copy else 'None'}")
     if entry:
         lines.append("    except _Invalid as exc:")
         lines.append("        raise _invalid(exc, ros_type) from None")
     source = "\n".join(lines) + "\n"
-    exec(compile(source, f"<{'snapshot' if copy else 'check'} of {top.ros_type}>", "exec"), names)  # noqa: S102 - our own source
+    exec(compile(source, f"<{mode} of {top.ros_type}>", "exec"), names)  # noqa: S102 - our own source
     function: Snapshot = names[name]
     return function
 

@@ -325,6 +325,39 @@ async def test_each_caller_gets_the_response_as_the_handler_returned_it(kind):
         assert not any(r is reuser.reply for r in responses)
 
 
+async def test_a_response_the_handler_did_not_keep_reaches_the_caller_itself_and_what_it_kept_as_a_copy():
+    from interfaces.rcl_interfaces.msg import ParameterValue
+    from interfaces.rcl_interfaces.srv import GetParameters
+
+    class Lister(Node):
+        """Fills the response it is given with its own list of values, which it keeps and grows."""
+
+        def __init__(self) -> None:
+            super().__init__("lister")
+            self.values: list[ParameterValue] = []
+            self.answered: list[int] = []  # ids of the responses it returned (an id holds no reference)
+            self.create_service(GetParameters, "values", self.get)
+
+        def get(self, request: GetParameters.Request, response: GetParameters.Response) -> GetParameters.Response:
+            self.values.append(ParameterValue(type=2, integer_value=len(self.values)))
+            response.values = self.values
+            self.answered.append(id(response))
+            return response
+
+    async with Runtime() as rt:
+        lister = rt.spawn(Lister)
+        cli = rt.spawn(Caller)._core.create_client(GetParameters, "/values")
+        first = await cli.call(GetParameters.Request(), timeout=1)
+        second = await cli.call(GetParameters.Request(), timeout=1)
+        lister.values[0].integer_value = -1
+        # Nobody else held the response objects: checked in place, not copied ...
+        assert lister.answered == [id(first), id(second)]
+        # ... but the list and the values the handler kept were copied when it returned.
+        assert [v.integer_value for v in first.values] == [0]
+        assert [v.integer_value for v in second.values] == [0, 1]
+        assert first.values is not lister.values and second.values[0] is not lister.values[0]
+
+
 async def test_a_handler_that_cancels_its_own_caller_leaves_the_server_serving():
     tasks: list[asyncio.Task] = []
 

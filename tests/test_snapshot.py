@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from actors import codec
 from actors.errors import MessageValidationError
-from actors.snapshot import FLOAT32_MAX, checker, snapshot, snapshotter
+from actors.snapshot import ALONE, FLOAT32_MAX, adopter, checker, snapshot, snapshotter
 from conftest import generated_package
 from goldens.values import DrawPick, message, shipped_messages
 from interfaces.geometry_msgs.msg import PoseWithCovariance, Twist, Vector3
@@ -25,11 +25,14 @@ SHIPPED = shipped_messages()
 
 
 def _shared_mutables(a: object, b: object) -> list[str]:
-    """Paths where ``a`` and ``b`` hold the very same list or struct (a snapshot must hold none)."""
+    """Paths where ``a`` and ``b`` hold the very same list or struct with fields (a snapshot must hold none).
+
+    A struct without fields cannot change: sharing it is safe.
+    """
     found = []
 
     def walk(x: object, y: object, path: str) -> None:
-        if isinstance(x, (list, msgspec.Struct)) and x is y:
+        if (type(x) is list or isinstance(x, msgspec.Struct) and x.__struct_fields__) and x is y:
             found.append(path or "the message")
         if isinstance(x, msgspec.Struct):
             for name in x.__struct_fields__:
@@ -62,6 +65,36 @@ def test_the_check_alone_passes_what_the_snapshot_passes_and_leaves_the_message_
     assert msg == before and _shared_mutables(msg, before) == []
 
 
+@settings(max_examples=150, deadline=None)
+@given(name=st.sampled_from(SHIPPED), data=st.data())
+def test_the_snapshot_in_place_makes_the_message_itself_what_the_copy_would_be(name, data):
+    cls = codec.get_type(name)
+    msg = message(cls, DrawPick(data))
+    expected = snapshot(msg)
+    parts = msg.__copy__()  # shares the message's nested structs and lists, as their other holders would
+    assert adopter(cls)(msg) is msg
+    assert msg == expected
+    assert _shared_mutables(msg, parts) == []  # what someone else may hold was copied
+
+
+def test_a_message_without_fields_is_its_own_snapshot():
+    from interfaces.std_srvs.srv import Trigger
+
+    request = Trigger.Request()
+    assert snapshot(request) is request and adopter(Trigger.Request)(request) is request
+    with pytest.raises(AttributeError):  # why sharing it is safe: nothing can be set on it
+        request.data = 1
+
+
+def test_alone_is_what_getrefcount_says_of_an_object_only_a_local_variable_holds():
+    import sys
+
+    mine = String()
+    assert sys.getrefcount(mine) == ALONE
+    others = [mine]
+    assert sys.getrefcount(mine) == ALONE + 1 and others
+
+
 def test_immutable_leaves_are_shared_not_copied():
     text, blob = "x" * 1000, bytes(1000)
     msg = ParameterValue(string_value=text, byte_array_value=blob)
@@ -88,6 +121,7 @@ def test_what_rclpy_accepts_beyond_the_exact_type_is_delivered_in_the_canonical_
         (1.0, float), (0.5, float), (2.0, float)
     ]
     assert (copy := snapshot(Int64(data=True))).data == 1 and type(copy.data) is int
+    assert (same := adopter(Int64)(Int64(data=True))).data == 1 and type(same.data) is int
     scan = snapshot(LaserScan(ranges=(1, 2.5), intensities=np.array([0.25, 3.0], dtype=np.float32)))
     assert scan.ranges == [1.0, 2.5] and all(type(v) is float for v in scan.ranges + scan.intensities)
     assert scan.intensities == [0.25, 3.0]
@@ -169,6 +203,9 @@ def test_errors_name_the_type_the_field_and_the_value(msg, error):
     with pytest.raises(MessageValidationError) as raised:
         checker(type(msg))(msg)
     assert str(raised.value) == error
+    with pytest.raises(MessageValidationError) as raised:
+        adopter(type(msg))(msg)
+    assert str(raised.value) == error
 
 
 SHAPES = """\
@@ -201,7 +238,7 @@ def test_bounds_and_sizes_are_checked(shapes):
         (shape(parts=[part(id=-1)]), f"field 'parts[0].id' of {where}: -1 is out of range for uint8 (0..255)"),
     ]
     for msg, error in cases:
-        for check in (snapshot, checker(shape)):
+        for check in (snapshot, checker(shape), adopter(shape)):
             with pytest.raises(MessageValidationError) as raised:
                 check(msg)
             assert str(raised.value) == error
