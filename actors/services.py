@@ -28,12 +28,11 @@ mailbox — so awaiting a call from inside a callback cannot deadlock.
 from __future__ import annotations
 
 import asyncio
-import itertools
 import time
 from collections import deque
 from collections.abc import Awaitable, Callable, Iterator, Mapping
 from functools import partial
-from heapq import heapify, heappop, heappush
+from heapq import heappop, heappush
 from inspect import isawaitable
 from sys import getrefcount
 from typing import Any, Protocol
@@ -260,16 +259,9 @@ class Client:
         request of the wrong type.  Cancelling the call does not disturb the server.
         """
         future = self.call_async(request)
-        if timeout is None:
-            return await future
-        timeouts = self._table._timeouts or self._table.timeouts(self._loop)
-        timeouts.add(future, self, timeout)
-        try:
-            return await future
-        finally:
-            timeouts._waiting -= 1  # counted here, not in a method: once per call
-            if not timeouts._waiting:
-                timeouts.idle()
+        if timeout is not None:
+            (self._table._timeouts or self._table.timeouts(self._loop)).add(future, self, timeout)
+        return await future
 
     def destroy(self) -> None:
         """Forget this client."""
@@ -277,55 +269,49 @@ class Client:
 
 
 class CallTimeouts:
-    """The deadlines of a runtime's calls with a timeout: a heap of tuples under one loop timer.
+    """The deadlines of a runtime's calls with a timeout: a lane per timeout value, under one loop timer.
 
     A loop timer per call (``loop.call_at``, then ``cancel()`` when the answer
     came first) cost as much as the round trip itself with 100 callers: a
     ``TimerHandle`` each, pushed into and later swept out of asyncio's heap with
-    comparisons in Python.  Here a call pushes a tuple (compared in C) and
-    nothing is removed when it is answered: an entry whose future is done is
-    skipped when it comes up, and the heap is rebuilt without them once they are
-    most of it.  The loop timer is armed no later than the earliest deadline a
-    call waits for.  When no call waits any more, a wall-clock loop keeps it
-    (it wakes once for nothing, or is re-armed then for the next call's
-    deadline): so a caller that calls one request after another arms one loop
-    timer per ``timeout`` seconds, not one per call.  Virtual time cancels it,
-    so that it never jumps to a deadline nobody waits for.
+    comparisons in Python.  Calls with the same timeout time out in the order
+    they were made, so each timeout value has a lane, a deque of ``(deadline,
+    future, client)`` in deadline order: a call appends one tuple, nothing is
+    compared, and nothing is done when it is answered, not even counted.  An
+    answered entry is dropped when the timer comes to it, or when a lane sweeps
+    its answered entries out, once they are most of it.  A heap holds one entry
+    per lane, its head's deadline (or an earlier one), and the loop timer is
+    armed for the earliest: so a program whose calls share a few timeouts pays
+    for a heap only when a lane is made.  The timer is kept when every call has
+    been answered (it wakes once for nothing, or is re-armed then for the next
+    head): a caller that calls one request after another arms one loop timer per
+    ``timeout`` seconds, not one per call.
     """
 
-    __slots__ = ("_loop", "_time", "_heap", "_order", "_waiting", "_handle", "_armed", "_linger")
+    __slots__ = ("_loop", "_time", "_lanes", "_heads", "_handle", "_armed")
 
     def __init__(self, loop: asyncio.AbstractEventLoop) -> None:
         self._loop = loop
         # asyncio's own loops tell time with time.monotonic: called directly, it costs half
         # of loop.time(), a Python method.  Other loops (virtual time, uvloop) keep their own.
         self._time = time.monotonic if type(loop).time is asyncio.BaseEventLoop.time else loop.time
-        self._heap: list[tuple[float, int, asyncio.Future[Any], Client, float]] = []
-        self._order = itertools.count()
-        self._waiting = 0  # calls added and not yet answered, timed out or cancelled
+        self._lanes: dict[float, _Lane] = {}  # by timeout
+        self._heads: list[tuple[float, float]] = []  # (a lane's first deadline or earlier, its timeout), a heap
         self._handle: asyncio.TimerHandle | None = None
         self._armed = _NEVER  # the deadline the loop timer is set for
-        self._linger = not isinstance(loop, VirtualTimeLoop)
 
     def add(self, future: asyncio.Future[Any], client: Client, timeout: float) -> None:
         """Fail ``future`` with TimeoutError ``timeout`` seconds from now unless it is done by then."""
         when = self._time() + timeout
-        heap = self._heap
-        heappush(heap, (when, next(self._order), future, client, timeout))
-        self._waiting += 1
-        if when < self._armed:
-            self._arm(when)
-        elif len(heap) > 2 * self._waiting + _SWEEP_AT:
-            self._heap = heap = [entry for entry in heap if not entry[2].done()]
-            heapify(heap)
-
-    def idle(self) -> None:
-        """No call waits any more (``Client.call`` counts the waiting calls down as each settles)."""
-        self._heap.clear()
-        if self._handle is not None and not self._linger:
-            self._handle.cancel()
-            self._handle = None
-            self._armed = _NEVER
+        lane = self._lanes.get(timeout)
+        if lane is None:
+            lane = self._lanes[timeout] = _Lane()
+            heappush(self._heads, (when, timeout))
+            if when < self._armed:  # an existing lane's deadlines come after its head's
+                self._arm(when)
+        lane.append((when, future, client))
+        if len(lane) > lane.sweep_at:
+            lane.sweep()
 
     def _arm(self, when: float) -> None:
         if self._handle is not None:
@@ -336,20 +322,78 @@ class CallTimeouts:
     def _fire(self) -> None:
         self._handle = None
         self._armed = _NEVER
-        heap = self._heap
+        heads = self._heads
         now = self._time()
-        while heap and (heap[0][0] <= now or heap[0][2].done()):
-            _, _, future, client, timeout = heappop(heap)
-            if not future.done():
-                future.set_exception(
-                    TimeoutError(f"no response from service {client.service_name} within {timeout:g} s")
-                )
-        if heap:
-            self._arm(heap[0][0])
+        while heads and heads[0][0] <= now:
+            timeout = heappop(heads)[1]
+            lane = self._lanes[timeout]
+            while lane and (lane[0][0] <= now or lane[0][1].done()):
+                _, future, client = lane.popleft()
+                if not future.done():
+                    future.set_exception(
+                        TimeoutError(f"no response from service {client.service_name} within {timeout:g} s")
+                    )
+            if lane:
+                heappush(heads, (lane[0][0], timeout))
+            else:
+                del self._lanes[timeout]
+        if heads:
+            self._arm(heads[0][0])
+
+
+class _Lane(deque):  # type: ignore[type-arg]
+    """The calls of one timeout value, in deadline order: ``(deadline, future, client)``."""
+
+    __slots__ = ("sweep_at",)
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.sweep_at = _SWEEP_AT  # the length that calls for the next sweep
+
+    def sweep(self) -> None:
+        """Drop the answered entries; the next sweep once as many more came as were kept, and 64.
+
+        Each entry is then looked at about twice in all, however many calls wait.
+        """
+        kept = [entry for entry in self if not entry[1].done()]
+        self.clear()
+        self.extend(kept)
+        self.sweep_at = 2 * len(kept) + _SWEEP_AT
+
+
+class _VirtualCallTimeouts(CallTimeouts):
+    """Virtual time's call deadlines: the loop timer is cancelled as soon as no call waits.
+
+    Virtual time jumps to the next loop timer whenever nothing else is ready: a
+    timer left for a deadline nobody waits for would move the clock for nothing.
+    So each call's end is heard (a done callback, which the wall clock's calls
+    do without) and counted.
+    """
+
+    __slots__ = ("_waiting",)
+
+    def __init__(self, loop: asyncio.AbstractEventLoop) -> None:
+        super().__init__(loop)
+        self._waiting = 0  # calls added and not yet answered, timed out or cancelled
+
+    def add(self, future: asyncio.Future[Any], client: Client, timeout: float) -> None:
+        super().add(future, client, timeout)
+        self._waiting += 1
+        future.add_done_callback(self._settled)
+
+    def _settled(self, future: asyncio.Future[Any]) -> None:
+        self._waiting -= 1
+        if not self._waiting:
+            self._lanes.clear()
+            self._heads.clear()
+            if self._handle is not None:
+                self._handle.cancel()
+                self._handle = None
+                self._armed = _NEVER
 
 
 _NEVER = float("inf")
-_SWEEP_AT = 64  # answered entries the heap may hold beyond twice the waiting calls
+_SWEEP_AT = 64  # entries a lane may gain beyond twice those its last sweep kept
 
 
 def _settle(future: asyncio.Future[bool], value: bool) -> None:
@@ -484,7 +528,7 @@ class ServiceTable:
     def timeouts(self, loop: asyncio.AbstractEventLoop) -> CallTimeouts:
         """The deadlines of calls with a timeout, on ``loop`` (made at the first such call)."""
         if self._timeouts is None:
-            self._timeouts = CallTimeouts(loop)
+            self._timeouts = (_VirtualCallTimeouts if isinstance(loop, VirtualTimeLoop) else CallTimeouts)(loop)
         return self._timeouts
 
     def add(self, service: Service, *, replacing: Service | None = None) -> None:

@@ -141,7 +141,6 @@ async def _service(rt: Runtime, repeats: int) -> dict[str, float]:
             future = new_future()
             waiting.append(future)
             if keep:  # what Client.call does for timeout=
-                timeouts._waiting -= 1
                 timeouts.add(future, client, 5.0)
 
     sending = _ns(sent, BATCH, repeats)

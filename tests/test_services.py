@@ -427,6 +427,11 @@ async def test_calls_with_different_timeouts_each_time_out_at_their_own_deadline
         assert live_loop_timers() == []  # no deadline left armed once nobody waits
 
 
+def _deadlines(timeouts) -> int:
+    """How many call deadlines ``timeouts`` (a runtime's CallTimeouts) holds, answered or not."""
+    return sum(map(len, timeouts._lanes.values()))
+
+
 async def test_answered_calls_leave_no_deadlines_behind():
     async with Runtime() as rt:
         rt.spawn(Adder)
@@ -438,11 +443,51 @@ async def test_answered_calls_leave_no_deadlines_behind():
         async def one(i: int) -> None:
             for _ in range(20):
                 await caller.cli.call(AddTwoInts.Request(a=i, b=1), timeout=60)
-                sizes.append(len(timeouts._heap))
+                sizes.append(_deadlines(timeouts))
 
         async with anyio.create_task_group() as tg:
             for i in range(100):
                 tg.start_soon(one, i)
         # Answered entries are swept out, not kept for their 60 s.
         assert max(sizes) <= 2 * 100 + 64 + 1 and len(sizes) == 2000
-        assert timeouts._heap == [] and live_loop_timers() == []
+        assert _deadlines(timeouts) == 0 and timeouts._heads == [] and live_loop_timers() == []
+
+
+def test_on_the_wall_clock_answered_calls_are_swept_without_being_counted_and_a_late_one_times_out():
+    class Dawdler(Node):
+        def __init__(self) -> None:
+            super().__init__("dawdler")
+            self.create_service(AddTwoInts, "dawdle", self.dawdle)
+
+        async def dawdle(self, request: AddTwoInts.Request, response: AddTwoInts.Response) -> AddTwoInts.Response:
+            await asyncio.sleep(request.a)
+            return response
+
+    async def main() -> None:
+        async with Runtime() as rt:
+            rt.spawn(Adder)
+            rt.spawn(Dawdler)
+            caller = rt.spawn(Caller)
+            dawdle = caller._core.create_client(AddTwoInts, "/dawdle")
+            await asyncio.sleep(0)
+            timeouts = rt.services.timeouts(rt.loop)
+            sizes = []
+
+            async def one(i: int) -> None:
+                for _ in range(20):
+                    await caller.cli.call(AddTwoInts.Request(a=i, b=1), timeout=60)
+                    sizes.append(_deadlines(timeouts))
+
+            # A call that waits all along heads the lane of 60 s while 2,000 others come and go behind it.
+            waiting = asyncio.ensure_future(dawdle.call(AddTwoInts.Request(a=3600), timeout=60))
+            async with anyio.create_task_group() as tg:
+                for i in range(100):
+                    tg.start_soon(one, i)
+            assert max(sizes) <= 2 * 101 + 64 + 1 and len(sizes) == 2000
+            assert not waiting.done()
+            waiting.cancel()
+            with pytest.raises(TimeoutError, match="no response from service /dawdle within 0.05 s"):
+                await dawdle.call(AddTwoInts.Request(a=3600), timeout=0.05)
+            assert (await caller.cli.call(AddTwoInts.Request(a=2, b=3), timeout=60)).sum == 5
+
+    asyncio.run(main())
