@@ -202,10 +202,10 @@ class _ResultService(Service):
         queue = self._queue
         assert queue is not None
         for _ in range(len(queue)):
-            call = queue.popleft()
-            if not call.future.done():
+            request, future = queue.popleft()
+            if not future.done():
                 self.handled += 1
-                self.handler(call.request, call.future)
+                self.handler(request, future)
         self._round_done()
 
 
@@ -500,10 +500,11 @@ class ActionServer:
         # get_result calls not yet handled: answer those for goals known here.
         results = self._services[2]
         if results._queue:
-            for call in [c for c in results._queue if _key(c.request.goal_id) in self.goals]:
+            for call in [c for c in results._queue if _key(c[0].goal_id) in self.goals]:
                 results._queue.remove(call)
-                if not call.future.done():
-                    call.future.set_result(self.goals[_key(call.request.goal_id)]._response)
+                request, future = call
+                if not future.done():
+                    future.set_result(self.goals[_key(request.goal_id)]._response)
 
     def destroy(self) -> None:
         """Stop serving: unfinished goals abort, the services and topics go away."""

@@ -38,7 +38,7 @@ from actors.actor import Actor
 from actors.errors import ServiceError
 from actors.log import NodeLogger
 from actors.qos import DurabilityPolicy, QoSSnapshot, ReliabilityPolicy
-from actors.services import Service, ServiceListener, _Call
+from actors.services import Service, ServiceListener
 from actors.topics import Publisher, Subscription, TopicListener, type_name
 
 __all__ = [
@@ -169,7 +169,7 @@ class RemoteService(Service):
         self._forward = forward
 
     def _push(self, call: Any) -> None:
-        request, future = call.request, call.future
+        request, future = call
         if type(request) is not self.srv_type.Request:
             future.set_exception(
                 ServiceError(
@@ -191,7 +191,7 @@ def submit(service: Service, request: Any, future: asyncio.Future[Any]) -> None:
     ``future`` gets the response, or ServiceError when the handler raises or
     the server is destroyed first.
     """
-    service._push(_Call(request, future))
+    service._push((request, future))
 
 
 def is_proxy(endpoint: Any) -> bool:
