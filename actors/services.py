@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import asyncio
 import time
+from asyncio import InvalidStateError
 from collections import deque
 from collections.abc import Awaitable, Callable, Iterator, Mapping
 from functools import partial
@@ -36,7 +37,6 @@ from heapq import heappop, heappush
 from inspect import isawaitable
 from sys import getrefcount
 from typing import Any, Protocol
-
 
 from actors.actor import Mailbox, Owner
 from actors.clock import VirtualTimeLoop
@@ -123,8 +123,10 @@ class Service(Mailbox):
                 self._fail(call, exc)
                 continue
             self.handled += 1
-            if not future.done():  # a handler may have cancelled its caller's task
+            try:
                 future.set_result(response)
+            except InvalidStateError:  # the handler cancelled its caller's task
+                pass
         self._round_done()
         return None
 
