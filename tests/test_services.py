@@ -280,6 +280,8 @@ async def test_request_and_response_types_are_checked():
         caller = rt.spawn(Caller)
         with pytest.raises(TypeError, match="takes example_interfaces/srv/AddTwoInts_Request"):
             caller.cli.call_async(SetBool.Request())
+        with pytest.raises(TypeError, match="takes example_interfaces/srv/AddTwoInts_Request"):
+            await caller.cli.call(SetBool.Request(), timeout=1)  # call makes call_async's checks itself
         cli = caller._core.create_client(SetBool, "/set")
         with pytest.raises(ServiceError, match="expected std_srvs/srv/SetBool_Response"):
             await cli.call(SetBool.Request(data=True), timeout=1)
@@ -398,6 +400,8 @@ async def test_fields_that_do_not_fit_fail_the_call_naming_the_field(caplog):
         caller = rt.spawn(Caller)
         with pytest.raises(MessageValidationError, match=r"^field 'a' of example_interfaces/srv/AddTwoInts_Request: "):
             caller.cli.call_async(AddTwoInts.Request(a=2**63))
+        with pytest.raises(MessageValidationError, match=r"^field 'b' of example_interfaces/srv/AddTwoInts_Request: "):
+            await caller.cli.call(AddTwoInts.Request(b=1.5))
         with pytest.raises(ServiceError, match=r"field 'sum' of example_interfaces/srv/AddTwoInts_Response: "
                                                r"expected an int, got the str '3'"):
             await caller.cli.call(AddTwoInts.Request(a=1, b=2), timeout=1)
@@ -427,9 +431,21 @@ async def test_calls_with_different_timeouts_each_time_out_at_their_own_deadline
         assert live_loop_timers() == []  # no deadline left armed once nobody waits
 
 
-def _deadlines(timeouts) -> int:
-    """How many call deadlines ``timeouts`` (a runtime's CallTimeouts) holds, answered or not."""
-    return sum(map(len, timeouts._lanes.values()))
+async def _hundred_callers(rt: Runtime, caller: Caller) -> list[int]:
+    """100 callers make 20 calls each (timeout=60); how many deadlines the runtime held after each call."""
+    timeouts = rt.services.timeouts(rt.loop)
+    sizes = []
+
+    async def one(i: int) -> None:
+        for _ in range(20):
+            await caller.cli.call(AddTwoInts.Request(a=i, b=1), timeout=60)
+            sizes.append(sum(map(len, timeouts._lanes.values())))
+
+    async with anyio.create_task_group() as tg:
+        for i in range(100):
+            tg.start_soon(one, i)
+    assert len(sizes) == 2000
+    return sizes
 
 
 async def test_answered_calls_leave_no_deadlines_behind():
@@ -437,20 +453,10 @@ async def test_answered_calls_leave_no_deadlines_behind():
         rt.spawn(Adder)
         caller = rt.spawn(Caller)
         await anyio.sleep(0)
-        timeouts = rt.services.timeouts(rt.loop)
-        sizes = []
-
-        async def one(i: int) -> None:
-            for _ in range(20):
-                await caller.cli.call(AddTwoInts.Request(a=i, b=1), timeout=60)
-                sizes.append(_deadlines(timeouts))
-
-        async with anyio.create_task_group() as tg:
-            for i in range(100):
-                tg.start_soon(one, i)
         # Answered entries are swept out, not kept for their 60 s.
-        assert max(sizes) <= 2 * 100 + 64 + 1 and len(sizes) == 2000
-        assert _deadlines(timeouts) == 0 and timeouts._heads == [] and live_loop_timers() == []
+        assert max(await _hundred_callers(rt, caller)) <= 2 * 100 + 64 + 1
+        timeouts = rt.services.timeouts(rt.loop)
+        assert timeouts._lanes == {} and timeouts._heads == [] and live_loop_timers() == []
 
 
 def test_on_the_wall_clock_answered_calls_are_swept_without_being_counted_and_a_late_one_times_out():
@@ -470,20 +476,9 @@ def test_on_the_wall_clock_answered_calls_are_swept_without_being_counted_and_a_
             caller = rt.spawn(Caller)
             dawdle = caller._core.create_client(AddTwoInts, "/dawdle")
             await asyncio.sleep(0)
-            timeouts = rt.services.timeouts(rt.loop)
-            sizes = []
-
-            async def one(i: int) -> None:
-                for _ in range(20):
-                    await caller.cli.call(AddTwoInts.Request(a=i, b=1), timeout=60)
-                    sizes.append(_deadlines(timeouts))
-
             # A call that waits all along heads the lane of 60 s while 2,000 others come and go behind it.
             waiting = asyncio.ensure_future(dawdle.call(AddTwoInts.Request(a=3600), timeout=60))
-            async with anyio.create_task_group() as tg:
-                for i in range(100):
-                    tg.start_soon(one, i)
-            assert max(sizes) <= 2 * 101 + 64 + 1 and len(sizes) == 2000
+            assert max(await _hundred_callers(rt, caller)) <= 2 * 101 + 64 + 1
             assert not waiting.done()
             waiting.cancel()
             with pytest.raises(TimeoutError, match="no response from service /dawdle within 0.05 s"):
