@@ -231,7 +231,8 @@ def test_qos_and_argparse_beside_ros_arguments():
 
 
 def test_ctrl_c_landing_in_a_finaliser_still_interrupts_the_script():
-    # Python drops what a __del__ or a weakref finaliser raises: the KeyboardInterrupt is asked for again.
+    # Python drops what a __del__ or a weakref finaliser raises: the KeyboardInterrupt is asked for
+    # again, and the context stops with it (not before: the spin would return as if shut down).
     done = actors_run(script("interrupted_in_finaliser.py"), timeout=30)
     assert done.returncode == 0, done.stderr
     assert done.stdout == "interrupted\n"

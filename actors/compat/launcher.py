@@ -162,12 +162,15 @@ class _Stop:
     def _on_sigint(self, signum: int, frame: FrameType | None) -> None:
         # As rclpy's handler: the context stops (spins raise ExternalShutdownException), then the
         # previous handler's KeyboardInterrupt.
-        self._shut_down()
         if _in_finaliser(frame):
             # Python prints and drops what a finaliser raises ("Exception ignored in ..."): the
-            # script would never see its KeyboardInterrupt.  Ask again once the finaliser is over.
+            # script would never see its KeyboardInterrupt.  Ask again once the finaliser is over,
+            # and stop the context only then: a spin that found it stopped first would return as if
+            # shut down normally (and the script's own rclpy.shutdown() would fail).
+            self.requested = True
             _thread.start_new_thread(self._interrupt_soon, ())
             return
+        self._shut_down()
         raise KeyboardInterrupt
 
     def _interrupt_soon(self) -> None:
