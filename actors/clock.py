@@ -29,7 +29,9 @@ import selectors
 import time
 import weakref
 from collections.abc import Callable
+from contextvars import copy_context
 from enum import IntEnum
+from heapq import heapify, heappop, heappush
 from typing import Any
 
 from actors.errors import VirtualTimeDeadlock
@@ -491,6 +493,16 @@ WALL_LOOPS: dict[str, Callable[[], asyncio.AbstractEventLoop]] = {
 }
 
 
+_new_handle = object.__new__
+# The fields asyncio's Handle and TimerHandle have (3.11 to 3.13): call_at and call_soon fill them
+# in directly; a Python whose handles differ gets asyncio's own constructors.
+_LEAN_HANDLES = set(asyncio.Handle.__slots__) == {
+    "_callback", "_args", "_cancelled", "_loop", "_source_traceback", "_repr", "__weakref__", "_context"
+} and set(asyncio.TimerHandle.__slots__) == {"_scheduled", "_when"}
+_MAX_WAIT = 24 * 3600.0  # asyncio's longest wait in one select (MAXIMUM_SELECT_TIMEOUT)
+_MIN_SCHEDULED = 100  # asyncio's: below this many timers, cancelled ones are only popped at the head
+
+
 class _JumpingSelector(selectors.DefaultSelector):
     """The selector of :class:`VirtualTimeLoop`: polls I/O, then jumps instead of sleeping."""
 
@@ -501,23 +513,20 @@ class _JumpingSelector(selectors.DefaultSelector):
         # saw is still there for select()), where select() spends a microsecond in Python.
         self._peek = self._selector.poll if isinstance(self, selectors.EpollSelector) else None
 
-    def _poll(self) -> list[tuple[selectors.SelectorKey, int]]:
-        if self._peek is not None and not self._peek(0, 1):
-            return []
-        return super().select(0)
-
     def select(self, timeout: float | None = None) -> list[tuple[selectors.SelectorKey, int]]:
+        peek = self._peek
         if timeout == 0:
-            return self._poll()
+            return super().select(0) if peek is None or peek(0, 1) else []
         loop = self._vloop
         # Ask the threads before polling: a thread hands its work over (call_soon_threadsafe
         # writes the self-pipe) before it goes idle, so once none is busy, the poll below sees
         # all they handed over.  Polled first, a hand-off between the poll and the question
         # would be missed and time would jump past the work it brings.
         busy = loop.threads_busy()
-        events = self._poll()
-        if events:
-            return events
+        if peek is None or peek(0, 1):
+            events = super().select(0)
+            if events:
+                return events
         if busy:
             # Real work is running in a thread: wait for it in real time (looking again after
             # busy_poll, when set, for threads that stop being busy without waking the loop).
@@ -526,8 +535,12 @@ class _JumpingSelector(selectors.DefaultSelector):
                 timeout = poll
             return super().select(timeout)
         if timeout is not None:
-            loop._jump()
-            return events
+            # Land exactly on the earliest deadline, not on now + (when - now), which float
+            # rounding can leave a hair short of it.
+            scheduled = loop._scheduled  # the base loop's heap of TimerHandles
+            if scheduled and scheduled[0]._when > loop._now:
+                loop._now = scheduled[0]._when
+            return []
         # No timer at all: only real I/O could still wake anything.
         events = super().select(loop.idle_timeout)
         if not events and not loop.threads_busy():
@@ -552,6 +565,12 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
     like simulated time in ROS.  Raises :class:`~actors.errors.VirtualTimeDeadlock`
     out of ``run_*`` when no timer, I/O or thread could ever wake a task and
     ``idle_timeout`` real seconds pass with nothing happening.
+
+    Its iterations, ``call_at`` and ``call_soon`` are asyncio's specialised to
+    virtual time (tests/test_virtual_loop.py runs the same programs on asyncio's
+    own code and compares): a simulation spends most of its loop iterations on
+    one timer each, and asyncio's generic iteration cost as much as a physics
+    step.  In debug mode the loop takes asyncio's own code (slow-callback warnings).
     """
 
     def __init__(self, *, epoch: float = 0.0, idle_timeout: float = 5.0) -> None:
@@ -567,12 +586,93 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
     def time(self) -> float:
         return self._now
 
-    def _jump(self) -> None:
-        # Land exactly on the earliest deadline, not on now + (when - now), which
-        # float rounding can leave a hair short of it.
-        scheduled = self._scheduled  # the base loop's heap of TimerHandles
-        if scheduled and scheduled[0].when() > self._now:
-            self._now = scheduled[0].when()
+    def call_at(self, when: float, callback: Callable[..., object], *args: Any,
+                context: Any = None) -> asyncio.TimerHandle:
+        if self._debug or self._closed or when is None or not _LEAN_HANDLES:
+            return super().call_at(when, callback, *args, context=context)
+        # asyncio's call_at without its two constructors, its debug questions and the closed
+        # check's call: the same handle, with the same fields, in the same heap.
+        timer = _new_handle(asyncio.TimerHandle)
+        timer._callback = callback
+        timer._args = args
+        timer._cancelled = False
+        timer._loop = self
+        timer._source_traceback = None
+        timer._repr = None
+        timer._context = copy_context() if context is None else context
+        timer._when = when
+        heappush(self._scheduled, timer)
+        timer._scheduled = True
+        return timer
+
+    def call_soon(self, callback: Callable[..., object], *args: Any, context: Any = None) -> asyncio.Handle:
+        if self._debug or self._closed or not _LEAN_HANDLES:
+            return super().call_soon(callback, *args, context=context)
+        handle = _new_handle(asyncio.Handle)
+        handle._callback = callback
+        handle._args = args
+        handle._cancelled = False
+        handle._loop = self
+        handle._source_traceback = None
+        handle._repr = None
+        handle._context = copy_context() if context is None else context
+        self._ready.append(handle)
+        return handle
+
+    def _run_once(self) -> None:
+        # One iteration of asyncio's loop (BaseEventLoop._run_once), specialised to virtual time:
+        # the same steps in the same order (drop cancelled timers, poll I/O or jump, move the due
+        # timers to the ready queue, run what was ready when the iteration began), without the
+        # generic parts it pays for on every instant: time() calls, the timeout's arithmetic when
+        # something is ready, the debug checks, an empty _process_events.  Debug mode (slow
+        # callback warnings, the current handle) takes asyncio's own iteration.
+        if self._debug:
+            super()._run_once()
+            return
+        if self._timer_cancelled_count:
+            self._drop_cancelled()
+        scheduled = self._scheduled
+        ready = self._ready
+        if ready or self._stopping:
+            events = self._selector.select(0)
+        elif scheduled:
+            events = self._selector.select(min(max(0.0, scheduled[0]._when - self._now), _MAX_WAIT))
+        else:
+            events = self._selector.select(None)
+        if events:
+            self._process_events(events)
+        events = None  # no cycle through a handle's exception
+        end = self._now + self._clock_resolution
+        while scheduled and scheduled[0]._when < end:
+            handle = heappop(scheduled)
+            handle._scheduled = False
+            ready.append(handle)
+        # Only what is ready now: callbacks scheduled by these run in the next iteration, after a poll.
+        popleft = ready.popleft
+        for _ in range(len(ready)):
+            handle = popleft()
+            if not handle._cancelled:
+                handle._run()
+        handle = None
+
+    def _drop_cancelled(self) -> None:
+        # As asyncio does: rebuild the heap when cancelled timers are most of a large one,
+        # otherwise pop those at its head.
+        scheduled = self._scheduled
+        if len(scheduled) > _MIN_SCHEDULED and self._timer_cancelled_count * 2 > len(scheduled):
+            live = []
+            for handle in scheduled:
+                if handle._cancelled:
+                    handle._scheduled = False
+                else:
+                    live.append(handle)
+            heapify(live)
+            self._scheduled = live
+            self._timer_cancelled_count = 0
+        else:
+            while scheduled and scheduled[0]._cancelled:
+                self._timer_cancelled_count -= 1
+                heappop(scheduled)._scheduled = False
 
     def advance(self, seconds: float) -> None:
         """Move virtual time forward by ``seconds`` at once (timers due run next)."""
