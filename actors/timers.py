@@ -87,6 +87,7 @@ def _timer_info_parameter(callback: Callable[..., Any]) -> str | None:
 
 _COMPACT_AT = 64  # stale entries tolerated before the heap and lanes are rebuilt without them
 _MAX_LANES = 256  # distinct periods given a lane; timers of any further period wait in the heap alone
+_NEVER = float("inf")  # a constant: float("inf") parses the string at each call
 
 
 class _Lane:
@@ -135,7 +136,7 @@ class Deadlines:
         self._heap: list[_Entry] = []
         self._lanes: dict[float, _Lane] = {}
         self._handle: asyncio.TimerHandle | None = None
-        self._armed = float("inf")  # the deadline the loop timer is set for
+        self._armed = _NEVER  # the deadline the loop timer is set for
         self._order = itertools.count()
         self._stale = 0
         self._firing = False  # in _fire: the loop timer is set once, when its rounds are done
@@ -156,7 +157,10 @@ class Deadlines:
 
     def add(self, when: float, timer: Timer) -> None:
         """Schedule ``timer`` in its node at loop time ``when`` (its ``_when`` from now), unless that changes first."""
-        timer._when = when
+        # On the nanosecond grid: timers due at one instant get the same float and fire together,
+        # in the order armed (15 * 0.01 is 0.15 but 3 * 0.05 is 0.15000000000000002, which put a
+        # 20 Hz timer's third tick a hair after a 100 Hz timer's fifteenth, in an iteration of its own).
+        timer._when = when = round(when * _NS) / _NS
         lane = timer._lane
         if lane is None:
             heappush(self._heap, (when, next(self._order), timer, None))
@@ -237,14 +241,16 @@ class Deadlines:
         if self._handle is not None:
             self._handle.cancel()
             self._handle = None
-        self._armed = float("inf")
+        self._armed = _NEVER
 
     def _fire(self) -> None:
         # Everything due by now, and at least what the loop timer was set for (the loop
         # may run a timer a clock-resolution early).
-        limit = max(self._loop.time(), self._armed)
+        limit = self._loop.time()
+        if limit < self._armed:  # not max(): it parses its arguments as keywords, ten times the cost
+            limit = self._armed
         self._handle = None
-        self._armed = float("inf")
+        self._armed = _NEVER
         # The callbacks re-arm their timers: one loop timer for all of them afterwards,
         # rather than one each (asyncio keeps a cancelled one in its heap until it is due).
         self._firing = True
@@ -269,7 +275,7 @@ class Deadlines:
             if heap:
                 self._arm(heap[0][0])
             else:
-                self._armed = float("inf")
+                self._armed = _NEVER
 
 
 class Timer:
@@ -391,8 +397,8 @@ class Timer:
 
     @property
     def next_deadline(self) -> float:
-        """The loop time of the next tick."""
-        return self._start + self._k * self.period
+        """The loop time of the next tick, on the nanosecond grid (as :meth:`Deadlines.add` sets it)."""
+        return round((self._start + self._k * self.period) * _NS) / _NS
 
     def time_until_next_call(self) -> int | None:
         """Nanoseconds until the next tick (negative when it is overdue), or None when canceled."""

@@ -106,6 +106,29 @@ async def test_timers_sharing_a_deadline_fire_from_one_loop_timer_in_creation_or
         assert order == ["a", "b", "c", "a", "b", "c"]
 
 
+async def test_timers_due_at_the_same_instant_fire_together_whatever_their_periods():
+    # 15 * 0.01 s is 0.15 in floats, 3 * 0.05 s is 0.15000000000000002: without deadlines on the
+    # nanosecond grid, a 20 Hz timer's third tick came a hair after a 100 Hz timer's 15th, in a
+    # loop iteration of its own, and which came first at a shared instant depended on rounding.
+    fired: list[tuple[str, float]] = []
+
+    class Two(Node):
+        def __init__(self) -> None:
+            super().__init__("two")
+            self.create_timer(0.01, lambda: fired.append(("fast", asyncio.get_running_loop().time())))
+            self.create_timer(0.05, lambda: fired.append(("slow", asyncio.get_running_loop().time())))
+
+    async with Runtime() as rt:
+        rt.spawn(Two)
+        await anyio.sleep(1.005)
+    instants = sorted({t for _, t in fired})
+    assert len(instants) == 100  # the slow timer's 20 ticks all fall on fast ones
+    shared = [[name for name, t in fired if t == instant] for instant in instants if instant in
+              {t for name, t in fired if name == "slow"}]
+    # Together, in the order their deadlines were armed: the slow one's a period ahead, each time.
+    assert shared == [["slow", "fast"]] * 20
+
+
 async def test_a_canceled_timer_leaves_no_loop_timer_for_its_deadline():
     class Two(Node):
         def __init__(self) -> None:
