@@ -116,6 +116,22 @@ class Scheduler:
         if self._armed:
             self._context.run(self._flush)
 
+    def run_one(self, actor: Actor, entity: Entity) -> None:
+        """Schedule ``entity`` on ``actor`` and run the rounds due now, as hold, schedule and run_now would.
+
+        For a loop callback that wakes a single entity (a timer due alone): when
+        nothing else waits for a round and the actor is idle, its round runs at
+        once, without the ready list and the four calls around it.
+        """
+        if self._armed or actor._queued or actor._scheduler is not self:
+            self.hold()
+            actor.schedule(entity)
+            self.run_now()
+            return
+        actor._ready.append(entity)
+        actor._queued = True
+        self._context.run(actor._round)
+
     def _flush(self) -> None:
         self._armed = False
         ready, self._ready = self._ready, []

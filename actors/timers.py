@@ -254,20 +254,26 @@ class Deadlines:
         # The callbacks re-arm their timers: one loop timer for all of them afterwards,
         # rather than one each (asyncio keeps a cancelled one in its heap until it is due).
         self._firing = True
-        scheduler = self._scheduler
-        if scheduler is not None:
-            scheduler.hold()  # the rounds run below, not from a loop callback of their own
         heap = self._heap
+        due = []
         while heap and heap[0][0] <= limit:
             when, _, timer, _ = self._pop()
             if timer._when == when:
                 timer._when = None  # due: it waits for no deadline until its callback has run
-                timer.node.actor.schedule(timer)
+                due.append(timer)
             else:
                 self._stale -= 1
+        scheduler = self._scheduler
         try:
-            if scheduler is not None:
-                scheduler.run_now()
+            if scheduler is not None and len(due) == 1:
+                scheduler.run_one(due[0].node.actor, due[0])  # most instants of a simulation
+            else:
+                if scheduler is not None:
+                    scheduler.hold()  # the rounds run below, not from a loop callback of their own
+                for timer in due:
+                    timer.node.actor.schedule(timer)
+                if scheduler is not None:
+                    scheduler.run_now()
         finally:
             self._firing = False
             self._prune()

@@ -113,3 +113,58 @@ async def test_a_crash_in_a_plain_callback_ends_only_that_node():
         await anyio.sleep(2.5)
         assert [n.name for n in rt.graph.nodes()] == ["/idle", "/publisher"]
         assert idle.ticks == 2
+
+
+class Noting:
+    """An entity that notes its name when it runs."""
+
+    def __init__(self, name: str, notes: list[str]) -> None:
+        self.name = name
+        self.notes = notes
+
+    def _run(self) -> None:
+        self.notes.append(self.name)
+
+
+async def test_run_one_runs_an_idle_actors_round_at_once_and_otherwise_waits_its_turn():
+    from actors.actor import Actor, Scheduler
+
+    loop = asyncio.get_running_loop()
+    scheduler = Scheduler(loop)
+    first, second = Actor(loop, scheduler), Actor(loop, scheduler)
+    notes: list[str] = []
+    # Nothing else waits: the round runs now, in the caller's loop callback, and the actor is idle after it.
+    scheduler.run_one(first, Noting("alone", notes))
+    assert notes == ["alone"] and not first._queued
+    # Another actor's round is already due (a wake-up from a publish): it runs first, then this one.
+    first.schedule(Noting("woken earlier", notes))
+    scheduler.run_one(second, Noting("timer", notes))
+    assert notes == ["alone", "woken earlier", "timer"]
+    # An actor with work queued (its round is due): the entity waits behind that work.
+    first.schedule(Noting("queued", notes))
+    scheduler.run_one(first, Noting("behind it", notes))
+    assert notes[3:] == ["queued", "behind it"]
+    await asyncio.sleep(0)  # the loop callback those wake-ups asked for finds nothing left to run
+    assert notes[5:] == []
+    # An actor inside an async callback: the entity runs after it, never beside it.
+    release = loop.create_future()
+
+    class Awaiting:
+        def _run(self):
+            notes.append("async starts")
+
+            async def rest() -> None:
+                await release
+                notes.append("async ends")
+
+            return rest()
+
+    first.schedule(Awaiting())
+    await asyncio.sleep(0)
+    assert first.awaiting and notes[5:] == ["async starts"]
+    scheduler.run_one(first, Noting("during", notes))
+    assert notes[5:] == ["async starts"]
+    release.set_result(None)
+    for _ in range(3):
+        await asyncio.sleep(0)
+    assert notes[5:] == ["async starts", "async ends", "during"]
