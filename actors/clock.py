@@ -499,6 +499,22 @@ _new_handle = object.__new__
 _LEAN_HANDLES = set(asyncio.Handle.__slots__) == {
     "_callback", "_args", "_cancelled", "_loop", "_source_traceback", "_repr", "__weakref__", "_context"
 } and set(asyncio.TimerHandle.__slots__) == {"_scheduled", "_when"}
+
+
+def _handle(cls: type, callback: Callable[..., object], args: tuple[Any, ...], loop: VirtualTimeLoop,
+            context: Any) -> Any:
+    # Handle.__init__ outside debug mode, filled in by one call instead of two (TimerHandle's and Handle's).
+    handle = _new_handle(cls)
+    handle._callback = callback
+    handle._args = args
+    handle._cancelled = False
+    handle._loop = loop
+    handle._source_traceback = None
+    handle._repr = None
+    handle._context = copy_context() if context is None else context
+    return handle
+
+
 _MAX_WAIT = 24 * 3600.0  # asyncio's longest wait in one select (MAXIMUM_SELECT_TIMEOUT)
 _MIN_SCHEDULED = 100  # asyncio's: below this many timers, cancelled ones are only popped at the head
 
@@ -590,16 +606,9 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
                 context: Any = None) -> asyncio.TimerHandle:
         if self._debug or self._closed or when is None or not _LEAN_HANDLES:
             return super().call_at(when, callback, *args, context=context)
-        # asyncio's call_at without its two constructors, its debug questions and the closed
+        # asyncio's call_at without its two constructors' debug questions and the closed
         # check's call: the same handle, with the same fields, in the same heap.
-        timer = _new_handle(asyncio.TimerHandle)
-        timer._callback = callback
-        timer._args = args
-        timer._cancelled = False
-        timer._loop = self
-        timer._source_traceback = None
-        timer._repr = None
-        timer._context = copy_context() if context is None else context
+        timer = _handle(asyncio.TimerHandle, callback, args, self, context)
         timer._when = when
         heappush(self._scheduled, timer)
         timer._scheduled = True
@@ -608,14 +617,7 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
     def call_soon(self, callback: Callable[..., object], *args: Any, context: Any = None) -> asyncio.Handle:
         if self._debug or self._closed or not _LEAN_HANDLES:
             return super().call_soon(callback, *args, context=context)
-        handle = _new_handle(asyncio.Handle)
-        handle._callback = callback
-        handle._args = args
-        handle._cancelled = False
-        handle._loop = self
-        handle._source_traceback = None
-        handle._repr = None
-        handle._context = copy_context() if context is None else context
+        handle = _handle(asyncio.Handle, callback, args, self, context)
         self._ready.append(handle)
         return handle
 
