@@ -120,9 +120,11 @@ class Child:
 
     def give_back(self, entities: Mapping[tuple[str, str], list[Any]]) -> None:
         """Keep ``entities`` (a failed instance's) for the next instance to adopt."""
+        if not entities:
+            return
+        if self._inheritance is None:
+            self._inheritance = {}
         for key, olds in entities.items():
-            if self._inheritance is None:
-                self._inheritance = {}
             self._inheritance.setdefault(key, []).extend(olds)
 
     def take_inheritance(self) -> Mapping[tuple[str, str], list[Any]]:
