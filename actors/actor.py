@@ -128,9 +128,7 @@ class Scheduler:
             actor.schedule(entity)
             self.run_now()
             return
-        actor._ready.append(entity)
-        actor._queued = True
-        self._context.run(actor._round)
+        self._context.run(actor._round_of, entity)
 
     def _flush(self) -> None:
         self._armed = False
@@ -238,6 +236,26 @@ class Actor:
                 return
         self.current = None
         self._next()
+
+    def _round_of(self, entity: Entity) -> None:
+        # _round for one entity, given by Scheduler.run_one to an idle actor: no ready list to swap.
+        if not self._running:
+            return
+        self._queued = True
+        self.busy_since = self._loop.time()
+        self.current = entity
+        try:
+            pending = entity._run()
+        except Exception as exc:
+            self.current = None
+            self._exit(exc)
+            return
+        if pending is not None:
+            self.task = self._loop.create_task(self._finish(pending))
+            return
+        self.current = None
+        if self._running:
+            self._next()
 
     def _next(self) -> None:
         if self._ready:

@@ -594,6 +594,7 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
         self._executor_jobs = 0
         self._thread_limiter: Any = None  # anyio's default thread limiter of this loop, once it exists
         self._itself = weakref.ref(self)  # how anyio's per-loop run vars know this loop
+        self._anyio_vars, self._limiter_key = _anyio_run_vars()
         self.busy_poll: float | None = None  # see _JumpingSelector.select
         self.epoch = epoch
         self.idle_timeout = idle_timeout
@@ -613,6 +614,25 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
         heappush(self._scheduled, timer)
         timer._scheduled = True
         return timer
+
+    def call_again(self, handle: asyncio.TimerHandle, when: float) -> asyncio.TimerHandle:
+        """``handle``, a timer handle of this loop that has run, scheduled again for ``when``; returns the handle.
+
+        For a callback that sets its loop timer again each time it runs (a
+        runtime's timers, every instant of a simulation): the same object,
+        callback, arguments and context back in the heap, as ``call_at`` would
+        make them, without a new handle.  A new one from ``call_at`` for a
+        handle still waiting, and in debug mode.  ValueError for a cancelled
+        handle (cancelling forgets the callback).
+        """
+        if handle._cancelled:
+            raise ValueError("a cancelled handle cannot be called again")
+        if self._debug or self._closed or handle._scheduled:
+            return self.call_at(when, handle._callback, *handle._args, context=handle._context)
+        handle._when = when
+        heappush(self._scheduled, handle)
+        handle._scheduled = True
+        return handle
 
     def call_soon(self, callback: Callable[..., object], *args: Any, context: Any = None) -> asyncio.Handle:
         if self._debug or self._closed or not _LEAN_HANDLES:
@@ -701,32 +721,24 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
             return True
         limiter = self._thread_limiter
         if limiter is None:  # made by anyio at the loop's first to_thread call, then kept
-            limiter = self._thread_limiter = _anyio_thread_limiter(self._itself)
-        return limiter is not None and limiter.borrowed_tokens > 0
+            # Asked on every jump of virtual time: the lookup inline, no call of its own.
+            found = self._anyio_vars.get(self._itself)
+            if found is None or (limiter := found.get(self._limiter_key)) is None:
+                return False
+            self._thread_limiter = limiter
+        return limiter.borrowed_tokens > 0
 
 
-_anyio_run_vars: Any = None  # anyio's per-loop run vars and its limiter's key, looked up once
-
-
-def _anyio_thread_limiter(loop: weakref.ref[asyncio.AbstractEventLoop]) -> Any:
+def _anyio_run_vars() -> tuple[dict[Any, dict[Any, Any]], Any]:
     # anyio runs ``to_thread.run_sync`` in its own workers, outside run_in_executor,
     # holding a token of the loop's default limiter while the call runs.  anyio has
-    # no public way to ask this from outside a task, so read its per-loop run vars;
-    # tests/test_clock.py fails if that ever stops working.  The names are imported
-    # once: importing them on each call cost 3 µs on every jump of virtual time.
-    global _anyio_run_vars
-    if _anyio_run_vars is None:
-        try:
-            from anyio._backends._asyncio import _default_thread_limiter
-            from anyio.lowlevel import _run_vars
-        except ImportError:  # pragma: no cover - a future anyio
-            _anyio_run_vars = ()
-        else:
-            _anyio_run_vars = (_run_vars, _default_thread_limiter)
-    if not _anyio_run_vars:  # pragma: no cover - a future anyio
-        return None
-    run_vars, key = _anyio_run_vars
-    # The WeakKeyDictionary's own dict, by the loop's weak reference: its get() builds one
-    # per call, and this runs on every jump until anyio makes the limiter.
-    found = run_vars.data.get(loop)
-    return found.get(key) if found else None
+    # no public way to ask this from outside a task, so read its per-loop run vars:
+    # the WeakKeyDictionary's own dict, by the loop's weak reference (its get() builds
+    # one per call), and the limiter's key in them.  tests/test_clock.py fails if that
+    # ever stops working.
+    try:
+        from anyio._backends._asyncio import _default_thread_limiter
+        from anyio.lowlevel import _run_vars
+    except ImportError:  # pragma: no cover - a future anyio
+        return {}, None
+    return _run_vars.data, _default_thread_limiter

@@ -38,7 +38,7 @@ from inspect import isawaitable
 from typing import Any
 
 from actors.actor import CallbackFailed, Owner, Scheduler
-from actors.clock import Clock, ClockType, Time
+from actors.clock import Clock, ClockType, Time, VirtualTimeLoop
 
 __all__ = ["Timer", "TimerInfo", "Deadlines"]
 
@@ -128,7 +128,8 @@ class Deadlines:
     fire in the order they were armed.
     """
 
-    __slots__ = ("_loop", "_scheduler", "_heap", "_lanes", "_handle", "_armed", "_order", "_stale", "_firing")
+    __slots__ = ("_loop", "_scheduler", "_heap", "_lanes", "_handle", "_spent", "_call_again", "_armed", "_order",
+                 "_stale", "_firing")
 
     def __init__(self, loop: asyncio.AbstractEventLoop, scheduler: Scheduler | None = None) -> None:
         self._loop = loop
@@ -136,6 +137,10 @@ class Deadlines:
         self._heap: list[_Entry] = []
         self._lanes: dict[float, _Lane] = {}
         self._handle: asyncio.TimerHandle | None = None
+        # The loop timer that ran _fire, set again for the next deadline where the loop can
+        # (virtual time: one loop timer per instant, and a new handle cost as much as the rest of _arm).
+        self._spent: asyncio.TimerHandle | None = None
+        self._call_again = loop.call_again if isinstance(loop, VirtualTimeLoop) else None
         self._armed = _NEVER  # the deadline the loop timer is set for
         self._order = itertools.count()
         self._stale = 0
@@ -235,7 +240,12 @@ class Deadlines:
             return
         if self._handle is not None:
             self._handle.cancel()
-        self._handle = self._loop.call_at(when, self._fire)
+        spent = self._spent
+        if spent is not None and self._call_again is not None:
+            self._spent = None
+            self._handle = self._call_again(spent, when)
+        else:
+            self._handle = self._loop.call_at(when, self._fire)
 
     def _disarm(self) -> None:
         if self._handle is not None:
@@ -249,10 +259,11 @@ class Deadlines:
         limit = self._loop.time()
         if limit < self._armed:  # not max(): it parses its arguments as keywords, ten times the cost
             limit = self._armed
-        self._handle = None
-        self._armed = _NEVER
+        self._spent, self._handle = self._handle, None
         # The callbacks re-arm their timers: one loop timer for all of them afterwards,
         # rather than one each (asyncio keeps a cancelled one in its heap until it is due).
+        # Below every deadline meanwhile, so that add() leaves the loop timer alone.
+        self._armed = -_NEVER
         self._firing = True
         heap = self._heap
         due = []
@@ -276,8 +287,9 @@ class Deadlines:
                     scheduler.run_now()
         finally:
             self._firing = False
-            self._prune()
             heap = self._heap  # discard() may have rebuilt it
+            if heap and heap[0][2]._when != heap[0][0]:
+                self._prune()
             if heap:
                 self._arm(heap[0][0])
             else:

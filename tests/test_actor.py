@@ -168,3 +168,43 @@ async def test_run_one_runs_an_idle_actors_round_at_once_and_otherwise_waits_its
     for _ in range(3):
         await asyncio.sleep(0)
     assert notes[5:] == ["async starts", "async ends", "during"]
+
+
+async def test_run_one_on_an_idle_actor_hands_an_async_callback_to_a_task_and_a_failure_ends_the_actor():
+    from actors.actor import Actor, CallbackFailed, Scheduler
+
+    loop = asyncio.get_running_loop()
+    scheduler = Scheduler(loop)
+    actor = Actor(loop, scheduler)
+    notes: list[str] = []
+    release = loop.create_future()
+
+    class Awaiting:
+        def _run(self):
+            notes.append("async starts")
+
+            async def rest() -> None:
+                await release
+                notes.append("async ends")
+
+            return rest()
+
+    scheduler.run_one(actor, Awaiting())
+    assert actor.awaiting and actor._queued and notes == ["async starts"]
+    scheduler.run_one(actor, Noting("while it awaits", notes))  # waits behind the async callback
+    release.set_result(None)
+    for _ in range(3):
+        await asyncio.sleep(0)
+    assert notes == ["async starts", "async ends", "while it awaits"] and not actor._queued
+
+    exits: list[BaseException | None] = []
+    actor.on_exit = exits.append
+
+    class Failing:
+        def _run(self):
+            raise CallbackFailed(self, None, RuntimeError("no"))
+
+    scheduler.run_one(actor, Failing())
+    assert [type(e.error) for e in exits] == [RuntimeError] and actor.current is None  # type: ignore[union-attr]
+    scheduler.run_one(actor, Noting("after the end", notes))
+    assert notes[-1] == "while it awaits"  # a stopped actor runs nothing more

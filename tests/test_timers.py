@@ -297,6 +297,28 @@ async def test_ticks_rearm_under_one_loop_timer_and_leave_no_loop_callback_behin
         assert [h.when() for h in live_loop_timers()] == [pytest.approx(0.31)]
 
 
+async def test_on_virtual_time_every_instant_of_the_timers_is_the_same_loop_timer_set_again():
+    class Pair(Node):
+        def __init__(self) -> None:
+            super().__init__("pair")
+            self.ticks: list[float] = []
+            self.create_timer(0.01, lambda: self.ticks.append(asyncio.get_running_loop().time()))
+            self.create_timer(0.03, lambda: None)  # instants where two timers are due, and where one is
+
+    async with Runtime() as rt:
+        node = rt.spawn(Pair)
+        seen = []
+        await anyio.sleep(0.005)
+        for _ in range(10):  # between two instants: the loop timer waiting for the next one
+            (handle,) = [h for h in live_loop_timers() if h._callback == rt.deadlines._fire]
+            seen.append((handle, handle.when()))
+            await anyio.sleep(0.01)
+    # One TimerHandle for the whole run, set for each instant in turn (before: a new one per instant).
+    assert len({id(handle) for handle, _ in seen}) == 1
+    assert [when for _, when in seen] == pytest.approx([0.01 * k for k in range(1, 11)])
+    assert node.ticks == pytest.approx([0.01 * k for k in range(1, 11)])
+
+
 async def test_a_timer_made_or_canceled_by_a_callback_moves_the_loop_timer():
     class Planner(Node):
         def __init__(self) -> None:

@@ -25,6 +25,10 @@ class AsyncioIteration(VirtualTimeLoop):
     call_at = asyncio.SelectorEventLoop.call_at
     call_soon = asyncio.SelectorEventLoop.call_soon
 
+    def call_again(self, handle: asyncio.TimerHandle, when: float) -> asyncio.TimerHandle:
+        # What call_again stands for: a new call_at with the handle's callback, arguments and context.
+        return self.call_at(when, handle._callback, *handle._args, context=handle._context)
+
 
 def test_the_reference_really_is_asyncios_code():
     # Otherwise every comparison below would compare the loop with itself.
@@ -155,6 +159,59 @@ def test_handles_carry_their_context_and_are_asyncios_handles():
     assert run_both(program) == [
         ("TimerHandle", 0.5, False, True), ("soon", "given"), ("soon, own copy", "caller's"), ("timer", "given"),
     ]
+
+
+def test_call_again_puts_a_handle_that_ran_back_in_line_as_call_at_would():
+    var = contextvars.ContextVar("var", default="unset")
+
+    async def program(loop, trace):
+        handles = []
+
+        def tick(label):
+            handle = handles[-1]
+            trace.append((label, loop.time(), var.get()))
+            if loop.time() < 0.3:
+                # Due at the same instant as a timer made before it: after that one, as call_at's would be.
+                handles.append(loop.call_again(handle, loop.time() + 0.1))
+
+        context = contextvars.copy_context()
+        context.run(var.set, "the handle's own")
+        handles.append(loop.call_at(0.1, tick, "tick", context=context))
+        for when in (0.2, 0.3):
+            loop.call_at(when, lambda when=when: trace.append(("other", loop.time(), var.get())))
+        await asyncio.sleep(1)
+        trace.append(len({id(h) for h in handles}))
+
+    lean, reference = [], []
+    for factory, into in ((VirtualTimeLoop, lean), (AsyncioIteration, reference)):
+        loop = factory()
+        try:
+            loop.run_until_complete(program(loop, into))
+        finally:
+            loop.close()
+    # The same ticks at the same times in the same context and order; the lean loop used one handle for all.
+    assert lean[:-1] == reference[:-1] == [
+        ("tick", 0.1, "the handle's own"), ("other", 0.2, "unset"), ("tick", 0.2, "the handle's own"),
+        ("other", 0.3, "unset"), ("tick", 0.3, "the handle's own"),
+    ]
+    assert (lean[-1], reference[-1]) == (1, 3)
+
+
+def test_call_again_makes_a_new_handle_for_one_still_waiting_and_in_debug_mode_and_refuses_a_cancelled_one():
+    loop = VirtualTimeLoop()
+    try:
+        waiting = loop.call_at(1.0, print)
+        again = loop.call_again(waiting, 2.0)
+        assert again is not waiting and (waiting.when(), again.when()) == (1.0, 2.0)
+        waiting.cancel()
+        with pytest.raises(ValueError, match="cancelled"):
+            loop.call_again(waiting, 3.0)
+        loop.set_debug(True)
+        ran = loop.call_at(0.0, print)
+        loop.run_until_complete(asyncio.sleep(0.5))
+        assert loop.call_again(ran, 4.0) is not ran
+    finally:
+        loop.close()
 
 
 def test_tasks_futures_and_stop():
