@@ -539,10 +539,17 @@ class _JumpingSelector(selectors.DefaultSelector):
         # all they handed over.  Polled first, a hand-off between the poll and the question
         # would be missed and time would jump past the work it brings.
         busy = loop.threads_busy()
-        if peek is None or peek(0, 1):
-            events = super().select(0)
-            if events:
-                return events
+        if peek is None or len(self._fd_to_key) > 1 or loop._signal_handlers:
+            if peek is None or peek(0, 1):  # real I/O, or a signal's byte in the self-pipe
+                events = super().select(0)
+                if events:
+                    return events
+        elif loop._ready:
+            # The self-pipe alone is watched, and no signal writes to it: only threads do, and
+            # call_soon_threadsafe queues the callback before it writes.  So a thread's hand-over
+            # shows in the ready queue (read it, no jump) and an empty queue means nothing to
+            # read: no system call (with the GIL let go and taken back) on every jump.
+            return super().select(0)
         if busy:
             # Real work is running in a thread: wait for it in real time (looking again after
             # busy_poll, when set, for threads that stop being busy without waking the loop).

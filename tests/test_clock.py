@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import asyncio
+import os
+import signal
+import socket
 import sys
 import threading
 import time
@@ -91,6 +94,66 @@ def test_work_a_thread_hands_over_as_it_goes_idle_runs_before_any_jump():
     with asyncio.Runner(loop_factory=HandOverWhenAsked) as runner:
         runner.run(main())
     assert ran_at == [0.0], "virtual time jumped past work handed over as its thread went idle"
+
+
+def _ticks(loop: VirtualTimeLoop, at: float, then) -> asyncio.Future[None]:
+    """Ten timers 0.1 s apart, one at a time (each jump of time alone in its iteration); ``then()`` runs at ``at``."""
+    done = loop.create_future()
+
+    def tick(n: int) -> None:
+        if abs(loop.time() - at) < 1e-9:
+            then()
+        if n:
+            loop.call_at(loop.time() + 0.1, tick, n - 1)
+        else:
+            done.set_result(None)
+
+    loop.call_at(0.1, tick, 9)
+    return done
+
+
+def test_with_only_the_self_pipe_watched_time_jumps_without_asking_the_kernel():
+    loop = VirtualTimeLoop()
+    peek = loop._selector._peek  # type: ignore[attr-defined]
+    if peek is None:
+        pytest.skip("no epoll here: every jump polls with select()")
+    peeks: list[float] = []
+    loop._selector._peek = lambda *args: (peeks.append(loop.time()), peek(*args))[1]  # type: ignore[attr-defined]
+    try:
+        loop.run_until_complete(_ticks(loop, -1, lambda: None))
+        assert loop.time() == pytest.approx(1.0)
+    finally:
+        loop.close()
+    # Only where a callback was ready (the end): ten jumps without a system call each.
+    assert peeks == [pytest.approx(1.0)]
+
+
+def test_data_on_a_watched_socket_is_read_before_time_jumps_on():
+    loop = VirtualTimeLoop()
+    reader, writer = socket.socketpair()
+    seen: list[tuple[bytes, float]] = []
+    loop.add_reader(reader, lambda: seen.append((reader.recv(10), loop.time())))
+    try:
+        loop.run_until_complete(_ticks(loop, 0.3, lambda: writer.send(b"x")))
+    finally:
+        loop.remove_reader(reader)
+        loop.close()
+        reader.close()
+        writer.close()
+    assert seen == [(b"x", pytest.approx(0.3))]
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGUSR1"), reason="needs POSIX signals")
+def test_a_signal_handler_runs_at_the_instant_its_signal_came():
+    loop = VirtualTimeLoop()
+    seen: list[float] = []
+    loop.add_signal_handler(signal.SIGUSR1, lambda: seen.append(loop.time()))
+    try:
+        loop.run_until_complete(_ticks(loop, 0.3, lambda: os.kill(os.getpid(), signal.SIGUSR1)))
+    finally:
+        loop.remove_signal_handler(signal.SIGUSR1)
+        loop.close()
+    assert seen == [pytest.approx(0.3)]
 
 
 def test_waiting_on_nothing_is_a_clear_error():
