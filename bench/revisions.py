@@ -2,13 +2,15 @@
 
 Each revision's tree is exported (``git archive``) to a temporary directory.
 Then, round after round, every revision measures each row (a. one-way,
-b. fan-out 1→10, c. service round trip) in a fresh child process that
+b. fan-out 1→10, c. service round trip, g. the simulation's real-time factor
+through the nodes and for the bare core) in a fresh child process that
 imports that tree's ``actors`` and ``bench``, so that whatever the machine
 does meanwhile falls on all revisions alike.  Prints a Markdown table:
 medians, min–max, each revision's ratio to the first one (× its speed) and,
 for the actors rows, the median against the same revision's baseline row of
 the same rounds, as the targets read it: × the direct call's rate (a, b),
-× the bare future+Queue's time per call (c).  ``--only c`` measures only scenario c;
+× the bare future+Queue's time per call (c), × the core's real-time factor (g).
+``--only c`` measures only scenario c;
 ``--cpu`` counts the children's CPU time instead of wall time (the rows time
 themselves with ``time.perf_counter``, which then reads ``process_time``), so
 that time the machine gives to other processes counts for no revision.
@@ -44,6 +46,12 @@ ROWS = {
     "c. service 100 callers": (f"{_CALLS}(actors_call_time(20_000, 100))", "µs/call", False),
     "c. service 100 callers, timeout=5": (f"{_CALLS}(actors_call_time(20_000, 100, 5.0))", "µs/call", False),
     "c. future+Queue 100 callers": (f"{_CALLS}(future_call_time(20_000, 100))", "µs/call", False),
+    **{
+        f"g. {row}, {robots} robot{'s' if robots > 1 else ''}": (
+            f"from bench.sim import {factor}; print({factor}({robots}, 30.0))", "× real time", True)
+        for robots in (1, 20, 100)
+        for row, factor in (("nodes", "nodes_factor"), ("core (floor)", "core_factor"))
+    },
 }
 BASELINES = {  # row: the row it is shown against, in the targets' terms (× the floor's rate, × the future's time)
     "a. one-way": "a. direct call (floor)",
@@ -52,6 +60,7 @@ BASELINES = {  # row: the row it is shown against, in the targets' terms (× the
     "c. service sequential, timeout=5": "c. future+Queue sequential",
     "c. service 100 callers": "c. future+Queue 100 callers",
     "c. service 100 callers, timeout=5": "c. future+Queue 100 callers",
+    **{f"g. nodes, {n}": f"g. core (floor), {n}" for n in ("1 robot", "20 robots", "100 robots")},
 }
 
 
