@@ -126,6 +126,22 @@ class Noting:
         self.notes.append(self.name)
 
 
+class Awaiting:
+    """An entity with an async callback: notes when it starts, and when it ends once ``release`` is done."""
+
+    def __init__(self, notes: list[str], release: asyncio.Future[None]) -> None:
+        self.notes = notes
+        self.release = release
+
+    def _run(self):
+        self.notes.append("async starts")
+        return self._rest()
+
+    async def _rest(self) -> None:
+        await self.release
+        self.notes.append("async ends")
+
+
 async def test_run_one_runs_an_idle_actors_round_at_once_and_otherwise_waits_its_turn():
     from actors.actor import Actor, Scheduler
 
@@ -148,18 +164,7 @@ async def test_run_one_runs_an_idle_actors_round_at_once_and_otherwise_waits_its
     assert notes[5:] == []
     # An actor inside an async callback: the entity runs after it, never beside it.
     release = loop.create_future()
-
-    class Awaiting:
-        def _run(self):
-            notes.append("async starts")
-
-            async def rest() -> None:
-                await release
-                notes.append("async ends")
-
-            return rest()
-
-    first.schedule(Awaiting())
+    first.schedule(Awaiting(notes, release))
     await asyncio.sleep(0)
     assert first.awaiting and notes[5:] == ["async starts"]
     scheduler.run_one(first, Noting("during", notes))
@@ -178,18 +183,7 @@ async def test_run_one_on_an_idle_actor_hands_an_async_callback_to_a_task_and_a_
     actor = Actor(loop, scheduler)
     notes: list[str] = []
     release = loop.create_future()
-
-    class Awaiting:
-        def _run(self):
-            notes.append("async starts")
-
-            async def rest() -> None:
-                await release
-                notes.append("async ends")
-
-            return rest()
-
-    scheduler.run_one(actor, Awaiting())
+    scheduler.run_one(actor, Awaiting(notes, release))
     assert actor.awaiting and actor._queued and notes == ["async starts"]
     scheduler.run_one(actor, Noting("while it awaits", notes))  # waits behind the async callback
     release.set_result(None)
