@@ -239,6 +239,8 @@ class Actor:
 
     def _round_of(self, entity: Entity) -> None:
         # _round for one entity, given by Scheduler.run_one to an idle actor: no ready list to swap.
+        # Its steps repeat _round's on purpose: a simulation's instants mostly run one timer, and a
+        # frame shared by both would cost what this saves (0.95k of 30.5k instructions an instant).
         if not self._running:
             return
         self._queued = True
