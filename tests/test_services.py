@@ -10,6 +10,7 @@ import pytest
 
 from actors import Node, Runtime, ServiceError, SupervisorPolicy
 from actors.errors import MessageValidationError
+from actors.services import Service
 from conftest import live_loop_timers
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.std_msgs.msg import Int64
@@ -298,6 +299,32 @@ async def test_the_server_sees_each_request_as_it_was_when_called():
             futures.append(caller.cli.call_async(request))
         request.a = 1000
         assert [r.sum for r in await asyncio.gather(*futures)] == [10, 11, 12]
+
+
+async def test_a_server_of_a_service_subclass_takes_every_call_through_its_own_push():
+    # Client.call queues straight into a plain Service's queue; a subclass (a transport's
+    # stand-in) keeps its own _push, also once its queue exists.
+    pushed = []
+
+    class Recording(Service):
+        def _push(self, call):
+            pushed.append(call[0].a)
+            super()._push(call)
+
+    def add(request, response):
+        response.sum = request.a + request.b
+        return response
+
+    class Server(Node):
+        def __init__(self) -> None:
+            super().__init__("adder")
+            self._core.add_service(Recording(self._core, "/add_two_ints", AddTwoInts, add))
+
+    async with Runtime() as rt:
+        rt.spawn(Server)
+        caller = rt.spawn(Caller)
+        sums = [(await caller.cli.call(AddTwoInts.Request(a=a, b=1))).sum for a in range(3)]
+        assert (sums, pushed) == ([1, 2, 3], [0, 1, 2])
 
 
 @pytest.mark.parametrize("kind", ["plain", "async"])
