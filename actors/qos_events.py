@@ -335,11 +335,16 @@ class WatchedPublisher(Publisher):
         Publisher.publish(self, msg)
         subs = self._subs
         if self._lifespan:
-            # publish() has just appended msg to every queue and to the history: wrap it there.
+            # publish() has just appended msg to its open batch, or to every queue and to the
+            # history: wrap it there.
             expires = self.node.loop.time() + self._lifespan
-            for sub in subs:
-                queue = sub._queue
-                queue[-1] = Expiring(queue[-1], expires)
+            batch = self._pending
+            if batch:
+                batch[-1] = Expiring(batch[-1], expires)
+            else:
+                for sub in subs:
+                    queue = sub._queue
+                    queue[-1] = Expiring(queue[-1], expires)
             if self._history is not None:
                 self._history[-1] = Expiring(self._history[-1], expires)
         for sub in subs:

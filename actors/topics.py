@@ -1,14 +1,28 @@
 """Topics: QoS profiles, publishers, subscriptions with their mailboxes, and the topic table.
 
-``Publisher.publish`` is synchronous and O(subscribers): it checks the type,
+``Publisher.publish`` is synchronous and never blocks: it checks the type,
 takes a snapshot of the message (:mod:`actors.snapshot`: every field checked,
 what is mutable copied, never serialised; with no one to receive it, only
-checked), appends that one snapshot to each
-matched subscription's queue and wakes the owning node once per batch.  What
+checked), and hands that one snapshot to each matched subscription.  What
 subscribers receive is the message as it was when published, whatever the
 publisher does with its object afterwards, as in rclpy.  Each
 subscription keeps its own queue, bounded by its QoS depth as in ROS: a full
 KEEP_LAST queue drops its oldest message and counts the drop.
+
+A publisher that feeds one subscription (or a tap, a transport's outlet...)
+appends to each queue itself and wakes the owning node once per batch.  One
+that feeds several ordinary subscriptions appends each snapshot once to its
+own open *batch*, waking its subscriptions when the batch opens; the batch
+moves into every queue (C-speed ``extend``, drops counted as one-by-one
+dropping would count them) when a subscription's round begins, and before
+anything else reaches those queues: another publisher's message, an
+endpoint joining or leaving, a replay.  Per topic at most one publisher has
+a batch open, so each subscription still sees the topic's messages in
+publish order, and ``queued`` and ``dropped`` count an open batch as queued.
+A round iterates the messages queued when it began; what arrives meanwhile
+(a callback publishing on its own topic, or anything during an ``async``
+callback) is fed directly and counts the round's rest against the depth, so
+depth and drops are exactly those of per-message delivery.
 
 A publisher and a subscription are *matched* (connected) only when their QoS is
 compatible, as in ROS (``actors.qos``): a best-effort publisher does not feed a
@@ -41,13 +55,14 @@ from __future__ import annotations
 
 import sys
 from collections import deque
-from collections.abc import Awaitable, Callable
+from collections.abc import Awaitable, Callable, Iterator
 from inspect import isawaitable
+from operator import length_hint
 from typing import Any, Protocol
 
 import msgspec
 
-from actors.actor import CallbackFailed, Mailbox, Owner
+from actors.actor import Actor, CallbackFailed, Mailbox, Owner
 from actors.errors import MessageRefused, TopicTypeError
 from actors.refusals import Refusals
 from actors.snapshot import checker, snapshotter
@@ -117,12 +132,17 @@ class Expiring:
         return repr(self.msg)  # what a dead letter shows
 
 
+#: A publisher's ``_pending`` when it feeds each queue directly but shares its topic with
+#: others: before it delivers, it flushes the batch another may have open.
+_SHARED: Any = ()
+
+
 class Publisher:
     """Publishes messages of one type on one topic.  Create with ``Node.create_publisher``."""
 
     __slots__ = (
         "topic_name", "msg_type", "qos", "node", "_subs", "_feeds", "_tracked", "_history", "_snapshot",
-        "_check", "_events", "__weakref__",
+        "_check", "_events", "_topic", "_pending", "_bound", "__weakref__",
     )
 
     def __init__(self, node: Owner, topic_name: str, msg_type: type, qos: QoSProfile | QoSSnapshot | int) -> None:
@@ -146,6 +166,11 @@ class Publisher:
         self._history: deque[Any] | None = (
             deque(maxlen=qos.depth) if qos.durability == DurabilityPolicy.TRANSIENT_LOCAL else None
         )
+        self._topic: Topic | None = None  # set by the topic table
+        # A batch (see _open): its messages, in publish order, not yet in the subscriptions'
+        # queues; None while this publisher delivers to each queue directly (see _refeed).
+        self._pending: list[Any] | None = None
+        self._bound = 0  # the batch is flushed when it holds this many: the deepest feed's depth
 
     def publish(self, msg: Any) -> None:
         """Deliver a snapshot of ``msg`` to every matched subscription.  Never blocks.
@@ -156,6 +181,18 @@ class Publisher:
         now: the publisher may change or reuse the object afterwards.  The
         subscribers of one publish share one snapshot.
         """
+        pending = self._pending
+        if pending is not None:
+            if pending:
+                if type(msg) is self.msg_type:
+                    # A batch is open (the hottest path of the runtime): one append, whatever
+                    # the number of subscribers.
+                    pending.append(self._snapshot(msg))
+                    if len(pending) >= self._bound:
+                        self._flush()
+                    return
+            elif self._batched(msg, pending):
+                return
         if type(msg) is not self.msg_type:
             raise TypeError(
                 f"publisher on {self.topic_name} takes {type_name(self.msg_type)}, "
@@ -163,7 +200,8 @@ class Publisher:
             )
         feeds = self._feeds
         if feeds is None:
-            feeds = self._feeds = tuple(self._subs)
+            self._refeed()
+            return Publisher.publish(self, msg)  # once more: the path it takes may have changed
         if not feeds and self._history is None:
             self._check(msg)  # nobody receives it: checked as rclpy's serialisation checks it, not copied
             return
@@ -171,11 +209,10 @@ class Publisher:
         if self._history is not None:
             self._history.append(msg)
         for sub in feeds:
-            # Subscription._push, inlined: this loop is the hottest path of the runtime.
+            # Subscription._push, inlined: one publisher feeding one subscription is the common case.
             queue = sub._queue
             if len(queue) >= sub._limit:
-                queue.popleft()
-                sub.dropped += 1
+                sub._evict()
             queue.append(msg)
             if not sub._scheduled:
                 sub._scheduled = True
@@ -184,21 +221,110 @@ class Publisher:
             for sub in self._tracked:
                 sub._senders.append((msg, self))  # type: ignore[union-attr]
 
+    def _refeed(self) -> tuple[Subscription, ...]:
+        """The feeds, after a change: whether this publisher batches is settled here.
+
+        It batches when it feeds two or more ordinary subscriptions of its topic
+        (run by nodes' actors), keeps no history and tracks no senders.  Anything
+        else (a tap, a transport's outlet, an action client's feedback, a single
+        subscription) is fed directly, message by message, as before.
+        """
+        feeds = self._feeds = tuple(self._subs)
+        topic = self._topic
+        if topic is None:
+            self._pending = None
+        elif (
+            len(feeds) > 1
+            and self._history is None
+            and not self._tracked
+            and all(type(s) is Subscription and s._topic is topic and type(s._actor) is Actor for s in feeds)
+        ):
+            self._pending = []
+            self._bound = max(s._depth for s in feeds)
+        else:
+            # Fed directly; alone on its topic, nobody else can have a batch open (TopicTable
+            # .add_publisher settles this again when a second publisher comes).
+            self._pending = None if len(topic.publishers) == 1 else _SHARED
+        return feeds
+
+    def _batched(self, msg: Any, pending: list[Any]) -> bool:
+        """publish() with no batch open: whether ``msg`` opened one (else it is fed directly, as usual).
+
+        A publisher fed directly that shares its topic first flushes another's open batch.
+        """
+        if pending is _SHARED:
+            dirty = self._topic.dirty  # type: ignore[union-attr]
+            if dirty is not None:
+                dirty._flush()  # another publisher's batch comes first: it was published first
+            return False
+        if type(msg) is not self.msg_type:
+            return False  # the usual path raises the TypeError
+        self._open(self._snapshot(msg), self._feeds)  # type: ignore[arg-type]
+        return True
+
+    def _open(self, msg: Any, feeds: tuple[Subscription, ...]) -> None:
+        """Start a batch with ``msg`` and wake its subscriptions: once per batch, not per message.
+
+        Per topic at most one publisher has a batch open: another's is flushed
+        first, so every subscription sees the topic's messages in publish
+        order.  A subscription in the middle of its round takes each message
+        directly instead, as before: its round's rest counts against its depth.
+        """
+        topic = self._topic
+        assert topic is not None and self._pending is not None
+        if topic.dirty is not None:
+            topic.dirty._flush()
+        for sub in feeds:
+            if sub._round is not None:
+                for sub in feeds:
+                    sub._push(msg)
+                return
+        self._pending.append(msg)
+        topic.dirty = self
+        for sub in feeds:
+            if not sub._scheduled:
+                sub._scheduled = True
+                sub._actor.schedule(sub)
+
+    def _flush(self) -> None:
+        """Move the open batch into each subscription's queue, dropping (and counting) what KEEP_LAST drops."""
+        pending = self._pending
+        assert pending is not None and self._topic is not None and self._feeds is not None
+        self._topic.dirty = None
+        for sub in self._feeds:
+            queue = sub._queue
+            queue.extend(pending)
+            over = len(queue) - sub._limit  # no round runs (see _open): the limit is the depth
+            if over > 0:
+                sub._dropped += over  # as many as dropping one by one would have dropped
+                for _ in range(over):
+                    queue.popleft()
+        pending.clear()
+
+    def _settle(self) -> None:
+        """Flush the open batch, if any: the feeds are about to change."""
+        if self._pending:
+            self._flush()
+
     def _track(self, sub: Subscription) -> None:
         """Note ``sub``'s senders from the next publish on (see Subscription.track_senders)."""
+        self._settle()
         if self._tracked is None:
             self._tracked = {}  # made only then: hardly any publisher needs one
         self._tracked[sub] = None
+        self._feeds = self._pending = None  # a publisher that tracks senders does not batch
 
     def _connect(self, sub: Subscription) -> None:
         """Feed ``sub`` from the next publish on (the topic table's matching, a transport's outlet)."""
+        self._settle()
         self._subs[sub] = None
-        self._feeds = None
+        self._feeds = self._pending = None
 
     def _disconnect(self, sub: Subscription) -> bool:
-        """Stop feeding ``sub``; whether it was fed."""
+        """Stop feeding ``sub``; whether it was fed.  What was published before still reaches it."""
+        self._settle()
         if self._subs.pop(sub, False) is None:
-            self._feeds = None
+            self._feeds = self._pending = None
             return True
         return False
 
@@ -228,9 +354,11 @@ class Subscription(Mailbox):
         "callback",
         "qos",
         "node",
-        "dropped",
+        "_dropped",
         "refusals",
+        "_depth",
         "_limit",
+        "_round",
         "_topic",
         "_senders",
         "_events",
@@ -251,7 +379,7 @@ class Subscription(Mailbox):
         self.msg_type = msg_type
         self.callback = callback
         self.qos = qos = as_qos(qos)
-        self.dropped = 0
+        self._dropped = 0
         self.refusals: Refusals | None = None  # made at the first refusal
         self._events: Any = None  # an actors.qos_events.EndpointEvents, for endpoints with event callbacks
         self._expiring = False  # fed by a publisher with a lifespan: its queue may hold Expiring items
@@ -259,23 +387,71 @@ class Subscription(Mailbox):
         # The queue is made when a publisher first feeds it (TopicTable._match): an
         # unmatched subscription's empty deque would cost 760 bytes.
         self._queue: deque[Any] | None = None
-        self._limit = qos.depth if qos.history == HistoryPolicy.KEEP_LAST else sys.maxsize
+        self._depth = qos.depth if qos.history == HistoryPolicy.KEEP_LAST else sys.maxsize
+        # The length at which an arriving message must go through _evict: the depth, or 0
+        # while a round runs (the round's rest then counts against the depth too).
+        self._limit = self._depth
+        # While a round runs, the rest of its messages (taken out of _queue when it began).
+        self._round: Iterator[Any] | None = None
         self._topic: Topic | None = None  # set by the topic table
         self._senders: deque[tuple[Any, Publisher]] | None = None  # see track_senders
 
+    @property
+    def dropped(self) -> int:
+        """Messages dropped unread because the queue was full (KEEP_LAST), counted as they are published."""
+        waiting, batch = self._waiting()
+        return self._dropped + max(0, waiting + batch - self._depth)
+
+    @dropped.setter
+    def dropped(self, count: int) -> None:
+        self._dropped = count
+
+    @property
+    def queued(self) -> int:
+        """Messages waiting for the callback: queued, and in a publisher's open batch."""
+        waiting, batch = self._waiting()
+        return min(waiting + batch, self._depth) if batch else waiting
+
+    def _waiting(self) -> tuple[int, int]:
+        # What waits in the queue and the running round's rest, and what waits in an open batch.
+        waiting = len(self._queue) if self._queue is not None else 0
+        if self._round is not None:
+            waiting += length_hint(self._round)
+        dirty = self._topic.dirty if self._topic is not None else None
+        batch = len(dirty._pending) if dirty is not None and self in dirty._subs else 0  # type: ignore[arg-type]
+        return waiting, batch
+
     def _push(self, msg: Any) -> None:
+        topic = self._topic
+        if topic is not None and topic.dirty is not None:
+            topic.dirty._flush()  # what was published before comes first
         queue = self._queue
         if queue is None:
             queue = self._queue = deque()
         if len(queue) >= self._limit:
-            queue.popleft()
-            self.dropped += 1
+            self._evict()
         queue.append(msg)
         self._wake()
 
+    def _evict(self) -> None:
+        """Make room for one more message if KEEP_LAST needs it: drop the oldest unread one and count it.
+
+        While a round runs, the oldest unread message is the round's next one:
+        it is skipped, exactly as if it had waited in the queue.
+        """
+        rest = self._round
+        left = length_hint(rest) if rest is not None else 0
+        if left + len(self._queue) < self._depth:  # type: ignore[arg-type]
+            return
+        if left:
+            next(rest)  # type: ignore[arg-type]
+        else:
+            self._queue.popleft()  # type: ignore[union-attr]
+        self._dropped += 1
+
     def _adopt(self, old: Mailbox) -> None:
         assert isinstance(old, Subscription)
-        self.dropped = old.dropped
+        self._dropped = old._dropped
         self.refusals = old.refusals
         self._expiring = old._expiring
         super()._adopt(old)
@@ -292,7 +468,7 @@ class Subscription(Mailbox):
         """
         if self._senders is None:
             # Enough to find any message still queued, or being handled, among the latest.
-            self._senders = deque(maxlen=min(self._limit, 1000) + 1)
+            self._senders = deque(maxlen=min(self._depth, 1000) + 1)
         if self._topic is not None:
             for pub in self._topic.publishers:
                 if self in pub._subs:
@@ -336,39 +512,58 @@ class Subscription(Mailbox):
         return self.callback(item)
 
     def _run(self) -> Awaitable[None] | None:
-        queue = self._queue
+        topic = self._topic
+        if topic is not None and topic.dirty is not None:
+            topic.dirty._flush()  # an open batch may hold messages for this round
+        # Only what is queued now: messages published meanwhile wait for the next round.  The
+        # round iterates its messages (cheaper than popping each) and what arrives meanwhile
+        # queues behind them, with the round's rest counted against the depth (see _evict).
+        batch = self._queue
+        if len(batch) == 1:  # type: ignore[arg-type]
+            rest = iter((batch.popleft(),))  # type: ignore[union-attr]
+        else:
+            self._queue = deque()
+            rest = iter(batch)  # type: ignore[arg-type]
+            self._limit = 0
+        self._round = rest
         callback = self._call_unexpired if self._expiring else self.callback
-        # Only what is queued now: messages published meanwhile wait for the next round.
-        for left in range(len(queue) - 1, -1, -1):
-            msg = queue.popleft()
+        for msg in rest:
             try:
                 result = callback(msg)
             except MessageRefused as refusal:
                 self._refuse(msg, refusal)
                 continue
             except Exception as exc:
+                self._end_round()
                 self._round_done()
                 raise CallbackFailed(self, msg, exc) from exc
             if result is not None and isawaitable(result):
-                return self._run_async(result, msg, left)
+                return self._run_async(result, msg)
+        self._round = None
+        self._limit = self._depth
         # Mailbox._round_done, inlined: one call less per wake-up.
-        if queue:
+        if self._queue:
             self._actor.schedule(self)
         else:
             self._scheduled = False
         return None
 
-    async def _run_async(self, pending: Awaitable[Any], msg: Any, left: int) -> None:
-        # An async callback: await it, then the ``left`` messages still due this round.
+    def _end_round(self) -> None:
+        """End the round early (a crash, a cancellation): what it did not reach waits in the queue, first."""
+        rest, self._round = self._round, None
+        self._limit = self._depth
+        if rest is not None:
+            self._queue.extendleft(reversed(list(rest)))  # type: ignore[union-attr]
+
+    async def _run_async(self, pending: Awaitable[Any], msg: Any) -> None:
+        # An async callback: await it, then the rest of the round.
         try:
             try:
                 await pending
             except MessageRefused as refusal:
                 self._refuse(msg, refusal)
-            queue = self._queue
             callback = self._call_unexpired if self._expiring else self.callback
-            for _ in range(left):
-                msg = queue.popleft()
+            for msg in self._round:  # type: ignore[union-attr]
                 try:
                     result = callback(msg)
                     if result is not None and isawaitable(result):
@@ -376,8 +571,11 @@ class Subscription(Mailbox):
                 except MessageRefused as refusal:
                     self._refuse(msg, refusal)
         except Exception as exc:
+            self._end_round()
             self._round_done()
             raise CallbackFailed(self, msg, exc) from exc
+        finally:
+            self._end_round()  # cancelled: the rest stays queued, as it did before its round
         self._round_done()
 
     def destroy(self) -> None:
@@ -388,11 +586,12 @@ class Subscription(Mailbox):
 class Topic:
     """One topic: its type and its endpoints, in creation order."""
 
-    __slots__ = ("name", "msg_type", "publishers", "subscriptions")
+    __slots__ = ("name", "msg_type", "publishers", "subscriptions", "dirty")
 
     def __init__(self, name: str, msg_type: type) -> None:
         self.name = name
         self.msg_type = msg_type
+        self.dirty: Publisher | None = None  # the publisher with a batch open, if any (Publisher._open)
         self.publishers: dict[Publisher, None] = {}  # insertion-ordered sets: O(1) removal
         self.subscriptions: dict[Subscription, None] = {}
 
@@ -442,6 +641,11 @@ class TopicTable:
         """Register ``pub`` and connect it to every compatible subscription."""
         topic = self._topic_for(pub.topic_name, pub.msg_type, "a publisher", pub.node.fqn)
         topic.publishers[pub] = None
+        pub._topic = topic
+        if len(topic.publishers) == 2:
+            for other in topic.publishers:
+                if other._pending is None:  # it was alone: from now on it checks for another's batch
+                    other._feeds = None
         for sub in topic.subscriptions:
             self._match(pub, sub)
         for listener in self.listeners:
@@ -503,6 +707,7 @@ class TopicTable:
         """Forget ``pub``; drop the topic when it has no endpoint left.  O(1)."""
         topic = self.topics.get(pub.topic_name)
         if topic is not None and pub in topic.publishers:
+            pub._settle()  # what it published before reaches its subscriptions all the same
             del topic.publishers[pub]
             if pub._events is not None:
                 pub._events.stop()
@@ -510,6 +715,7 @@ class TopicTable:
                 _tell(pub, sub, -1, to_pub=False)  # the publisher itself is gone: only its subscriptions hear
             pub._subs = {}
             pub._feeds = ()
+            pub._pending = None
             pub._tracked = None
             for listener in self.listeners:
                 listener.endpoint_removed(topic, pub)
