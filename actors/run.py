@@ -119,9 +119,11 @@ async def run_graph(
         everything.append(ZenohTransport(graph.transport))
     async with Runtime(name=name, supervisor=policy, attach=everything) as rt:
         async with anyio.create_task_group() as tg:
-            await tg.start(spawn_graph, rt, graph, classes)
             if handle_signals:
-                tg.start_soon(_stop_on_signal, rt)
+                # Listening before the first node is made: a Ctrl-C that comes while the graph
+                # starts is a graceful stop too, not asyncio's KeyboardInterrupt.
+                await tg.start(_stop_on_signal, rt)
+            await tg.start(spawn_graph, rt, graph, classes)
             await rt.wait(duration or None)
             tg.cancel_scope.cancel()
 
@@ -186,8 +188,11 @@ async def _spawn_later(rt: Runtime, index: int, entry: NodeEntry, cls: type[Node
     _spawn(rt, index, entry, cls)
 
 
-async def _stop_on_signal(rt: Runtime) -> None:
+async def _stop_on_signal(
+    rt: Runtime, *, task_status: anyio.abc.TaskStatus[None] = anyio.TASK_STATUS_IGNORED
+) -> None:
     with anyio.open_signal_receiver(signal.SIGINT, signal.SIGTERM) as signals:
+        task_status.started()
         async for _ in signals:
             rt.shutdown()
             return

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import os
+import signal
+
 from actors import Node
 from interfaces.std_msgs.msg import Int64
 
@@ -74,3 +77,11 @@ class FailsOnRestart(Node):
 
     def tick(self) -> None:
         raise OSError("device unplugged")
+
+
+class InterruptedAtStart(Node):
+    """Sends its own process SIGINT while the graph is being spawned: Ctrl-C before the graph runs."""
+
+    def __init__(self) -> None:
+        super().__init__("interrupted_at_start")
+        os.kill(os.getpid(), signal.SIGINT)

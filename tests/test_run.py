@@ -209,6 +209,15 @@ def test_a_signal_on_the_wall_clock_stops_gracefully_without_traceback(signum):
     assert "Traceback" not in out + err
 
 
+def test_ctrl_c_while_the_graph_is_still_spawning_stops_it_gracefully(run_module, tmp_path):
+    # The signal receiver is in place before the first node is made: a Ctrl-C that comes as
+    # soon as a node exists (the README's test sends it once every node shows) is a graceful stop.
+    graph = tmp_path / "interrupted.toml"
+    graph.write_text('[runtime]\nduration = 60\n\n[[nodes]]\nuse = "graph_nodes:InterruptedAtStart"\n')
+    result = run_module("actors.run", str(graph), timeout=30)
+    assert (result.returncode, result.stderr) == (0, "")
+
+
 @pytest.mark.parametrize("loop", ["uvloop", "asyncio"])
 def test_the_demo_runs_on_the_loop_asked_for_and_stops_gracefully(loop):
     pytest.importorskip(loop)
