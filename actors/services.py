@@ -271,14 +271,7 @@ class Client:
         if server is not None and server.node is self.node:
             self._refuse_own(server)
         future = self._new_future()
-        if type(server) is Service and server._queue is not None:
-            # Service._push inlined for a local server that was called before (a subclass,
-            # e.g. a transport's stand-in, keeps its own): 1.4 % of a call's instructions.
-            server._queue.append((request, future))
-            if not server._scheduled:
-                server._scheduled = True
-                server._actor.schedule(server)
-        elif server is not None:
+        if server is not None:
             server._push((request, future))
         else:
             self._table.park(self.service_name, (request, future))

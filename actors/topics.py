@@ -221,7 +221,7 @@ class Publisher:
             for sub in self._tracked:
                 sub._senders.append((msg, self))  # type: ignore[union-attr]
 
-    def _refeed(self) -> tuple[Subscription, ...]:
+    def _refeed(self) -> None:
         """The feeds, after a change: whether this publisher batches is settled here.
 
         It batches when it feeds two or more ordinary subscriptions of its topic
@@ -245,7 +245,6 @@ class Publisher:
             # Fed directly; alone on its topic, nobody else can have a batch open (TopicTable
             # .add_publisher settles this again when a second publisher comes).
             self._pending = None if len(topic.publishers) == 1 else _SHARED
-        return feeds
 
     def _batched(self, msg: Any, pending: list[Any]) -> bool:
         """publish() with no batch open: whether ``msg`` opened one (else it is fed directly, as usual).
