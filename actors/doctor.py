@@ -35,6 +35,7 @@ own, the runtime's) are left out of the topic checks.
 from __future__ import annotations
 
 import functools
+import os
 import sys
 import threading
 from collections import deque
@@ -325,6 +326,27 @@ def _versions() -> dict[str, str]:
 # --------------------------------------------------------------------------- the loop-lag monitor
 
 
+class _CpuWait:
+    """Seconds the thread that made it has spent runnable but waiting for a CPU (0.0 where untold)."""
+
+    def __init__(self) -> None:
+        try:
+            # Opened by the thread it describes: /proc/thread-self resolves to that thread for good.
+            self._fd: int | None = os.open("/proc/thread-self/schedstat", os.O_RDONLY)
+        except OSError:  # not Linux, or a kernel without scheduler statistics
+            self._fd = None
+
+    def __call__(self) -> float:
+        if self._fd is None:
+            return 0.0
+        # "<ns on a CPU> <ns waiting on a run queue> <time slices>", read afresh at each pread.
+        return int(os.pread(self._fd, 64, 0).split()[1]) / 1e9
+
+    def close(self) -> None:
+        if self._fd is not None:
+            os.close(self._fd)
+
+
 class LagMonitor:
     """Notices callbacks that block the loop of a wall-clock runtime.
 
@@ -338,9 +360,12 @@ class LagMonitor:
     that node and callback, provided the callback's code is on the loop
     thread's stack at that moment: an ``async`` callback that is only awaiting
     does not hold the loop, whatever else stalls it meanwhile (a constructor,
-    an import).  When the watchdog itself wakes late, the whole process was
-    starved (a busy machine) and nobody is blamed.  The thread only reads; it
-    stops with the task.
+    an import).  Nobody is blamed either when the machine, not a callback,
+    held the loop: when the watchdog itself wakes late (the whole process was
+    starved), or when the loop thread spent enough of the stall waiting for a
+    CPU that, without that wait, it would not have lagged (Linux counts that
+    wait per thread, in ``/proc/thread-self/schedstat``).  The thread only
+    reads; it stops with the task.
     """
 
     def __init__(
@@ -363,22 +388,29 @@ class LagMonitor:
         thread = threading.Thread(
             target=self._watch, name=f"actors lag monitor ({self._runtime.name})", daemon=True
         )
+        waited = _CpuWait()
         thread.start()
         try:
+            mark = waited()
             while True:
                 await anyio.sleep(self.period)
                 now = clock.monotonic()
                 lag = now - self._tick - self.period
                 if lag > self.threshold:
                     node, callback = self._suspect or ("", "")
+                    if lag - (waited() - mark) <= self.threshold:
+                        # Preempted: the callback would have finished in time on a free CPU.
+                        node, callback = "", ""
                     self.events.append(
                         LagEvent(stamp=clock.now_ns() / 1e9, lag=lag, node=node, callback=callback)
                     )
                 # Tick first: the watchdog must not pin the next stall on this one's suspect.
                 self._tick = now
                 self._suspect = None
+                mark = waited()
         finally:
             self._stop.set()
+            waited.close()
 
     def _watch(self) -> None:
         # The loop's time() is time.monotonic() on a wall-clock loop: safe to read from here.

@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import os
 import re
+import subprocess
+import sys
+import threading
 import time
 
 import anyio
@@ -334,3 +338,91 @@ def run_watchdog(frozen: float) -> tuple[str, str] | None:
     now[0] = 1.0  # the loop's last tick was a second ago
     callback()
     return monitor._suspect
+
+
+@pytest.mark.parametrize(
+    ("waited", "blamed"),
+    [
+        (0.0, "/n"),  # the callback held the loop all along
+        (0.1, "/n"),  # preempted for part of it, still 0.1 s over the threshold on its own
+        (0.19, ""),  # preempted for nearly all of it: the machine was busy, not the callback
+    ],
+)
+def test_a_stall_spent_waiting_for_a_cpu_is_not_blamed_on_the_callback(monkeypatch, waited, blamed):
+    # LagMonitor.run driven by hand: a fake clock, a fake sleep that stalls 0.2 s
+    # while the watchdog has named a suspect, and a fake run-queue counter.
+    import asyncio
+    from types import SimpleNamespace
+
+    from actors import doctor
+
+    now = [0.0]
+    queued = [0.0]
+    clock = SimpleNamespace(monotonic=lambda: now[0], now_ns=lambda: int(now[0] * 1e9))
+    monitor = doctor.LagMonitor(SimpleNamespace(name="fake", nodes={}, clock=clock))  # type: ignore[arg-type]
+    monitor._watch = lambda: None  # type: ignore[method-assign]  # the suspect is set by hand below
+    sleeps = iter([0.0, 0.2])
+
+    class Done(Exception):
+        pass
+
+    async def sleep(period: float) -> None:
+        stall = next(sleeps, None)
+        if stall is None:
+            raise Done
+        now[0] += period + stall
+        if stall:
+            queued[0] += waited
+            monitor._suspect = ("/n", "cb")
+
+    class FakeWait:
+        def __call__(self) -> float:
+            return queued[0]
+
+        def close(self) -> None:
+            pass
+
+    monkeypatch.setattr(doctor.anyio, "sleep", sleep)
+    monkeypatch.setattr(doctor, "_CpuWait", FakeWait)
+    with pytest.raises(Done):
+        asyncio.run(monitor.run())
+    (event,) = monitor.events
+    assert event.lag == pytest.approx(0.2) and event.node == blamed
+
+
+@pytest.mark.skipif(not os.path.exists("/proc/thread-self/schedstat"), reason="Linux scheduler statistics")
+def test_the_run_queue_counter_counts_a_threads_wait_for_a_cpu_not_its_time_on_one():
+    # One CPU shared with two busy processes: a thread gets about a third of it,
+    # so it waits about twice as long as it runs.  (Counting its time on the CPU
+    # instead would give a ratio of 1.)
+    from actors.doctor import _CpuWait
+
+    cpu = min(os.sched_getaffinity(0))
+    hogs = [
+        subprocess.Popen([sys.executable, "-c", "print(flush=True)\nwhile True: pass"], stdout=subprocess.PIPE)
+        for _ in range(2)
+    ]
+    measured: list[float] = []
+
+    def busy() -> None:
+        waited = _CpuWait()
+        os.sched_setaffinity(0, {cpu})  # this thread only
+        before, ran = waited(), time.thread_time()
+        while time.thread_time() - ran < 0.1:
+            pass
+        measured.append((waited() - before) / (time.thread_time() - ran))
+        waited.close()
+
+    try:
+        for hog in hogs:
+            assert hog.stdout is not None and hog.stdout.readline() == b"\n"  # it is running
+            os.sched_setaffinity(hog.pid, {cpu})
+        thread = threading.Thread(target=busy)
+        thread.start()
+        thread.join()
+    finally:
+        for hog in hogs:
+            hog.kill()
+            hog.wait()
+    (ratio,) = measured
+    assert ratio > 1.4, ratio
