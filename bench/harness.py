@@ -21,6 +21,7 @@ __all__ = [
     "ROOT",
     "Result",
     "repeat",
+    "side_by_side",
     "fmt",
     "table",
     "standalone",
@@ -92,6 +93,24 @@ def repeat(fn: Callable[[], T], times: int, *, warmup: bool = True) -> list[T]:
     if warmup:
         fn()
     return [fn() for _ in range(times)]
+
+
+def side_by_side(fns: Mapping[str, Callable[[], T]], times: int, *, warmup: bool = True) -> dict[str, list[T]]:
+    """Call each of ``fns`` ``times`` times, taking turns, and return each one's results by name.
+
+    A case and its baselines measured in turn see the same moments of a shared
+    machine: a slow minute costs each of them a sample, where measuring one
+    case's samples and then the next's would charge it to one side and bend
+    the ratio between them.  ``warmup`` as in :func:`repeat`, one call each.
+    """
+    if warmup:
+        for fn in fns.values():
+            fn()
+    samples: dict[str, list[T]] = {name: [] for name in fns}
+    for _ in range(times):
+        for name, fn in fns.items():
+            samples[name].append(fn())
+    return samples
 
 
 def fmt(value: float) -> str:

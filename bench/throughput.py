@@ -16,7 +16,7 @@ from typing import Any
 
 from actors import Node, QoSProfile, Runtime
 from bench import ros
-from bench.harness import UVLOOP_HINT, Loop, Result, repeat, run_on, standalone, uvloop_factory
+from bench.harness import UVLOOP_HINT, Loop, Result, run_on, side_by_side, standalone, uvloop_factory
 from interfaces.std_msgs.msg import String
 
 BATCH = 100  # messages published between yields to the loop
@@ -145,13 +145,18 @@ def run(quick: bool = False, *, fan_out: tuple[int, ...] = (1, 10)) -> list[Resu
         scenario = "a. one-way" if subs == 1 else f"b. fan-out 1→{subs}"
         count = n // subs
         bases = {"queue": "asyncio.Queue", "floor": "direct call (floor)", **ros.baselines()}
-        results.append(
-            Result(scenario, "actors", "deliveries/s", repeat(lambda: actors_rate(count, subs), reps), baselines=bases)
+        samples = side_by_side(
+            {
+                "actors": lambda: actors_rate(count, subs),
+                "asyncio.Queue": lambda: queue_rate(count, subs),
+                "direct call (floor)": lambda: floor_rate(count, subs),
+            },
+            reps,
         )
-        results.append(Result(scenario, "asyncio.Queue", "deliveries/s", repeat(lambda: queue_rate(count, subs), reps)))
-        results.append(
-            Result(scenario, "direct call (floor)", "deliveries/s", repeat(lambda: floor_rate(count, subs), reps))
-        )
+        results += [
+            Result(scenario, case, "deliveries/s", values, baselines=bases if case == "actors" else {})
+            for case, values in samples.items()
+        ]
         results += ros.measured(scenario, "one_way", "deliveries/s", reps, n=count, subscribers=subs)
         if subs == 1:
             results += on_uvloop(scenario, count, reps)
@@ -163,10 +168,13 @@ def on_uvloop(scenario: str, count: int, reps: int) -> list[Result]:
     loop = uvloop_factory()
     if loop is None:
         return [Result(scenario, "actors, uvloop", "deliveries/s", [], note=UVLOOP_HINT)]
+    samples = side_by_side(
+        {"actors": lambda: actors_rate(count, 1, loop=loop), "queue": lambda: queue_rate(count, 1, loop=loop)}, reps
+    )
     return [
-        Result(scenario, "actors, uvloop", "deliveries/s", repeat(lambda: actors_rate(count, 1, loop=loop), reps),
+        Result(scenario, "actors, uvloop", "deliveries/s", samples["actors"],
                baselines={"asyncio's loop": "actors", "queue": "asyncio.Queue, uvloop"}),
-        Result(scenario, "asyncio.Queue, uvloop", "deliveries/s", repeat(lambda: queue_rate(count, 1, loop=loop), reps)),
+        Result(scenario, "asyncio.Queue, uvloop", "deliveries/s", samples["queue"]),
     ]
 
 

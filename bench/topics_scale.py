@@ -11,8 +11,7 @@ the same way.
 
 from __future__ import annotations
 
-
-from bench.harness import Result, repeat, standalone
+from bench.harness import Result, side_by_side, standalone
 from bench.throughput import actors_rate, queue_rate
 
 __all__ = ["run"]
@@ -21,16 +20,16 @@ TOPICS = (1, 10, 100, 1_000)
 
 
 def run(quick: bool = False) -> list[Result]:
-    """Total deliveries/s at each topic count, actors beside the queues, 5 runs each."""
+    """Total deliveries/s at each topic count, actors beside the queues, 5 runs each, taking turns."""
     n = 20_000 if quick else 200_000
     results = []
     for topics in TOPICS:
         scenario = f"h. {topics:,} topic{'s' if topics > 1 else ''} at once"
+        samples = side_by_side({"actors": lambda: actors_rate(n, 1, topics), "queue": lambda: queue_rate(n, 1, topics)}, 5)
         results.append(
-            Result(scenario, "actors", "deliveries/s", repeat(lambda: actors_rate(n, 1, topics), 5),
-                   baselines={"queue": "asyncio.Queue"})
+            Result(scenario, "actors", "deliveries/s", samples["actors"], baselines={"queue": "asyncio.Queue"})
         )
-        results.append(Result(scenario, "asyncio.Queue", "deliveries/s", repeat(lambda: queue_rate(n, 1, topics), 5)))
+        results.append(Result(scenario, "asyncio.Queue", "deliveries/s", samples["queue"]))
     return results
 
 
