@@ -16,7 +16,7 @@ from collections.abc import Callable
 
 from actors import Node, Runtime
 from bench import ros
-from bench.harness import UVLOOP_HINT, Loop, Result, repeat, run_on, standalone, uvloop_factory
+from bench.harness import UVLOOP_HINT, Loop, Result, run_on, side_by_side, standalone, uvloop_factory
 from interfaces.std_srvs.srv import SetBool
 
 CONCURRENT = 100
@@ -119,12 +119,16 @@ def run(quick: bool = False) -> list[Result]:
              {"asyncio's loop": "actors", "future": "future+Queue, uvloop"}),
             ("future+Queue, uvloop", uvloop and functools.partial(future_call_time, loop=uvloop), {}),
         ]
+        measured = side_by_side(
+            {case: functools.partial(fn, n, callers) for case, fn, _ in cases if fn is not None}, reps
+        )
         for case, fn, baselines in cases:
             if fn is None:
                 results.append(Result(scenario, case, "µs/call", [], higher_better=False, note=UVLOOP_HINT))
                 continue
-            samples = repeat(lambda: fn(n, callers), reps)
-            results.append(Result(scenario, case, "µs/call", samples, higher_better=False, baselines=baselines))
+            results.append(
+                Result(scenario, case, "µs/call", measured[case], higher_better=False, baselines=baselines)
+            )
         results += ros.measured(scenario, "service", "µs/call", reps, higher_better=False, n=n, callers=callers)
     return results
 

@@ -16,7 +16,7 @@ import time
 import anyio
 
 from actors import Runtime, VirtualTimeLoop
-from bench.harness import Result, repeat, standalone
+from bench.harness import Result, side_by_side, standalone
 from nodes.constant_control import ConstantControl
 from world.robot import TurtleBot
 from world.sim import World
@@ -79,11 +79,13 @@ def run(quick: bool = False) -> list[Result]:
     results = []
     for robots in ROBOTS:
         scenario = f"g. sim RTF, {robots} robot{'s' if robots > 1 else ''}"
-        results.append(
-            Result(scenario, "nodes", "× real time", repeat(lambda: nodes_factor(robots, seconds), 5),
-                   baselines={"core": "core (floor)"})
+        samples = side_by_side(
+            {"nodes": lambda: nodes_factor(robots, seconds), "core": lambda: core_factor(robots, seconds)}, 5
         )
-        results.append(Result(scenario, "core (floor)", "× real time", repeat(lambda: core_factor(robots, seconds), 5)))
+        results.append(
+            Result(scenario, "nodes", "× real time", samples["nodes"], baselines={"core": "core (floor)"})
+        )
+        results.append(Result(scenario, "core (floor)", "× real time", samples["core"]))
     return results
 
 
