@@ -389,8 +389,8 @@ class LagMonitor:
             target=self._watch, name=f"actors lag monitor ({self._runtime.name})", daemon=True
         )
         waited = _CpuWait()
-        thread.start()
         try:
+            thread.start()
             mark = waited()
             while True:
                 await anyio.sleep(self.period)
