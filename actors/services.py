@@ -271,10 +271,14 @@ class Client:
         if server is not None and server.node is self.node:
             self._refuse_own(server)
         future = self._new_future()
-        if server is not None:
-            server._push((request, future))
-        else:
+        if server is None:
             self._table.park(self.service_name, (request, future))
+        elif server._scheduled:
+            # _push's common case with many callers: the server is already due to run, so its
+            # queue exists (a remote stand-in forwards in its own _push and is never scheduled).
+            server._queue.append((request, future))
+        else:
+            server._push((request, future))
         if timeout is not None:
             (self._table._timeouts or self._table.timeouts(self._loop)).add(future, self, timeout)
         return await future
