@@ -23,7 +23,7 @@ from typing import Any
 from actors import Node, QoSProfile, Runtime
 from actors.snapshot import snapshotter
 from bench.services import handle
-from bench.throughput import Listener, Talker, floor_rate
+from bench.throughput import Listener, Talker, call_rate
 from interfaces.std_msgs.msg import String
 from interfaces.std_srvs.srv import SetBool
 
@@ -78,8 +78,9 @@ async def _path(rt: Runtime, subscribers: int, repeats: int) -> dict[str, float]
         flush()
 
     on_msg = listeners[0].on_msg
+    callbacks = [node.on_msg for node in listeners]
     return {
-        "floor": min(1e9 / floor_rate(BATCH * 100, subscribers, time.process_time) for _ in range(repeats)),
+        "floor": min(1e9 / call_rate(callbacks, BATCH * 100, time.process_time) for _ in range(repeats)),
         "callback": _ns(lambda: [on_msg(msg) for _ in range(BATCH)], BATCH, repeats),
         "pushed": _ns(pushed, BATCH, repeats),
         "delivered": _ns(delivered, BATCH, repeats),
@@ -99,7 +100,7 @@ async def _topics(rt: Runtime, repeats: int) -> dict[str, dict[str, float]]:
     ):
         total = path["delivered"] / n
         sections[name] = {
-            "the direct-call floor (bench.throughput.floor_rate, the target's)": path["floor"],
+            "the direct-call floor (bench.throughput.call_rate, the target's)": path["floor"],
             "a callback alone (a node's bound method)": path["callback"],
             f"publish() (share): call, type check, snapshot, {into}": path["pushed"] / n,
             "  of which the snapshot (share)": snap / n,
