@@ -654,7 +654,7 @@ class TopicTable:
         if len(topic.publishers) == 2:
             for other in topic.publishers:
                 if other._pending is None:  # it was alone: from now on it checks for another's batch
-                    other._feeds = None
+                    other._feeds = other._only = None
         for sub in topic.subscriptions:
             self._match(pub, sub)
         for listener in self.listeners:
@@ -724,7 +724,7 @@ class TopicTable:
                 _tell(pub, sub, -1, to_pub=False)  # the publisher itself is gone: only its subscriptions hear
             pub._subs = {}
             pub._feeds = ()
-            pub._pending = None
+            pub._pending = pub._only = None
             pub._tracked = None
             for listener in self.listeners:
                 listener.endpoint_removed(topic, pub)

@@ -10,7 +10,16 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from actors import DurabilityPolicy, Duration, HistoryPolicy, Node, QoSProfile, Runtime, SupervisorPolicy
+from actors import (
+    DurabilityPolicy,
+    Duration,
+    HistoryPolicy,
+    Node,
+    QoSProfile,
+    ReliabilityPolicy,
+    Runtime,
+    SupervisorPolicy,
+)
 from actors.errors import MessageRefused
 from actors.recording.tap import TapSet
 from interfaces.std_msgs.msg import Int64
@@ -99,6 +108,50 @@ async def test_messages_published_before_a_publisher_is_destroyed_are_still_deli
         other.send(3)
         await settle()
         assert [s.heard for s in sinks] == [[0, 1, 2, 3]] * 2
+
+
+@pytest.mark.virtual_time
+async def test_a_destroyed_publisher_of_a_single_subscription_delivers_nothing_more():
+    async with Runtime() as rt:
+        sink, source = rt.spawn(Sink), rt.spawn(Source)
+        source.send(0)  # fed directly: the publisher's one subscription
+        source.pub.destroy()
+        source.send(1)
+        await settle()
+        assert sink.heard == [0]
+
+
+@pytest.mark.virtual_time
+async def test_a_publisher_feeding_one_subscription_keeps_publish_order_with_a_second_publishers_batch():
+    # The first publisher feeds only the best-effort sink; the second, added later, also feeds a
+    # reliable sink that the first cannot (its QoS does not match), so the second batches.
+    class Picky(Sink):
+        def __init__(self, reliable: bool) -> None:
+            Node.__init__(self, "picky")
+            self.heard = []
+            reliability = ReliabilityPolicy.RELIABLE if reliable else ReliabilityPolicy.BEST_EFFORT
+            qos = QoSProfile(depth=10, reliability=reliability)
+            self.sub = self.create_subscription(Int64, TOPIC, self.on_number, qos)
+
+    class Sender(Source):
+        def __init__(self, reliable: bool) -> None:
+            Node.__init__(self, "sender")
+            reliability = ReliabilityPolicy.RELIABLE if reliable else ReliabilityPolicy.BEST_EFFORT
+            self.pub = self.create_publisher(Int64, TOPIC, QoSProfile(depth=10, reliability=reliability))
+
+    async with Runtime() as rt:
+        either = rt.spawn(Picky, False, name="either")
+        first = rt.spawn(Sender, False, name="first")
+        first.send(0)
+        await settle()
+        strict = rt.spawn(Picky, True, name="strict")
+        second = rt.spawn(Sender, True, name="second")
+        second.send(1)
+        first.send(2)
+        second.send(3)
+        await settle()
+        assert either.heard == [0, 1, 2, 3]
+        assert strict.heard == [1, 3]
 
 
 @pytest.mark.virtual_time
