@@ -9,6 +9,7 @@ import pymunk
 import pytest
 
 from world.arena import load_world, posts, solids
+from world.drive import RobotModel
 from world.lidar import Lidar, LidarSpec, finish_ranges
 from world.simulation import Simulation
 
@@ -126,6 +127,21 @@ def test_scan_all_gives_each_robots_scan() -> None:
     assert list(everything) == list(sim.robots)
     for name, ranges in everything.items():
         np.testing.assert_array_equal(ranges, sim.scan(name))
+
+
+def test_scans_keep_the_poses_they_were_taken_from() -> None:
+    sim = Simulation.from_file("signs")
+    sim.add_robot("a", x=-2.0, theta=3.0)
+    sim.add_robot("b", RobotModel(name="wide", max_linear=1.0, max_angular=1.0, lidar=LidarSpec(beams=90)), x=1.0)
+    for robot in sim.robots.values():
+        robot.command(0.2, 1.0)
+    for _ in range(200):  # past pi: a heading the pose wraps into [-pi, pi]
+        sim.step()
+    then = {name: robot.pose for name, robot in sim.robots.items()}
+    scans = sim.scan_all()
+    sim.step()
+    assert scans.poses() == then and then["a"] != sim.robots["a"].pose
+    assert all(type(value) is float for pose in scans.poses().values() for value in pose)
 
 
 def test_other_beam_counts_and_ranges() -> None:

@@ -29,7 +29,7 @@ from interfaces.rcl_interfaces.msg import FloatingPointRange, ParameterDescripto
 from .drive import Contact, Pose
 from .record import Recorder
 from .scene import SCENE_TOPIC, scene_update
-from .simulation import Simulation
+from .simulation import Scans, Simulation
 
 if TYPE_CHECKING:
     from actors.recording.live import SceneHost
@@ -82,8 +82,7 @@ class World(Node):
             except ImportError as exc:
                 raise WorldError(f"{self.get_fully_qualified_name()}: image/gif: {exc}") from None
             self.recorder = Recorder(self.sim, every=10, frame_every=10 if self._gif else None)
-        self._scans: dict[str, np.ndarray] = {}
-        self._scanned_from: dict[str, Pose] = {}
+        self._scans = Scans()
         self._scanned_at = -1
         _WORLDS[runtime] = self
         self._scene_hosts = _scene_hosts(runtime)
@@ -118,13 +117,13 @@ class World(Node):
         """``robot``'s 360 ranges now; all robots are scanned in one batch per physics step."""
         if self._scanned_at != self.sim.steps:
             self._scans = self.sim.scan_all()
-            self._scanned_from = {name: r.pose for name, r in self.sim.robots.items()}
             self._scanned_at = self.sim.steps
         return self._scans[robot]
 
     def latest_scans(self) -> dict[str, tuple[Pose, np.ndarray]]:
         """The last batch of scans by robot, each with the pose it was taken from (empty before the first)."""
-        return {name: (self._scanned_from[name], ranges) for name, ranges in self._scans.items()}
+        poses = self._scans.poses()
+        return {name: (poses[name], ranges) for name, ranges in self._scans.items()}
 
     def on_shutdown(self) -> None:
         """Draw the run into the files named by ``image`` and ``gif``."""

@@ -23,7 +23,7 @@ from .drive import MODELS, Contact, Pose, Robot, RobotModel
 from .lidar import Lidar, LidarSpec, finish_ranges
 from .noise import Noise
 
-__all__ = ["Simulation"]
+__all__ = ["Scans", "Simulation"]
 
 # Robots' sensor circles touch solid shapes only, never each other.
 _SOLID = 0b01
@@ -152,17 +152,18 @@ class Simulation:
         """
         return self._scan([self._robots[name]])[name]
 
-    def scan_all(self) -> dict[str, np.ndarray]:
+    def scan_all(self) -> Scans:
         """A sweep of every robot by name, as ``scan`` gives it; cheaper than ``scan`` each."""
         return self._scan(list(self._robots.values()))
 
-    def _scan(self, robots: list[Robot]) -> dict[str, np.ndarray]:
+    def _scan(self, robots: list[Robot]) -> Scans:
         by_spec: dict[LidarSpec, list[Robot]] = {}
         for robot in robots:
             by_spec.setdefault(robot.model.lidar, []).append(robot)
-        scans = {}
+        scans = Scans()
         for spec, group in by_spec.items():
             poses = np.array([(*robot.body.position, robot.body.angle) for robot in group])
+            scans._origins.append((group, poses))
             rows = self.lidar.distances(poses, spec.beams, spec.range_max, self._robot_circles())
             for robot, row in zip(group, rows):
                 scans[robot.name] = finish_ranges(robot.noise_source.ranges(row), spec)
@@ -204,6 +205,26 @@ class Simulation:
     def _describe(self, shape: pymunk.Shape) -> str:
         label = self._labels[shape]
         return f"{label.kind} {label.name!r}" if label.name else f"a {label.kind}"
+
+
+class Scans(dict[str, np.ndarray]):
+    """Ranges (m) by robot name, as ``Simulation.scan_all`` gives them, and the poses they were taken from."""
+
+    __slots__ = ("_origins",)
+
+    def __init__(self) -> None:
+        super().__init__()
+        # The robots of each lidar model and the lidar's (R, 3) array of their poses: the
+        # Poses are made only when asked for (by a live view), not with every scan.
+        self._origins: list[tuple[list[Robot], np.ndarray]] = []
+
+    def poses(self) -> dict[str, Pose]:
+        """The pose each robot was scanned from, as ``Robot.pose`` gave it then."""
+        return {
+            robot.name: Pose(x, y, math.remainder(theta, math.tau))
+            for group, poses in self._origins
+            for robot, (x, y, theta) in zip(group, poses.tolist())
+        }
 
 
 def _convex(vertices: tuple[tuple[float, float], ...]) -> bool:
