@@ -197,7 +197,10 @@ class Robot:
     @property
     def in_contact(self) -> bool:
         """Whether the robot touches anything now."""
-        return any(near.gap <= TOUCHING for near in self._near)
+        for near in self._near:  # a loop, not any(): no generator to make on every odometry tick
+            if near.gap <= TOUCHING:
+                return True
+        return False
 
     def odometry(self) -> Odometry:
         """The pose and twist as odometry reports them: the truth plus the robot's noise."""

@@ -37,6 +37,7 @@ import math
 
 from actors import DurabilityPolicy, Node, QoSProfile
 from actors.errors import MessageRefused, WorldError
+from interfaces.builtin_interfaces.msg import Time as TimeMsg
 from interfaces.geometry_msgs.msg import PoseStamped, Quaternion, Transform, TransformStamped, Twist, Vector3
 from interfaces.nav_msgs.msg import Odometry
 from interfaces.rcl_interfaces.msg import ParameterDescriptor
@@ -136,11 +137,12 @@ class TurtleBot(Node):
         self.create_timer(ODOM_PERIOD, self.tick)
 
     def tick(self) -> None:
-        """Publish odometry (20 Hz) and, on every other tick, the scan (10 Hz)."""
-        self.publish_odometry()
+        """Publish odometry (20 Hz) and, on every other tick, the scan (10 Hz), with one stamp."""
+        stamp = self.get_clock().now().to_msg()
+        self.publish_odometry(stamp)
         self._ticks += 1
         if self._ticks % SCAN_EVERY == 0:
-            self.publish_scan()
+            self.publish_scan(stamp)
 
     def on_cmd_vel(self, msg: Twist) -> None:
         """Command the robot: linear.x (m/s) and angular.z (rad/s); MessageRefused if they are not finite.
@@ -153,9 +155,8 @@ class TurtleBot(Node):
             raise MessageRefused("linear.x and angular.z must be finite")
         self.robot.command(v, w)
 
-    def publish_odometry(self) -> None:
-        """Publish odom, the ground-truth pose, and the contact state if it changed."""
-        stamp = self.get_clock().now().to_msg()
+    def publish_odometry(self, stamp: TimeMsg) -> None:
+        """Publish odom, the ground-truth pose, and the contact state if it changed, stamped ``stamp``."""
         odometry = self.robot.odometry()
         x, y, theta, v, w = odometry
         x0, y0, theta0 = self._start
@@ -210,10 +211,10 @@ class TurtleBot(Node):
             ]
         )
 
-    def publish_scan(self) -> None:
-        """Publish the lidar scan."""
+    def publish_scan(self, stamp: TimeMsg) -> None:
+        """Publish the lidar scan, stamped ``stamp``."""
         scan = self._scan
-        scan.header.stamp = self.get_clock().now().to_msg()
+        scan.header.stamp = stamp
         # The World's array as it is: publish() lists a float array's values in one C call.
         scan.ranges = self.world.scan(self.name)
         self.scan_pub.publish(scan)
