@@ -21,6 +21,10 @@ function for its type, which
   bytearray ``bytes``.
 
 A message without fields is its own snapshot: nothing in it can change.
+A publisher may name float array fields that its own code fills with floats
+that fit (a simulated scan, a covariance it never changes): the function made
+for those *trusted* fields reads no item of them, and the snapshot copies them
+all the same (a list's copy, a numpy array's ``tolist()``).
 :func:`adopter` gives the variant for a message nobody else holds (a service
 response the handler did not keep): the same checks and canonical values,
 written into the message itself, with only its mutable parts copied.
@@ -54,9 +58,10 @@ __all__ = ["snapshotter", "checker", "adopter", "snapshot", "FLOAT32_MAX", "ALON
 FLOAT32_MAX: float = struct.unpack("<f", b"\xff\xff\x7f\x7f")[0]
 
 Snapshot = Callable[[Any], Any]
-_cache: dict[type, Snapshot] = {}  # entry points, by class
+Trusted = frozenset[str]  # dotted paths of float array fields a publisher's own code fills validly
+_cache: dict[type | tuple[type, Trusted], Snapshot] = {}  # entry points, by class (and trusted fields)
 _bodies: dict[type, Snapshot] = {}  # bodies for array elements (they raise _Invalid), by class
-_checks: dict[type, Callable[[Any], None]] = {}  # the checks without the copy, by class
+_checks: dict[type | tuple[type, Trusted], Callable[[Any], None]] = {}  # the checks without the copy, likewise
 _adopters: dict[type, Snapshot] = {}  # the snapshots in place, by class
 
 
@@ -71,25 +76,30 @@ def _held_by_one_local() -> int:
 ALONE: int = _held_by_one_local()
 
 
-def snapshotter(cls: type) -> Snapshot:
+def snapshotter(cls: type, trusted: Trusted = frozenset()) -> Snapshot:
     """The snapshot function of message class ``cls``, generated at its first use and cached.
 
     The function takes a message of exactly ``cls`` and returns its checked
     copy; it raises MessageValidationError for a field that does not fit.  A
     class that is not a generated interface type (no ``__ros_definition__``)
-    gets the identity: actors cannot know its fields.
+    gets the identity: actors cannot know its fields.  ``trusted``: dotted
+    paths of float array fields (``"pose.covariance"``) copied without a look
+    at their items, for a caller whose own code puts only a list of floats or
+    a 1-D float numpy array there, every value fitting the field; ValueError
+    for a path that names no float array field outside arrays of messages.
     """
-    return _made(_cache, cls, "copy", _identity)
+    return _made(_cache, cls, "copy", _identity, trusted)
 
 
-def checker(cls: type) -> Callable[[Any], None]:
+def checker(cls: type, trusted: Trusted = frozenset()) -> Callable[[Any], None]:
     """The check of message class ``cls``: :func:`snapshotter`'s function without the copy.
 
     It raises MessageValidationError for exactly the messages the snapshot
     refuses, and returns None: for a message nobody will receive, checked as
-    rclpy's serialisation would check it, with nothing copied.
+    rclpy's serialisation would check it, with nothing copied.  ``trusted``
+    fields, as for :func:`snapshotter`, are not looked at.
     """
-    return _made(_checks, cls, "check", _ignore)
+    return _made(_checks, cls, "check", _ignore, trusted)
 
 
 def adopter(cls: type) -> Snapshot:
@@ -104,18 +114,23 @@ def adopter(cls: type) -> Snapshot:
     return _made(_adopters, cls, "adopt", _identity)
 
 
-def _made(cache: dict[type, Any], cls: type, mode: str, otherwise: Callable[[Any], Any]) -> Any:
+def _made(cache: dict[Any, Any], cls: type, mode: str, otherwise: Callable[[Any], Any],
+          trusted: Trusted = frozenset()) -> Any:
     # The function of ``mode`` for ``cls`` from ``cache``, generated at its first use;
     # ``otherwise`` for a class that is not a generated interface type.
-    found = cache.get(cls)
+    key = (cls, trusted) if trusted else cls
+    found = cache.get(key)
     if found is None:
         try:
             top = layout(cls)
         except TypeError:
+            if trusted:
+                raise ValueError(f"trusted fields {sorted(trusted)}: {cls!r} has no fields actors knows") from None
             found = otherwise
         else:
-            found = _identity if top.placeholder and mode != "check" else _generate(top, entry=True, mode=mode)
-        cache[cls] = found
+            plain = top.placeholder and mode != "check" and not trusted
+            found = _identity if plain else _generate(top, entry=True, mode=mode, trusted=trusted)
+        cache[key] = found
     return found
 
 
@@ -148,7 +163,7 @@ def _invalid(exc: _Invalid, ros_type: str) -> MessageValidationError:
 # -- the generator ------------------------------------------------------------------
 
 
-def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy") -> Snapshot:
+def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy", trusted: Trusted = frozenset()) -> Snapshot:
     """Compile the function for ``top``: nested messages inlined, arrays of messages through their own body.
 
     An entry point turns a field's _Invalid into MessageValidationError (a
@@ -157,6 +172,8 @@ def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy") -> Snapsho
     checked copy; "adopt" writes what the checks make into ``m`` itself and
     returns it (nested messages and arrays copied all the same); "check"
     makes the same checks and returns None, copying and storing nothing.
+    A ``trusted`` float array is copied without a look at its items, or
+    skipped by a bare check.
     """
     copy = mode != "check"
     indent = "        " if entry else "    "
@@ -168,6 +185,7 @@ def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy") -> Snapsho
         lines.append(f"{indent}c0 = m.__copy__()")
     names: dict[str, Any] = {**_HELPERS, "ros_type": top.ros_type}
     counter = itertools.count(1)
+    untrusted = set(trusted)  # the paths not met yet: any left at the end names no float array
 
     def store(obj: str, field: str, fixed: str, indent: str) -> None:
         # Keep what a check made of the value in the copy; a bare check only needs it made.
@@ -176,9 +194,17 @@ def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy") -> Snapsho
     def emit(fields: MessageLayout, obj: str, prefix: str, indent: str) -> None:
         for field in fields.fields if not fields.placeholder else ():
             path = prefix + field.name
+            ftype = field.type
+            if path in trusted and ftype.array and ftype.base in FLOATS:
+                untrusted.discard(path)
+                if copy:
+                    value = f"v{next(counter)}"
+                    lines.append(f"{indent}{value} = {obj}.{field.name}")
+                    listed = f"{value}.copy() if type({value}) is list else {value}.tolist()"
+                    lines.append(f"{indent}{obj}.{field.name} = {listed}")
+                continue
             value = f"v{next(counter)}"
             lines.append(f"{indent}{value} = {obj}.{field.name}")
-            ftype = field.type
             if ftype.array:
                 call = _array_call(ftype, field.nested, value, path, names, "_floats" if copy else "_check_floats")
                 if ftype.base not in FLOATS:
@@ -210,6 +236,8 @@ def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy") -> Snapsho
 
     top_name = "c0" if mode == "copy" else "m"
     emit(top, top_name, "", indent)
+    if untrusted:
+        raise ValueError(f"trusted fields {sorted(untrusted)}: no float array field of {top.ros_type} by that path")
     lines.append(f"{indent}return {top_name if copy else 'None'}")
     if entry:
         lines.append("    except _Invalid as exc:")

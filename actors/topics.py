@@ -337,6 +337,20 @@ class Publisher:
             return True
         return False
 
+    def trust(self, *fields: str) -> None:
+        """Look at no item of these float array fields (dotted paths: ``"pose.covariance"``) when publishing.
+
+        Not in rclpy.  For a node whose own code fills them, always with a list
+        of floats or a 1-D float numpy array whose values fit the field (a
+        simulated scan, a covariance it never changes): checking every item on
+        every publish costs more than the rest of the message.  Subscribers
+        still receive a copy of them as published.  ValueError for a path that
+        names no float array field of the message type.
+        """
+        trusted = frozenset(fields)
+        self._check = checker(self.msg_type, trusted)
+        self._snapshot = snapshotter(self.msg_type, trusted)
+
     def get_subscription_count(self) -> int:
         """How many subscriptions this publisher feeds."""
         return len(self._subs)

@@ -177,6 +177,41 @@ def test_a_numpy_array_is_delivered_as_a_list_that_later_writes_to_the_array_do_
         snapshot(Odometry(pose=PoseWithCovariance(covariance=np.zeros(35))))
 
 
+def test_trusted_float_arrays_are_copied_unlooked_at_and_the_rest_still_checked():
+    trusted = frozenset({"ranges", "intensities"})
+    ranges = np.array([1.0, np.inf])
+    scan = LaserScan(ranges=ranges, intensities=[0.5], range_max=2.0)
+    copy = snapshotter(LaserScan, trusted)(scan)
+    assert copy.ranges == [1.0, np.inf] and type(copy.ranges) is list and type(copy.ranges[0]) is float
+    assert copy.intensities == [0.5] and copy.intensities is not scan.intensities
+    assert copy.range_max == 2.0 and copy.header is not scan.header
+    assert checker(LaserScan, trusted)(LaserScan(ranges=[1e39])) is None  # the caller vouched for them
+    for wrong in (snapshotter(LaserScan, trusted), checker(LaserScan, trusted)):
+        with pytest.raises(MessageValidationError, match="field 'range_max'"):
+            wrong(LaserScan(range_max=1e39))
+    odometry = frozenset({"pose.covariance", "twist.covariance"})
+    assert snapshotter(Odometry, odometry) is snapshotter(Odometry, odometry)
+    odom = Odometry()
+    assert snapshotter(Odometry, odometry)(odom).pose.covariance is not odom.pose.covariance
+    assert snapshotter(Odometry) is not snapshotter(Odometry, odometry)
+
+
+@pytest.mark.parametrize(
+    ("cls", "path"),
+    [
+        (LaserScan, "range_max"),  # a float, not an array of them
+        (LaserScan, "header.stamp"),
+        (LaserScan, "nothing"),
+        (Odometry, "covariance"),  # the path from the top: pose.covariance
+        (JointState, "name"),  # an array of str
+    ],
+)
+def test_only_float_array_fields_can_be_trusted(cls, path):
+    for made in (snapshotter, checker):
+        with pytest.raises(ValueError, match=f"trusted fields \\['{path}'\\]"):
+            made(cls, frozenset({path}))
+
+
 @pytest.mark.parametrize(
     ("msg", "error"),
     [

@@ -90,6 +90,32 @@ async def test_a_nested_message_changed_after_publishing_is_delivered_as_publish
         assert got.child_frame_id == "base"
 
 
+async def test_trusted_arrays_changed_after_publishing_are_delivered_as_published():
+    heard: list[LaserScan] = []
+
+    class ScanSink(Node):
+        def __init__(self) -> None:
+            super().__init__("scan_sink")
+            self.create_subscription(LaserScan, "scan", heard.append, 10)
+
+    async with Runtime() as rt:
+        pub = rt.spawn(Source).create_publisher(LaserScan, "scan", 10)
+        pub.trust("ranges", "intensities")
+        pub.publish(LaserScan(ranges=[1e39]))  # nobody listens: a trusted field is not looked at
+        rt.spawn(ScanSink)
+        scan = LaserScan(ranges=np.array([1.0, 2.0]), intensities=[3.0])
+        pub.publish(scan)
+        scan.ranges[0] = 9.0
+        scan.intensities[0] = 9.0
+        with pytest.raises(MessageValidationError, match="field 'range_max'"):
+            pub.publish(LaserScan(range_max=1e39))  # the other fields are checked as before
+        with pytest.raises(ValueError, match="no float array field"):
+            pub.trust("angle_min")
+        await anyio.sleep(0.01)
+        (got,) = heard
+        assert got.ranges == [1.0, 2.0] and type(got.ranges) is list and got.intensities == [3.0]
+
+
 async def test_the_subscribers_of_one_publish_share_one_snapshot():
     class Two(Node):
         def __init__(self) -> None:

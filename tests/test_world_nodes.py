@@ -98,6 +98,7 @@ async def test_the_scan_sees_walls_nothing_and_other_robots():
         await anyio.sleep(0.15)
     scan = observer.scans[-1]
     assert len(scan.ranges) == 360 and scan.header.frame_id == "base_scan"
+    assert type(scan.ranges) is list and {type(r) for r in scan.ranges} == {float}  # trusted, still listed
     assert scan.ranges[0] == pytest.approx(1.0, abs=0.01)  # the wall ahead
     assert scan.ranges[180] == math.inf  # 9 m behind: nothing within 3.5 m
     assert scan.ranges[90] == pytest.approx(1.5 - 0.105, abs=0.01)  # the other robot
@@ -113,6 +114,7 @@ async def test_odometry_is_relative_to_the_start_pose():
         await anyio.sleep(5.02)
     odom = observer.odom[-1]
     assert (odom.header.frame_id, odom.child_frame_id) == ("odom", "base_footprint")
+    assert odom.pose.covariance == odom.twist.covariance == [0.0] * 36
     assert odom.pose.pose.position.x == pytest.approx(0.2 * 4.8, abs=0.02)  # straight ahead
     assert odom.pose.pose.position.y == pytest.approx(0.0, abs=1e-6)
     assert odom.twist.twist.linear.x == pytest.approx(0.2)

@@ -118,6 +118,10 @@ class TurtleBot(Node):
         )
         self.odom_pub = self.create_publisher(Odometry, "odom", 10)
         self.scan_pub = self.create_publisher(LaserScan, "scan", 10)
+        # Arrays made right here: the covariances stay the zeros they were made with, and the
+        # ranges are the World's float64 array, within range_max or infinite (finish_ranges).
+        self.odom_pub.trust("pose.covariance", "twist.covariance")
+        self.scan_pub.trust("ranges", "intensities")
         self.pose_pub = self.create_publisher(PoseStamped, "sim/pose", 10)
         # tf2's broadcasters' topics and QoS: /tf keeps 100, /tf_static is latched.
         self.tf_pub = self.create_publisher(TFMessage, "/tf", 100)
