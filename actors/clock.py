@@ -707,6 +707,30 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
                 self._timer_cancelled_count -= 1
                 heappop(scheduled)._scheduled = False
 
+    def skip_to(self, when: float) -> bool:
+        """From a callback of this loop: move virtual time on to ``when`` now if the loop would do only that next.
+
+        For a callback that would set its loop timer for ``when`` and return
+        (a runtime's timers, instant after instant of a simulation): True, time
+        moved, means the caller may do now what that timer would, without the
+        loop's iteration around it.  That is when the next iteration would jump
+        to ``when`` and run that timer alone: nothing is ready, no timer of the
+        loop's is due before ``when`` or within its clock resolution, no file
+        descriptor but the loop's self-pipe nor any signal is watched (their
+        poll is the loop's to make), no thread is at work, and the loop is
+        neither stopping nor in debug mode.  False otherwise, time unmoved.
+        """
+        if self._ready or self._stopping or self._debug or not when > self._now:
+            return False
+        scheduled = self._scheduled
+        if scheduled and scheduled[0]._when < when + self._clock_resolution:
+            return False
+        selector = self._selector
+        if selector._peek is None or len(selector._fd_to_key) > 1 or self._signal_handlers or self.threads_busy():
+            return False
+        self._now = when
+        return True
+
     def advance(self, seconds: float) -> None:
         """Move virtual time forward by ``seconds`` at once (timers due run next)."""
         if seconds < 0:

@@ -17,7 +17,9 @@ deadline (every node started in the same instant, under virtual time) cost one
 loop timer between them.  Timers due together fire in the order they were armed,
 and their nodes' rounds run right away, in the same loop iteration
 (:meth:`Scheduler.run_now`), not one iteration later; the loop timer is set
-again once, after those rounds have re-armed their timers.
+again once, after those rounds have re-armed their timers.  On virtual time,
+when the loop's next iteration would only jump to the next deadline and run
+them again (:meth:`VirtualTimeLoop.skip_to`), they run at once, without it.
 
 As in rclpy, a callback with a parameter annotated ``TimerInfo`` is called with
 the tick's expected and actual times; ``autostart=False`` makes a timer that
@@ -86,6 +88,9 @@ def _timer_info_parameter(callback: Callable[..., Any]) -> str | None:
     return None
 
 _COMPACT_AT = 64  # stale entries tolerated before the heap and lanes are rebuilt without them
+# Instants one loop timer's callback runs in a row on virtual time (see Deadlines._fire): the
+# loop's own iteration still comes this often, for whatever watches it from outside.
+_SKIPS = 100
 _MAX_LANES = 256  # distinct periods given a lane; timers of any further period wait in the heap alone
 _NEVER = float("inf")  # a constant: float("inf") parses the string at each call
 
@@ -128,8 +133,8 @@ class Deadlines:
     fire in the order they were armed.
     """
 
-    __slots__ = ("_loop", "_scheduler", "_heap", "_lanes", "_handle", "_spent", "_call_again", "_armed", "_order",
-                 "_stale", "_firing")
+    __slots__ = ("_loop", "_scheduler", "_heap", "_lanes", "_handle", "_spent", "_call_again", "_skip_to", "_armed",
+                 "_order", "_stale", "_firing")
 
     def __init__(self, loop: asyncio.AbstractEventLoop, scheduler: Scheduler | None = None) -> None:
         self._loop = loop
@@ -141,6 +146,7 @@ class Deadlines:
         # (virtual time: one loop timer per instant, and a new handle cost as much as the rest of _arm).
         self._spent: asyncio.TimerHandle | None = None
         self._call_again = loop.call_again if isinstance(loop, VirtualTimeLoop) else None
+        self._skip_to = loop.skip_to if isinstance(loop, VirtualTimeLoop) else None
         self._armed = _NEVER  # the deadline the loop timer is set for
         self._order = itertools.count()
         self._stale = 0
@@ -260,6 +266,27 @@ class Deadlines:
         if limit < self._armed:  # not max(): it parses its arguments as keywords, ten times the cost
             limit = self._armed
         self._spent, self._handle = self._handle, None
+        skips = _SKIPS if self._skip_to is not None else 0
+        try:
+            while True:
+                self._run_due(limit)
+                # On virtual time, the next instant at once when the loop would do nothing
+                # but jump there and call this again: a physics step's instant is mostly
+                # the loop's iteration around it.
+                heap = self._heap
+                if not (skips and heap and self._skip_to(heap[0][0])):  # type: ignore[misc]
+                    break
+                skips -= 1
+                limit = heap[0][0]
+        finally:
+            heap = self._heap
+            if heap:
+                self._arm(heap[0][0])
+            else:
+                self._armed = _NEVER
+
+    def _run_due(self, limit: float) -> None:
+        # The timers due by ``limit``, their rounds run; the heap's head live afterwards.
         # The callbacks re-arm their timers: one loop timer for all of them afterwards,
         # rather than one each (asyncio keeps a cancelled one in its heap until it is due).
         # Below every deadline meanwhile, so that add() leaves the loop timer alone.
@@ -290,10 +317,6 @@ class Deadlines:
             heap = self._heap  # discard() may have rebuilt it
             if heap and heap[0][2]._when != heap[0][0]:
                 self._prune()
-            if heap:
-                self._arm(heap[0][0])
-            else:
-                self._armed = _NEVER
 
 
 class Timer:

@@ -11,7 +11,7 @@ import anyio
 import pytest
 
 from actors import Node, Runtime
-from actors.clock import Clock, ClockType, Time
+from actors.clock import Clock, ClockType, Time, VirtualTimeLoop
 from actors.timers import TimerInfo, _timer_info_parameter
 from conftest import live_loop_timers
 from interfaces.std_msgs.msg import String
@@ -492,3 +492,53 @@ async def test_changing_the_period_keeps_the_scheduled_tick():
         assert node.stamps == pytest.approx([0.1, 0.2, 0.7])
         with pytest.raises(ValueError):
             node.timer.timer_period_ns = 0
+
+
+def test_instants_skipped_to_on_virtual_time_run_as_the_loops_own_iterations_would():
+    """The same graph with and without Deadlines skipping the loop's iterations: the same trace."""
+
+    class Busy(Node):
+        def __init__(self, trace: list[tuple[float, str]]) -> None:
+            super().__init__("busy")
+            self.trace = trace
+            self.pub = self.create_publisher(String, "chat", 10)
+            self.create_subscription(String, "chat", lambda msg: self.note(msg.data), 10)
+            self.create_timer(0.01, lambda: self.note("step"))  # alone at most instants: skipped to
+            self.create_timer(0.03, self.send)
+            self.create_timer(0.07, lambda: asyncio.get_running_loop().call_soon(self.note, "soon"))
+
+        def note(self, what: str) -> None:
+            self.trace.append((asyncio.get_running_loop().time(), what))
+
+        def send(self) -> None:
+            self.note("send")
+            self.pub.publish(String(data="heard"))
+
+    def run(skip: bool) -> tuple[list[tuple[float, str]], int]:
+        trace: list[tuple[float, str]] = []
+        skipped = 0
+
+        async def main() -> None:
+            nonlocal skipped
+            loop = asyncio.get_running_loop()
+
+            def skip_to(when: float) -> bool:
+                nonlocal skipped
+                moved = loop.skip_to(when)
+                skipped += moved
+                return moved
+
+            async with Runtime() as rt:
+                rt.deadlines._skip_to = skip_to if skip else None
+                rt.spawn(Busy, trace)
+                loop.call_at(0.155, lambda: trace.append((loop.time(), "loop timer")))
+                for _ in range(4):
+                    await anyio.sleep(0.1)
+                    trace.append((loop.time(), "task"))
+
+        anyio.run(main, backend_options={"loop_factory": VirtualTimeLoop})
+        return trace, skipped
+
+    (skipping, skipped), (iterating, none) = run(True), run(False)
+    assert skipping == iterating and none == 0
+    assert skipped > 10 and len(iterating) > 60

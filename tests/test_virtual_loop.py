@@ -11,6 +11,7 @@ from __future__ import annotations
 import asyncio
 import contextvars
 import logging
+import socket
 import threading
 
 import pytest
@@ -257,6 +258,40 @@ def test_a_threads_call_soon_threadsafe_wakes_the_loop_waiting_in_real_time_befo
         far.cancel()
 
     assert run_both(program) == [("handed over", 0.0), "worked", ("after", 0.0)]
+
+
+def test_skip_to_moves_time_only_when_the_next_iteration_would_do_nothing_but_jump_there():
+    loop = VirtualTimeLoop()
+    try:
+        assert loop.skip_to(1.0) and loop.time() == 1.0
+        assert not loop.skip_to(1.0) and not loop.skip_to(0.5)  # not ahead: the loop's to run
+        other = loop.call_at(2.0, print)
+        assert not loop.skip_to(2.0) and not loop.skip_to(2.0 - loop._clock_resolution / 2)  # run with it
+        assert not loop.skip_to(3.0)  # the other timer comes first
+        assert loop.skip_to(1.5) and loop.time() == 1.5
+        other.cancel()
+        loop.call_soon(print)
+        assert not loop.skip_to(1.6)  # something is ready
+        loop._ready.clear()
+        reader, writer = socket.socketpair()
+        loop.add_reader(reader, print)
+        assert not loop.skip_to(1.6)  # the loop polls its descriptors before any jump
+        loop.remove_reader(reader)
+        reader.close(), writer.close()
+        release = threading.Event()
+        job = loop.run_in_executor(None, release.wait)
+        assert not loop.skip_to(1.6)  # a thread at work: time waits for it
+        release.set()
+        loop.run_until_complete(job)
+        loop.stop()
+        assert not loop.skip_to(1.6)  # stopping
+        loop._stopping = False
+        loop.set_debug(True)
+        assert not loop.skip_to(1.6)
+        loop.set_debug(False)
+        assert loop.skip_to(1.6) and loop.time() == 1.6
+    finally:
+        loop.close()
 
 
 def test_debug_mode_takes_asyncios_iteration_with_its_slow_callback_warnings(caplog):
