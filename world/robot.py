@@ -97,6 +97,7 @@ class TurtleBot(Node):
             except ValueError as exc:
                 raise WorldError(f"{self.name}: {exc}") from None
         self._start = (x, y, theta)
+        self._noisy_odometry = self.robot.noise.odometry  # a property: asked once, not every tick
         self._start_cos_sin = (math.cos(theta), math.sin(theta))
         lidar = self.robot.model.lidar
         # One message of each kind, refilled and published again each tick: publish() takes a
@@ -161,7 +162,8 @@ class TurtleBot(Node):
 
     def publish_odometry(self, stamp: TimeMsg) -> None:
         """Publish odom, the ground-truth pose, and the contact state if it changed, stamped ``stamp``."""
-        odometry = self.robot.odometry()
+        robot = self.robot
+        odometry = robot.odometry()
         x, y, theta, v, w = odometry
         x0, y0, theta0 = self._start
         # Odometry starts at the start pose: express the pose in that frame.
@@ -170,27 +172,30 @@ class TurtleBot(Node):
         msg = self._odom
         msg.header.stamp = stamp
         pose = msg.pose.pose
-        pose.position.x, pose.position.y = c * dx + s * dy, -s * dx + c * dy
-        _set_yaw(pose.orientation, math.remainder(theta - theta0, math.tau))
-        msg.twist.twist.linear.x, msg.twist.twist.angular.z = v, w
+        position, orientation = pose.position, pose.orientation
+        position.x, position.y = c * dx + s * dy, -s * dx + c * dy
+        _set_yaw(orientation, math.remainder(theta - theta0, math.tau))
+        twist = msg.twist.twist
+        twist.linear.x, twist.angular.z = v, w
         self.odom_pub.publish(msg)
         if self.tf_pub.get_subscription_count():  # nobody listens: no transform to fill
             tf = self._tf.transforms[0]
             tf.header.stamp = stamp
-            tf.transform.translation.x, tf.transform.translation.y = pose.position.x, pose.position.y
+            tf.transform.translation.x, tf.transform.translation.y = position.x, position.y
             rotation = tf.transform.rotation
-            rotation.z, rotation.w = pose.orientation.z, pose.orientation.w
+            rotation.z, rotation.w = orientation.z, orientation.w
             self.tf_pub.publish(self._tf)
 
         # Without odometry noise the odometry is the truth, read from the body once.
-        truth = self.robot.pose if self.robot.noise.odometry else odometry
+        truth = robot.pose if self._noisy_odometry else odometry
         ground = self._ground
         ground.header.stamp = stamp
-        ground.pose.position.x, ground.pose.position.y = truth.x, truth.y
-        _set_yaw(ground.pose.orientation, truth.theta)
+        pose = ground.pose
+        pose.position.x, pose.position.y = truth.x, truth.y
+        _set_yaw(pose.orientation, truth.theta)
         self.pose_pub.publish(ground)
 
-        touching = self.robot.in_contact
+        touching = robot.in_contact
         if touching != self._touching:
             self._touching = touching
             self.contact_pub.publish(Bool(data=touching))
