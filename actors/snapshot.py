@@ -21,10 +21,12 @@ function for its type, which
   bytearray ``bytes``.
 
 A message without fields is its own snapshot: nothing in it can change.
-A publisher may name float array fields that its own code fills with floats
-that fit (a simulated scan, a covariance it never changes): the function made
-for those *trusted* fields reads no item of them, and the snapshot copies them
-all the same (a list's copy, a numpy array's ``tolist()``).
+A publisher may name fields that its own code fills with values of the
+field's canonical type that fit (a simulated scan, a stamp from the clock, a
+covariance it never changes): the function made for those *trusted* fields
+does not look at them, and the snapshot copies what of them is mutable all
+the same (a nested message, a float array's list, a numpy array's
+``tolist()``); arrays of anything but floats are checked even there.
 :func:`adopter` gives the variant for a message nobody else holds (a service
 response the handler did not keep): the same checks and canonical values,
 written into the message itself, with only its mutable parts copied.
@@ -83,10 +85,11 @@ def snapshotter(cls: type, trusted: Trusted = frozenset()) -> Snapshot:
     copy; it raises MessageValidationError for a field that does not fit.  A
     class that is not a generated interface type (no ``__ros_definition__``)
     gets the identity: actors cannot know its fields.  ``trusted``: dotted
-    paths of float array fields (``"pose.covariance"``) copied without a look
-    at their items, for a caller whose own code puts only a list of floats or
-    a 1-D float numpy array there, every value fitting the field; ValueError
-    for a path that names no float array field outside arrays of messages.
+    paths of fields (``"pose.covariance"``, ``"header"`` for all of it, ``""``
+    for the whole message) whose values the caller's own code makes in their
+    canonical type, fitting the field (a float array: a list of floats or a
+    1-D float numpy array): they are copied where mutable, not looked at.
+    ValueError for a path that names no field outside arrays of messages.
     """
     return _made(_cache, cls, "copy", _identity, trusted)
 
@@ -172,8 +175,9 @@ def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy", trusted: T
     checked copy; "adopt" writes what the checks make into ``m`` itself and
     returns it (nested messages and arrays copied all the same); "check"
     makes the same checks and returns None, copying and storing nothing.
-    A ``trusted`` float array is copied without a look at its items, or
-    skipped by a bare check.
+    A ``trusted`` field ("" for all) is not looked at: copied when it is a
+    message or a float array, skipped by a bare check; arrays of anything but
+    floats under it are checked all the same.
     """
     copy = mode != "check"
     indent = "        " if entry else "    "
@@ -185,27 +189,36 @@ def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy", trusted: T
         lines.append(f"{indent}c0 = m.__copy__()")
     names: dict[str, Any] = {**_HELPERS, "ros_type": top.ros_type}
     counter = itertools.count(1)
-    untrusted = set(trusted)  # the paths not met yet: any left at the end names no float array
+    untrusted = set(trusted)  # the paths not met yet: any left at the end names no field
 
     def store(obj: str, field: str, fixed: str, indent: str) -> None:
         # Keep what a check made of the value in the copy; a bare check only needs it made.
         lines.append(f"{indent}{obj}.{field} = {fixed}" if copy else f"{indent}{fixed}")
 
-    def emit(fields: MessageLayout, obj: str, prefix: str, indent: str) -> None:
+    def emit(fields: MessageLayout, obj: str, prefix: str, indent: str, vouched: bool = False) -> None:
+        # ``vouched``: the publisher trusts every field below (see Publisher.trust).
         for field in fields.fields if not fields.placeholder else ():
             path = prefix + field.name
             ftype = field.type
-            if path in trusted and ftype.array and ftype.base in FLOATS:
-                untrusted.discard(path)
+            untrusted.discard(path)
+            sure = vouched or path in trusted
+            value = f"v{next(counter)}"
+            load = len(lines)
+            lines.append(f"{indent}{value} = {obj}.{field.name}")
+            if sure and field.nested is not None and not ftype.array:
+                # Looked at no more: copied (it is mutable), and its arrays but float ones checked.
                 if copy:
-                    value = f"v{next(counter)}"
-                    lines.append(f"{indent}{value} = {obj}.{field.name}")
+                    nested = f"c{next(counter)}"
+                    lines.append(f"{indent}{nested} = {value}.__copy__()")
+                    emit(field.nested, nested, path + ".", indent, True)
+                    lines.append(f"{indent}{obj}.{field.name} = {nested}")
+                else:
+                    emit(field.nested, value, path + ".", indent, True)
+            elif sure and (not ftype.array or ftype.base in FLOATS):
+                if copy and ftype.array:
                     listed = f"{value}.copy() if type({value}) is list else {value}.tolist()"
                     lines.append(f"{indent}{obj}.{field.name} = {listed}")
-                continue
-            value = f"v{next(counter)}"
-            lines.append(f"{indent}{value} = {obj}.{field.name}")
-            if ftype.array:
+            elif ftype.array:
                 call = _array_call(ftype, field.nested, value, path, names, "_floats" if copy else "_check_floats")
                 if ftype.base not in FLOATS:
                     store(obj, field.name, call, indent)
@@ -233,11 +246,14 @@ def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy", trusted: T
                 test, fix = _scalar(ftype, value, path)
                 lines.append(f"{indent}if {test}:")
                 store(obj, field.name, fix, indent + "    ")
+            if len(lines) == load + 1:
+                del lines[load]  # a field nothing is done with: not even read
 
     top_name = "c0" if mode == "copy" else "m"
-    emit(top, top_name, "", indent)
+    emit(top, top_name, "", indent, "" in trusted)
+    untrusted.discard("")
     if untrusted:
-        raise ValueError(f"trusted fields {sorted(untrusted)}: no float array field of {top.ros_type} by that path")
+        raise ValueError(f"trusted fields {sorted(untrusted)}: no field of {top.ros_type} by that path")
     lines.append(f"{indent}return {top_name if copy else 'None'}")
     if entry:
         lines.append("    except _Invalid as exc:")

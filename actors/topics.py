@@ -338,16 +338,17 @@ class Publisher:
         return False
 
     def trust(self, *fields: str) -> None:
-        """Look at no item of these float array fields (dotted paths: ``"pose.covariance"``) when publishing.
+        """Look no more at these fields (dotted paths: ``"pose.covariance"``; none: every field) when publishing.
 
-        Not in rclpy.  For a node whose own code fills them, always with a list
-        of floats or a 1-D float numpy array whose values fit the field (a
-        simulated scan, a covariance it never changes): checking every item on
-        every publish costs more than the rest of the message.  Subscribers
-        still receive a copy of them as published.  ValueError for a path that
-        names no float array field of the message type.
+        Not in rclpy.  For a node whose own code fills them, always with
+        values of the field's canonical type that fit it (a float, a str, a
+        float array as a list of floats or a 1-D float numpy array, a stamp
+        from the clock): checking each on every publish costs as much as the
+        rest of a tick.  Subscribers still receive a copy of what was
+        published, and arrays of anything but floats are still checked.
+        ValueError for a path that names no field of the message type.
         """
-        trusted = frozenset(fields)
+        trusted = frozenset(fields or ("",))
         self._check = checker(self.msg_type, trusted)
         self._snapshot = snapshotter(self.msg_type, trusted)
 

@@ -90,7 +90,7 @@ async def test_a_nested_message_changed_after_publishing_is_delivered_as_publish
         assert got.child_frame_id == "base"
 
 
-async def test_trusted_arrays_changed_after_publishing_are_delivered_as_published():
+async def test_trusted_fields_changed_after_publishing_are_delivered_as_published():
     heard: list[LaserScan] = []
 
     class ScanSink(Node):
@@ -109,11 +109,17 @@ async def test_trusted_arrays_changed_after_publishing_are_delivered_as_publishe
         scan.intensities[0] = 9.0
         with pytest.raises(MessageValidationError, match="field 'range_max'"):
             pub.publish(LaserScan(range_max=1e39))  # the other fields are checked as before
-        with pytest.raises(ValueError, match="no float array field"):
-            pub.trust("angle_min")
+        with pytest.raises(ValueError, match="no field"):
+            pub.trust("nothing")
+        pub.trust()  # every field, nested ones too
+        scan.header.stamp.sec = 1
+        pub.publish(scan)
+        scan.header.stamp.sec = 2
+        scan.header.frame_id = "changed"
         await anyio.sleep(0.01)
-        (got,) = heard
-        assert got.ranges == [1.0, 2.0] and type(got.ranges) is list and got.intensities == [3.0]
+        first, second = heard
+        assert first.ranges == [1.0, 2.0] and type(first.ranges) is list and first.intensities == [3.0]
+        assert second.ranges == [9.0, 2.0] and second.header.stamp.sec == 1 and second.header.frame_id == ""
 
 
 async def test_the_subscribers_of_one_publish_share_one_snapshot():

@@ -119,11 +119,15 @@ class TurtleBot(Node):
         )
         self.odom_pub = self.create_publisher(Odometry, "odom", 10)
         self.scan_pub = self.create_publisher(LaserScan, "scan", 10)
-        # Arrays made right here: the covariances stay the zeros they were made with, and the
-        # ranges are the World's float64 array, within range_max or infinite (finish_ranges).
-        self.odom_pub.trust("pose.covariance", "twist.covariance")
-        self.scan_pub.trust("ranges", "intensities")
         self.pose_pub = self.create_publisher(PoseStamped, "sim/pose", 10)
+        # What this node fills is valid by construction: stamps from the clock, frame names,
+        # poses from the body's floats and math, covariances left at their zeros, the World's
+        # float64 ranges within range_max or infinite (finish_ranges).  Still checked: the twist
+        # (a model's limits may be ints, and so the clipped command) and the scan's constants
+        # (from the model's LidarSpec, whatever it holds).
+        self.odom_pub.trust("header", "child_frame_id", "pose", "twist.covariance")
+        self.pose_pub.trust()
+        self.scan_pub.trust("header", "ranges", "intensities")
         # tf2's broadcasters' topics and QoS: /tf keeps 100, /tf_static is latched.
         self.tf_pub = self.create_publisher(TFMessage, "/tf", 100)
         self.tf_static_pub = self.create_publisher(
