@@ -267,56 +267,52 @@ class Deadlines:
             limit = self._armed
         self._spent, self._handle = self._handle, None
         skips = _SKIPS if self._skip_to is not None else 0
-        try:
-            while True:
-                self._run_due(limit)
-                # On virtual time, the next instant at once when the loop would do nothing
-                # but jump there and call this again: a physics step's instant is mostly
-                # the loop's iteration around it.
-                heap = self._heap
-                if not (skips and heap and self._skip_to(heap[0][0])):  # type: ignore[misc]
-                    break
-                skips -= 1
-                limit = heap[0][0]
-        finally:
-            heap = self._heap
-            if heap:
-                self._arm(heap[0][0])
-            else:
-                self._armed = _NEVER
-
-    def _run_due(self, limit: float) -> None:
-        # The timers due by ``limit``, their rounds run; the heap's head live afterwards.
+        scheduler = self._scheduler
         # The callbacks re-arm their timers: one loop timer for all of them afterwards,
         # rather than one each (asyncio keeps a cancelled one in its heap until it is due).
         # Below every deadline meanwhile, so that add() leaves the loop timer alone.
         self._armed = -_NEVER
         self._firing = True
         heap = self._heap
-        due = []
-        while heap and heap[0][0] <= limit:
-            when, _, timer, _ = self._pop()
-            if timer._when == when:
-                timer._when = None  # due: it waits for no deadline until its callback has run
-                due.append(timer)
-            else:
-                self._stale -= 1
-        scheduler = self._scheduler
         try:
-            if scheduler is not None and len(due) == 1:
-                scheduler.run_one(due[0].node.actor, due[0])  # most instants of a simulation
-            else:
-                if scheduler is not None:
-                    scheduler.hold()  # the rounds run below, not from a loop callback of their own
-                for timer in due:
-                    timer.node.actor.schedule(timer)
-                if scheduler is not None:
-                    scheduler.run_now()
+            while True:
+                # The timers due by ``limit``, their rounds run; the heap's head live afterwards.
+                # One instant a loop: a Python call per instant cost more than its body's setup.
+                due = []
+                while heap and heap[0][0] <= limit:
+                    when, _, timer, _ = self._pop()
+                    if timer._when == when:
+                        timer._when = None  # due: it waits for no deadline until its callback has run
+                        due.append(timer)
+                    else:
+                        self._stale -= 1
+                if scheduler is not None and len(due) == 1:
+                    scheduler.run_one(due[0].node.actor, due[0])  # most instants of a simulation
+                else:
+                    if scheduler is not None:
+                        scheduler.hold()  # the rounds run below, not from a loop callback of their own
+                    for timer in due:
+                        timer.node.actor.schedule(timer)
+                    if scheduler is not None:
+                        scheduler.run_now()
+                heap = self._heap  # discard() may have rebuilt it
+                if heap and heap[0][2]._when != heap[0][0]:
+                    self._prune()
+                # On virtual time, the next instant at once when the loop would do nothing
+                # but jump there and call this again: a physics step's instant is mostly
+                # the loop's iteration around it.
+                if not (skips and heap and self._skip_to(heap[0][0])):  # type: ignore[misc]
+                    break
+                skips -= 1
+                limit = heap[0][0]
         finally:
             self._firing = False
-            heap = self._heap  # discard() may have rebuilt it
-            if heap and heap[0][2]._when != heap[0][0]:
-                self._prune()
+            self._prune()  # after a callback's error, the head may not be live yet
+            heap = self._heap
+            if heap:
+                self._arm(heap[0][0])
+            else:
+                self._armed = _NEVER
 
 
 class Timer:
