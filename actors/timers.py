@@ -251,7 +251,9 @@ class Deadlines:
             self._spent = None
             self._handle = self._call_again(spent, when)
         else:
-            self._handle = self._loop.call_at(when, self._fire)
+            # In the rounds' context: _fire runs them itself (Scheduler.run_one, run_now).
+            context = self._scheduler.context if self._scheduler is not None else None
+            self._handle = self._loop.call_at(when, self._fire, context=context)
 
     def _disarm(self) -> None:
         if self._handle is not None:

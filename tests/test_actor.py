@@ -148,17 +148,18 @@ async def test_run_one_runs_an_idle_actors_round_at_once_and_otherwise_waits_its
     loop = asyncio.get_running_loop()
     scheduler = Scheduler(loop)
     first, second = Actor(loop, scheduler), Actor(loop, scheduler)
+    in_context = scheduler.context.run  # as a loop callback calls run_one: in the rounds' context
     notes: list[str] = []
     # Nothing else waits: the round runs now, in the caller's loop callback, and the actor is idle after it.
-    scheduler.run_one(first, Noting("alone", notes))
+    in_context(scheduler.run_one, first, Noting("alone", notes))
     assert notes == ["alone"] and not first._queued
     # Another actor's round is already due (a wake-up from a publish): it runs first, then this one.
     first.schedule(Noting("woken earlier", notes))
-    scheduler.run_one(second, Noting("timer", notes))
+    in_context(scheduler.run_one, second, Noting("timer", notes))
     assert notes == ["alone", "woken earlier", "timer"]
     # An actor with work queued (its round is due): the entity waits behind that work.
     first.schedule(Noting("queued", notes))
-    scheduler.run_one(first, Noting("behind it", notes))
+    in_context(scheduler.run_one, first, Noting("behind it", notes))
     assert notes[3:] == ["queued", "behind it"]
     await asyncio.sleep(0)  # the loop callback those wake-ups asked for finds nothing left to run
     assert notes[5:] == []
@@ -167,7 +168,7 @@ async def test_run_one_runs_an_idle_actors_round_at_once_and_otherwise_waits_its
     first.schedule(Awaiting(notes, release))
     await asyncio.sleep(0)
     assert first.awaiting and notes[5:] == ["async starts"]
-    scheduler.run_one(first, Noting("during", notes))
+    in_context(scheduler.run_one, first, Noting("during", notes))
     assert notes[5:] == ["async starts"]
     release.set_result(None)
     for _ in range(3):
@@ -181,11 +182,12 @@ async def test_run_one_on_an_idle_actor_hands_an_async_callback_to_a_task_and_a_
     loop = asyncio.get_running_loop()
     scheduler = Scheduler(loop)
     actor = Actor(loop, scheduler)
+    in_context = scheduler.context.run  # as a loop callback calls run_one: in the rounds' context
     notes: list[str] = []
     release = loop.create_future()
-    scheduler.run_one(actor, Awaiting(notes, release))
+    in_context(scheduler.run_one, actor, Awaiting(notes, release))
     assert actor.awaiting and actor._queued and notes == ["async starts"]
-    scheduler.run_one(actor, Noting("while it awaits", notes))  # waits behind the async callback
+    in_context(scheduler.run_one, actor, Noting("while it awaits", notes))  # waits behind the async callback
     release.set_result(None)
     for _ in range(3):
         await asyncio.sleep(0)
@@ -198,7 +200,7 @@ async def test_run_one_on_an_idle_actor_hands_an_async_callback_to_a_task_and_a_
         def _run(self):
             raise CallbackFailed(self, None, RuntimeError("no"))
 
-    scheduler.run_one(actor, Failing())
+    in_context(scheduler.run_one, actor, Failing())
     assert [type(e.error) for e in exits] == [RuntimeError] and actor.current is None  # type: ignore[union-attr]
-    scheduler.run_one(actor, Noting("after the end", notes))
+    in_context(scheduler.run_one, actor, Noting("after the end", notes))
     assert notes[-1] == "while it awaits"  # a stopped actor runs nothing more

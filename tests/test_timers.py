@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import asyncio
+import contextvars
 import random
 import time
 from typing import Any
@@ -365,6 +366,40 @@ async def test_a_node_a_tick_wakes_runs_in_its_own_round_after_the_ticks():
         rt.spawn(Sender)
         await anyio.sleep(2.5)
         assert order == ["tock", "tick", "hi", "tock", "tick", "hi"]
+
+
+async def test_ticks_run_in_the_runtimes_one_context_alone_or_due_together():
+    # Rounds share one context (actors.actor): what a tick's callback sets, the callbacks after it see,
+    # a subscription's round (a loop callback of its own) included, and the runtime's caller does not.
+    var: contextvars.ContextVar[str] = contextvars.ContextVar("var", default="unset")
+    seen: list[tuple[str, str]] = []
+
+    class Setter(Node):
+        def __init__(self) -> None:
+            super().__init__("setter")
+            self.create_timer(0.1, self.tick)
+            self.pub = self.create_publisher(String, "chat", 10)
+
+        def tick(self) -> None:
+            seen.append(("tick", var.get()))
+            var.set(f"set at {self.get_clock().now().nanoseconds // 10**8}")
+            self.pub.publish(String(data="hi"))
+
+    class Reader(Node):
+        def __init__(self) -> None:
+            super().__init__("reader")
+            self.create_subscription(String, "chat", lambda msg: seen.append(("message", var.get())), 10)
+            self.create_timer(0.2, lambda: seen.append(("tock", var.get())))
+
+    async with Runtime() as rt:
+        rt.spawn(Setter)
+        rt.spawn(Reader)
+        await anyio.sleep(0.25)
+        assert var.get() == "unset"
+    # At 0.1 the tick is due alone (Scheduler.run_one); at 0.2 after the tock (armed before its re-arm), in one
+    # batch of rounds.
+    assert seen == [("tick", "unset"), ("message", "set at 1"), ("tock", "set at 1"), ("tick", "set at 1"),
+                    ("message", "set at 2")]
 
 
 class Informed(Node):
