@@ -115,7 +115,7 @@ class Scheduler:
         self._armed = True
 
     def run_now(self) -> None:
-        """Run the rounds now that are due soon (from a loop callback in :attr:`context`, e.g. a timer's: saves an iteration)."""
+        """Run the rounds due soon now, from a loop callback in :attr:`context` (a timer's: saves an iteration)."""
         if self._armed:
             self._flush()
 
