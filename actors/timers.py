@@ -133,12 +133,14 @@ class Deadlines:
     fire in the order they were armed.
     """
 
-    __slots__ = ("_loop", "_scheduler", "_heap", "_lanes", "_handle", "_spent", "_call_again", "_skip_to", "_armed",
-                 "_order", "_stale", "_firing")
+    __slots__ = ("_loop", "_scheduler", "_context", "_heap", "_lanes", "_handle", "_spent", "_call_again", "_skip_to",
+                 "_armed", "_order", "_stale", "_firing")
 
     def __init__(self, loop: asyncio.AbstractEventLoop, scheduler: Scheduler | None = None) -> None:
         self._loop = loop
         self._scheduler = scheduler
+        # The loop timer runs in the rounds' context: _fire runs them itself (Scheduler.run_one, run_now).
+        self._context = scheduler.context if scheduler is not None else None
         self._heap: list[_Entry] = []
         self._lanes: dict[float, _Lane] = {}
         self._handle: asyncio.TimerHandle | None = None
@@ -251,9 +253,7 @@ class Deadlines:
             self._spent = None
             self._handle = self._call_again(spent, when)
         else:
-            # In the rounds' context: _fire runs them itself (Scheduler.run_one, run_now).
-            context = self._scheduler.context if self._scheduler is not None else None
-            self._handle = self._loop.call_at(when, self._fire, context=context)
+            self._handle = self._loop.call_at(when, self._fire, context=self._context)
 
     def _disarm(self) -> None:
         if self._handle is not None:

@@ -310,6 +310,10 @@ class Publisher:
                     queue.popleft()
         pending.clear()
 
+    def _unfeed(self) -> None:
+        """Forget the feeds and the path publish() takes to them: the next publish settles both (_refeed)."""
+        self._feeds = self._pending = self._only = None
+
     def _settle(self) -> None:
         """Flush the open batch, if any: the feeds are about to change."""
         if self._pending:
@@ -321,19 +325,19 @@ class Publisher:
         if self._tracked is None:
             self._tracked = {}  # made only then: hardly any publisher needs one
         self._tracked[sub] = None
-        self._feeds = self._pending = self._only = None  # a publisher that tracks senders does not batch
+        self._unfeed()  # a publisher that tracks senders does not batch
 
     def _connect(self, sub: Subscription) -> None:
         """Feed ``sub`` from the next publish on (the topic table's matching, a transport's outlet)."""
         self._settle()
         self._subs[sub] = None
-        self._feeds = self._pending = self._only = None
+        self._unfeed()
 
     def _disconnect(self, sub: Subscription) -> bool:
         """Stop feeding ``sub``; whether it was fed.  What was published before still reaches it."""
         self._settle()
         if self._subs.pop(sub, False) is None:
-            self._feeds = self._pending = self._only = None
+            self._unfeed()
             return True
         return False
 
@@ -669,7 +673,7 @@ class TopicTable:
         if len(topic.publishers) == 2:
             for other in topic.publishers:
                 if other._pending is None:  # it was alone: from now on it checks for another's batch
-                    other._feeds = other._only = None
+                    other._unfeed()
         for sub in topic.subscriptions:
             self._match(pub, sub)
         for listener in self.listeners:
