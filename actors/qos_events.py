@@ -332,13 +332,15 @@ class WatchedPublisher(Publisher):
 
     def publish(self, msg: Any) -> None:
         """Deliver ``msg`` as :meth:`Publisher.publish` does, then keep its QoS promises."""
+        before = self._pending
         Publisher.publish(self, msg)
         subs = self._subs
         if self._lifespan:
-            # publish() has just appended msg to its open batch, or to every queue and to the
-            # history: wrap it there.
+            # publish() has just appended msg to its open batch (or to the one it filled, which
+            # its subscriptions hold: Publisher._close), or to every queue and to the history:
+            # wrap it there.
             expires = self.node.loop.time() + self._lifespan
-            batch = self._pending
+            batch = self._pending or before
             if batch:
                 batch[-1] = Expiring(batch[-1], expires)
             else:

@@ -12,13 +12,18 @@ KEEP_LAST queue drops its oldest message and counts the drop.
 A publisher that feeds one subscription (or a tap, a transport's outlet...)
 appends to each queue itself and wakes the owning node once per batch.  One
 that feeds several ordinary subscriptions appends each snapshot once to its
-own open *batch*, waking its subscriptions when the batch opens; the batch
-moves into every queue (C-speed ``extend``, drops counted as one-by-one
-dropping would count them) when a subscription's round begins, and before
-anything else reaches those queues: another publisher's message, an
-endpoint joining or leaving, a replay.  Per topic at most one publisher has
-a batch open, so each subscription still sees the topic's messages in
-publish order, and ``queued`` and ``dropped`` count an open batch as queued.
+own open *batch*, a list that every one of those subscriptions holds (one
+list for all), waking them when the batch opens.  The batch is closed (the
+publisher starts a new list) when a subscription's round begins, and before
+anything else can reach those subscriptions: another publisher's message, an
+endpoint joining or leaving.  A round then iterates the list itself; only a
+subscription that has anything else to take first (a message queued
+directly, another batch) moves the list into its queue (C-speed ``extend``),
+and anything arriving after the batch does the same.  KEEP_LAST drops are
+counted when a list is read or moved, as one-by-one dropping counts them.
+Per topic at most one publisher has a batch open, so each subscription still
+sees the topic's messages in publish order, and ``queued`` and ``dropped``
+count a batch held as queued.
 A round iterates the messages queued when it began; what arrives meanwhile
 (a callback publishing on its own topic, or anything during an ``async``
 callback) is fed directly and counts the round's rest against the depth, so
@@ -133,7 +138,7 @@ class Expiring:
 
 
 #: A publisher's ``_pending`` when it feeds each queue directly but shares its topic with
-#: others: before it delivers, it flushes the batch another may have open.
+#: others: before it delivers, it closes the batch another may have open.
 _SHARED: Any = ()
 
 
@@ -170,7 +175,7 @@ class Publisher:
         # A batch (see _open): its messages, in publish order, not yet in the subscriptions'
         # queues; None while this publisher delivers to each queue directly (see _refeed).
         self._pending: list[Any] | None = None
-        self._bound = 0  # the batch is flushed when it holds this many: the deepest feed's depth
+        self._bound = 0  # the batch is closed when it holds this many: the deepest feed's depth
         self._only: Subscription | None = None  # see _refeed
 
     def publish(self, msg: Any) -> None:
@@ -190,7 +195,7 @@ class Publisher:
                     # the number of subscribers.
                     pending.append(self._snapshot(msg))
                     if len(pending) >= self._bound:
-                        self._flush()
+                        self._close()
                     return
             elif self._batched(msg, pending):
                 return
@@ -259,12 +264,12 @@ class Publisher:
     def _batched(self, msg: Any, pending: list[Any]) -> bool:
         """publish() with no batch open: whether ``msg`` opened one (else it is fed directly, as usual).
 
-        A publisher fed directly that shares its topic first flushes another's open batch.
+        A publisher fed directly that shares its topic first closes another's open batch.
         """
         if pending is _SHARED:
             dirty = self._topic.dirty  # type: ignore[union-attr]
             if dirty is not None:
-                dirty._flush()  # another publisher's batch comes first: it was published first
+                dirty._close()  # another publisher's batch comes first: it was published first
             return False
         if type(msg) is not self.msg_type:
             return False  # the usual path raises the TypeError
@@ -274,7 +279,7 @@ class Publisher:
     def _open(self, msg: Any, feeds: tuple[Subscription, ...]) -> None:
         """Start a batch with ``msg`` and wake its subscriptions: once per batch, not per message.
 
-        Per topic at most one publisher has a batch open: another's is flushed
+        Per topic at most one publisher has a batch open: another's is closed
         first, so every subscription sees the topic's messages in publish
         order.  A subscription in the middle of its round takes each message
         directly instead, as before: its round's rest counts against its depth.
@@ -282,42 +287,38 @@ class Publisher:
         topic = self._topic
         assert topic is not None and self._pending is not None
         if topic.dirty is not None:
-            topic.dirty._flush()
+            topic.dirty._close()
         for sub in feeds:
             if sub._round is not None:
                 for sub in feeds:
                     sub._push(msg)
                 return
-        self._pending.append(msg)
+        pending = self._pending
+        pending.append(msg)
         topic.dirty = self
         for sub in feeds:
+            if sub._batch is not None:
+                sub._unbatch()  # an earlier batch, still unread, comes first
+            sub._batch = pending
+            sub._limit = 0  # whatever arrives after the batch moves it into the queue first (_evict)
             if not sub._scheduled:
                 sub._scheduled = True
                 sub._actor.schedule(sub)
 
-    def _flush(self) -> None:
-        """Move the open batch into each subscription's queue, dropping (and counting) what KEEP_LAST drops."""
-        pending = self._pending
-        assert pending is not None and self._topic is not None and self._feeds is not None
+    def _close(self) -> None:
+        """Close the open batch: its subscriptions keep the list, this publisher starts a new one."""
+        assert self._topic is not None
         self._topic.dirty = None
-        for sub in self._feeds:
-            queue = sub._queue
-            queue.extend(pending)
-            over = len(queue) - sub._limit  # no round runs (see _open): the limit is the depth
-            if over > 0:
-                sub._dropped += over  # as many as dropping one by one would have dropped
-                for _ in range(over):
-                    queue.popleft()
-        pending.clear()
+        self._pending = []
 
     def _unfeed(self) -> None:
         """Forget the feeds and the path publish() takes to them: the next publish settles both (_refeed)."""
         self._feeds = self._pending = self._only = None
 
     def _settle(self) -> None:
-        """Flush the open batch, if any: the feeds are about to change."""
+        """Close the open batch, if any: the feeds are about to change."""
         if self._pending:
-            self._flush()
+            self._close()
 
     def _track(self, sub: Subscription) -> None:
         """Note ``sub``'s senders from the next publish on (see Subscription.track_senders)."""
@@ -387,6 +388,7 @@ class Subscription(Mailbox):
         "_depth",
         "_limit",
         "_round",
+        "_batch",
         "_topic",
         "_senders",
         "_events",
@@ -417,10 +419,14 @@ class Subscription(Mailbox):
         self._queue: deque[Any] | None = None
         self._depth = qos.depth if qos.history == HistoryPolicy.KEEP_LAST else sys.maxsize
         # The length at which an arriving message must go through _evict: the depth, or 0
-        # while a round runs (the round's rest then counts against the depth too).
+        # while a round runs (the round's rest then counts against the depth too) or a batch
+        # is held (it moves into the queue first).
         self._limit = self._depth
         # While a round runs, the rest of its messages (taken out of _queue when it began).
         self._round: Iterator[Any] | None = None
+        # A publisher's batch (Publisher._open), shared with its other subscriptions and never
+        # changed by them: messages after those in _queue, KEEP_LAST drops not yet counted.
+        self._batch: list[Any] | None = None
         self._topic: Topic | None = None  # set by the topic table
         self._senders: deque[tuple[Any, Publisher]] | None = None  # see track_senders
 
@@ -436,23 +442,21 @@ class Subscription(Mailbox):
 
     @property
     def queued(self) -> int:
-        """Messages waiting for the callback: queued, and in a publisher's open batch."""
+        """Messages waiting for the callback: queued, and in a publisher's batch."""
         waiting, batch = self._waiting()
         return min(waiting + batch, self._depth) if batch else waiting
 
     def _waiting(self) -> tuple[int, int]:
-        # What waits in the queue and the running round's rest, and what waits in an open batch.
+        # What waits in the queue and the running round's rest, and what waits in a batch held.
         waiting = len(self._queue) if self._queue is not None else 0
         if self._round is not None:
             waiting += length_hint(self._round)
-        dirty = self._topic.dirty if self._topic is not None else None
-        batch = len(dirty._pending) if dirty is not None and self in dirty._subs else 0  # type: ignore[arg-type]
-        return waiting, batch
+        return waiting, len(self._batch) if self._batch is not None else 0
 
     def _push(self, msg: Any) -> None:
         topic = self._topic
         if topic is not None and topic.dirty is not None:
-            topic.dirty._flush()  # what was published before comes first
+            topic.dirty._close()  # what was published before comes first
         queue = self._queue
         if queue is None:
             queue = self._queue = deque()
@@ -467,6 +471,8 @@ class Subscription(Mailbox):
         While a round runs, the oldest unread message is the round's next one:
         it is skipped, exactly as if it had waited in the queue.
         """
+        if self._batch is not None:
+            self._unbatch()  # what arrives now comes after the batch
         rest = self._round
         left = length_hint(rest) if rest is not None else 0
         if left + len(self._queue) < self._depth:  # type: ignore[arg-type]
@@ -477,8 +483,22 @@ class Subscription(Mailbox):
             self._queue.popleft()  # type: ignore[union-attr]
         self._dropped += 1
 
+    def _unbatch(self) -> None:
+        """Move the batch held into the queue, after what waits there; drop (and count) what KEEP_LAST drops."""
+        batch, self._batch = self._batch, None
+        queue = self._queue
+        queue.extend(batch)  # type: ignore[union-attr, arg-type]
+        over = len(queue) - self._depth  # type: ignore[arg-type]
+        if over > 0:
+            self._dropped += over  # as many as dropping one by one would have dropped
+            for _ in range(over):
+                queue.popleft()  # type: ignore[union-attr]
+        self._limit = self._depth  # no round runs while a batch is held (see _run)
+
     def _adopt(self, old: Mailbox) -> None:
         assert isinstance(old, Subscription)
+        if old._batch is not None:
+            old._unbatch()  # the new subscription takes the queue (Mailbox._adopt)
         self._dropped = old._dropped
         self.refusals = old.refusals
         self._expiring = old._expiring
@@ -542,17 +562,27 @@ class Subscription(Mailbox):
     def _run(self) -> Awaitable[None] | None:
         topic = self._topic
         if topic is not None and topic.dirty is not None:
-            topic.dirty._flush()  # an open batch may hold messages for this round
+            topic.dirty._close()  # this round reads the open batch: nothing more joins it
         # Only what is queued now: messages published meanwhile wait for the next round.  The
         # round iterates its messages (cheaper than popping each) and what arrives meanwhile
         # queues behind them, with the round's rest counted against the depth (see _evict).
-        batch = self._queue
-        if len(batch) == 1:  # type: ignore[arg-type]
-            rest = iter((batch.popleft(),))  # type: ignore[union-attr]
+        batch = self._batch
+        if batch is None:
+            batch = self._queue
+            if len(batch) == 1:  # type: ignore[arg-type]
+                rest = iter((batch.popleft(),))  # type: ignore[union-attr]
+            else:
+                self._queue = deque()
+                rest = iter(batch)  # type: ignore[arg-type]
+                self._limit = 0
+        elif self._queue or len(batch) > self._depth:
+            self._unbatch()  # rare: something queued to take first, or drops to count
+            return self._run()  # the round of the queue
         else:
-            self._queue = deque()
-            rest = iter(batch)  # type: ignore[arg-type]
-            self._limit = 0
+            # The fan-out path: the batch's own list, shared with the publisher's other
+            # subscriptions (_limit is 0 already: see Publisher._open).
+            self._batch = None
+            rest = iter(batch)
         self._round = rest
         callback = self._call_unexpired if self._expiring else self.callback
         for msg in rest:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import asyncio
 import logging
+from typing import Any
 
 import anyio
 import pytest
@@ -20,8 +21,11 @@ from actors import (
     Runtime,
     SupervisorPolicy,
 )
+from actors import topics
+from actors.clock import VirtualTimeLoop
 from actors.errors import MessageRefused
 from actors.recording.tap import TapSet
+from actors.topics import Publisher
 from interfaces.std_msgs.msg import Int64
 
 TOPIC = "numbers"
@@ -310,6 +314,26 @@ async def test_a_crashed_nodes_restart_keeps_what_its_round_had_not_reached(capl
     assert steady.heard == list(range(8))
 
 
+@pytest.mark.virtual_time
+@pytest.mark.parametrize("turns", range(4))
+async def test_a_restarted_node_takes_over_the_batch_its_crashed_predecessor_held(caplog, turns):
+    # Published after the crash on 3 and before the restart (one turn later, with no backoff):
+    # 7 and 8 reach the crashed node's subscription as a batch, which its successor must take.
+    caplog.set_level(logging.CRITICAL, logger="actors")
+    Fragile.heard = []
+    async with Runtime(supervisor=SupervisorPolicy(intensity=5, period=10.0, backoff=0.0)) as rt:
+        rt.spawn(Fragile)
+        steady = rt.spawn(Sink)
+        source = rt.spawn(Source)
+        source.send(*range(7))
+        for _ in range(turns):
+            await asyncio.sleep(0)
+        source.send(7, 8)
+        await anyio.sleep(0.5)
+    assert Fragile.heard == [0, 1, 2, 4, 5, 6, 7, 8]
+    assert steady.heard == list(range(9))
+
+
 class Slow(Node):
     """Hears ``numbers`` (depth 2 unless told) with an async callback that takes 1 s; refuses 5."""
 
@@ -380,3 +404,98 @@ async def test_a_tap_sees_each_message_when_it_is_published_and_the_subscription
         await settle()
         assert tapped == [2, 3]
         assert [s.heard for s in sinks] == [[0, 1, 2, 3, 4]] * 2
+
+
+# -- the shared batch against per-message delivery, on random graphs --------------------------------
+
+
+class Varied(Node):
+    """Hears ``numbers``; by ``kind``: refuses multiples of 3, crashes on 3 mod 7, awaits, or echoes."""
+
+    def __init__(self, trace: list[tuple[Any, ...]], depth: int | None, kind: str) -> None:
+        super().__init__("varied")
+        self.trace, self.kind = trace, kind
+        qos = QoSProfile(history=HistoryPolicy.KEEP_ALL) if depth is None else QoSProfile(depth=depth)
+        self.sub = self.create_subscription(Int64, TOPIC, self.on_async if kind == "async" else self.on_number, qos)
+        if kind == "echo":
+            self.pub = self.create_publisher(Int64, TOPIC, 10)
+
+    def on_number(self, msg: Int64) -> None:
+        self.trace.append(("heard", self.get_name(), msg.data, asyncio.get_running_loop().time()))
+        if self.kind == "refuse" and msg.data % 3 == 0:
+            raise MessageRefused("a multiple of 3")
+        if self.kind == "crash" and msg.data % 7 == 3:
+            raise RuntimeError("3 mod 7")
+        if self.kind == "echo" and msg.data < 1000:
+            self.pub.publish(Int64(data=msg.data + 1000))
+            self.pub.publish(Int64(data=msg.data + 2000))
+
+    async def on_async(self, msg: Int64) -> None:
+        self.on_number(msg)
+        await asyncio.sleep(0.05)
+
+
+GRAPH_OPS = st.lists(
+    st.one_of(
+        st.tuples(st.just("sub"), st.sampled_from([1, 2, 3, None]),
+                  st.sampled_from(["plain", "plain", "refuse", "crash", "async", "echo"])),
+        st.tuples(st.just("pub"), st.sampled_from([0.0, 0.0, 0.08]), st.booleans()),  # lifespan, latched
+        st.tuples(st.just("publish"), st.integers(0, 3), st.sampled_from([1, 2, 3, 5, 12])),
+        st.tuples(st.just("settle"), st.integers(1, 3), st.none()),
+        st.tuples(st.just("sleep"), st.sampled_from([0.01, 0.05, 0.5]), st.none()),
+        st.tuples(st.just("unsub"), st.integers(0, 7), st.none()),
+        st.tuples(st.just("unpub"), st.integers(0, 3), st.none()),
+    ),
+    max_size=40,
+)
+
+
+def _graph_trace(ops: list[tuple[Any, Any, Any]]) -> list[tuple[Any, ...]]:
+    """What each subscription hears (and when, on the virtual clock), queued, dropped and refused after each op."""
+    trace: list[tuple[Any, ...]] = []
+
+    async def main() -> None:
+        async with Runtime(supervisor=SupervisorPolicy(intensity=1000, period=10.0, backoff=0.0)) as rt:
+            live = [rt.spawn(Varied, trace, 3, "plain", name=f"first{i}").sub for i in range(2)]
+            pubs = [rt.spawn(Source, name="source").pub, rt.spawn(Source, name="expiring", lifespan=0.08).pub]
+            for step, (op, x, y) in enumerate(ops):
+                if op == "sub":
+                    rt.spawn(Varied, trace, x, y, name=f"s{step}")
+                elif op == "pub":
+                    pubs.append(rt.spawn(Source, name=f"p{step}", lifespan=x, latched=y).pub)
+                elif op == "publish" and pubs:
+                    for i in range(y):
+                        pubs[x % len(pubs)].publish(Int64(data=step * 100 + i))
+                elif op == "settle":
+                    for _ in range(x):
+                        await asyncio.sleep(0)
+                elif op == "sleep":
+                    await asyncio.sleep(x)
+                elif op == "unsub" and live:
+                    live[x % len(live)].destroy()
+                elif op == "unpub" and pubs:
+                    pubs.pop(x % len(pubs)).destroy()
+                # The topic's subscriptions: a crashed node's successor holds its subscription now.
+                topic = rt.topics.topics.get(f"/{TOPIC}")
+                live = [] if topic is None else list(topic.subscriptions)
+                trace.append((step, [(s.node.fqn, s.queued, s.dropped, s.refusals and s.refusals.total) for s in live]))
+            await asyncio.sleep(2)
+
+    asyncio.Runner(loop_factory=VirtualTimeLoop).run(main())
+    return trace
+
+
+@settings(max_examples=150, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(GRAPH_OPS)
+def test_fan_out_delivers_exactly_what_per_message_delivery_does(ops):
+    batched = _graph_trace(ops)
+    refeed = Publisher._refeed
+
+    def per_message(pub: Publisher) -> None:
+        refeed(pub)
+        if isinstance(pub._pending, list):  # it would batch: it feeds each queue itself instead
+            pub._pending = None if len(pub._topic.publishers) == 1 else topics._SHARED  # type: ignore[union-attr]
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(Publisher, "_refeed", per_message)
+        assert _graph_trace(ops) == batched
