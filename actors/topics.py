@@ -585,9 +585,14 @@ class Subscription(Mailbox):
             rest = iter(batch)
         self._round = rest
         callback = self._call_unexpired if self._expiring else self.callback
-        for msg in rest:
+        while True:
+            # The try holds the whole loop, so that a message costs no step of its own for it;
+            # after a refusal the loop goes on where it stopped (rest is an iterator).
             try:
-                result = callback(msg)
+                for msg in rest:
+                    result = callback(msg)
+                    if result is not None and isawaitable(result):
+                        return self._run_async(result, msg)
             except MessageRefused as refusal:
                 self._refuse(msg, refusal)
                 continue
@@ -595,8 +600,7 @@ class Subscription(Mailbox):
                 self._end_round()
                 self._round_done()
                 raise CallbackFailed(self, msg, exc) from exc
-            if result is not None and isawaitable(result):
-                return self._run_async(result, msg)
+            break
         self._round = None
         self._limit = self._depth
         # Mailbox._round_done, inlined: one call less per wake-up.
