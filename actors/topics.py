@@ -560,14 +560,11 @@ class Subscription(Mailbox):
         return self.callback(item)
 
     def _run(self) -> Awaitable[None] | None:
-        topic = self._topic
-        if topic is not None and topic.dirty is not None:
-            topic.dirty._close()  # this round reads the open batch: nothing more joins it
         # Only what is queued now: messages published meanwhile wait for the next round.  The
         # round iterates its messages (cheaper than popping each) and what arrives meanwhile
         # queues behind them, with the round's rest counted against the depth (see _evict).
         batch = self._batch
-        if batch is None:
+        if batch is None:  # an open batch, if any, is not for this subscription (Publisher._open)
             batch = self._queue
             if len(batch) == 1:  # type: ignore[arg-type]
                 rest = iter((batch.popleft(),))  # type: ignore[union-attr]
@@ -575,10 +572,13 @@ class Subscription(Mailbox):
                 self._queue = deque()
                 rest = iter(batch)  # type: ignore[arg-type]
                 self._limit = 0
-        elif self._queue or len(batch) > self._depth:
-            self._unbatch()  # rare: something queued to take first, or drops to count
-            return self._run()  # the round of the queue
         else:
+            dirty = self._topic.dirty  # type: ignore[union-attr]
+            if dirty is not None:
+                dirty._close()  # this round may read the open batch: nothing more joins it
+            if self._queue or len(batch) > self._depth:
+                self._unbatch()  # rare: something queued to take first, or drops to count
+                return self._run()  # the round of the queue
             # The fan-out path: the batch's own list, shared with the publisher's other
             # subscriptions (_limit is 0 already: see Publisher._open).
             self._batch = None
