@@ -172,8 +172,8 @@ class Publisher:
             deque(maxlen=qos.depth) if qos.durability == DurabilityPolicy.TRANSIENT_LOCAL else None
         )
         self._topic: Topic | None = None  # set by the topic table
-        # A batch (see _open): its messages, in publish order, not yet in the subscriptions'
-        # queues; None while this publisher delivers to each queue directly (see _refeed).
+        # The open batch (see _open): its messages, in publish order, in a list that its
+        # subscriptions hold; None while this publisher delivers to each queue directly (see _refeed).
         self._pending: list[Any] | None = None
         self._bound = 0  # the batch is closed when it holds this many: the deepest feed's depth
         self._only: Subscription | None = None  # see _refeed
@@ -586,8 +586,8 @@ class Subscription(Mailbox):
         self._round = rest
         callback = self._call_unexpired if self._expiring else self.callback
         while True:
-            # The try holds the whole loop, so that a message costs no step of its own for it;
-            # after a refusal the loop goes on where it stopped (rest is an iterator).
+            # The try holds the whole loop: a message costs no try step and no jump of its own.
+            # After a refusal the loop goes on where it stopped (rest is an iterator).
             try:
                 for msg in rest:
                     result = callback(msg)
