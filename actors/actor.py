@@ -99,7 +99,7 @@ class Scheduler:
         self._ready: list[Actor] = []
         self._armed = False
         # The context the rounds run in.  A loop callback that runs rounds itself (run_now,
-        # run_one) is scheduled in it, so that they run without a Context.run of their own:
+        # Actor.run_one) is scheduled in it, so that they run without a Context.run of their own:
         # that call and the C-level frame it starts cost 1.3k instructions an instant.
         self.context = contextvars.copy_context()
 
@@ -118,21 +118,6 @@ class Scheduler:
         """Run the rounds due soon now, from a loop callback in :attr:`context` (a timer's: saves an iteration)."""
         if self._armed:
             self._flush()
-
-    def run_one(self, actor: Actor, entity: Entity) -> None:
-        """Schedule ``entity`` on ``actor`` and run the rounds due now, as hold, schedule and run_now would.
-
-        For a loop callback in :attr:`context` that wakes a single entity (a
-        timer due alone): when nothing else waits for a round and the actor is
-        idle, its round runs at once, without the ready list and the four calls
-        around it.
-        """
-        if self._armed or actor._queued or actor._scheduler is not self:
-            self.hold()
-            actor.schedule(entity)
-            self.run_now()
-            return
-        actor._round_of(entity)
 
     def _flush(self) -> None:
         self._armed = False
@@ -241,14 +226,25 @@ class Actor:
         self.current = None
         self._next()
 
-    def _round_of(self, entity: Entity) -> None:
-        # _round for one entity, given by Scheduler.run_one to an idle actor: no ready list to swap.
-        # Its steps repeat _round's on purpose: a simulation's instants mostly run one timer, and a
-        # frame shared by both would cost what this saves (0.95k of 30.5k instructions an instant).
+    def run_one(self, entity: Entity, scheduler: Scheduler, now: float) -> None:
+        """Schedule ``entity`` and run the rounds due now, as ``scheduler``'s hold, schedule and run_now would.
+
+        For a loop callback in ``scheduler``'s context that wakes a single
+        entity (a timer due alone) at loop time ``now``: when nothing else
+        waits for a round and this actor is idle, its round of that entity
+        runs at once, without the ready list and the calls around it.
+        """
+        if scheduler._armed or self._queued or self._scheduler is not scheduler:
+            scheduler.hold()
+            self.schedule(entity)
+            scheduler.run_now()
+            return
+        # _round's steps for one entity, repeated on purpose: a simulation's instants mostly run one
+        # timer, and each Python call saved here is saved on every physics step.
         if not self._running:
             return
         self._queued = True
-        self.busy_since = self._loop.time()
+        self.busy_since = now
         self.current = entity
         try:
             pending = entity._run()
@@ -260,8 +256,12 @@ class Actor:
             self.task = self._loop.create_task(self._finish(pending))
             return
         self.current = None
-        if self._running:
-            self._next()
+        if not self._running:
+            return
+        if self._ready:  # scheduled during its callback
+            scheduler.wake(self)
+        else:
+            self._queued = False
 
     def _next(self) -> None:
         if self._ready:

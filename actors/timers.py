@@ -139,7 +139,7 @@ class Deadlines:
     def __init__(self, loop: asyncio.AbstractEventLoop, scheduler: Scheduler | None = None) -> None:
         self._loop = loop
         self._scheduler = scheduler
-        # The loop timer runs in the rounds' context: _fire runs them itself (Scheduler.run_one, run_now).
+        # The loop timer runs in the rounds' context: _fire runs them itself (Actor.run_one, Scheduler.run_now).
         self._context = scheduler.context if scheduler is not None else None
         self._heap: list[_Entry] = []
         self._lanes: dict[float, _Lane] = {}
@@ -264,7 +264,7 @@ class Deadlines:
     def _fire(self) -> None:
         # Everything due by now, and at least what the loop timer was set for (the loop
         # may run a timer a clock-resolution early).
-        limit = self._loop.time()
+        now = limit = self._loop.time()
         if limit < self._armed:  # not max(): it parses its arguments as keywords, ten times the cost
             limit = self._armed
         self._spent, self._handle = self._handle, None
@@ -289,7 +289,7 @@ class Deadlines:
                     else:
                         self._stale -= 1
                 if scheduler is not None and len(due) == 1:
-                    scheduler.run_one(due[0].node.actor, due[0])  # most instants of a simulation
+                    due[0].node.actor.run_one(due[0], scheduler, now)  # most instants of a simulation
                 else:
                     if scheduler is not None:
                         scheduler.hold()  # the rounds run below, not from a loop callback of their own
@@ -306,7 +306,7 @@ class Deadlines:
                 if not (skips and heap and self._skip_to(heap[0][0])):  # type: ignore[misc]
                     break
                 skips -= 1
-                limit = heap[0][0]
+                now = limit = heap[0][0]
         finally:
             self._firing = False
             self._prune()  # after a callback's error, the head may not be live yet

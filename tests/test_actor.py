@@ -151,15 +151,16 @@ async def test_run_one_runs_an_idle_actors_round_at_once_and_otherwise_waits_its
     in_context = scheduler.context.run  # as a loop callback calls run_one: in the rounds' context
     notes: list[str] = []
     # Nothing else waits: the round runs now, in the caller's loop callback, and the actor is idle after it.
-    in_context(scheduler.run_one, first, Noting("alone", notes))
-    assert notes == ["alone"] and not first._queued
+    # Busy since the time the caller gives (the loop's now: the caller read it, and nothing ran since).
+    in_context(first.run_one, Noting("alone", notes), scheduler, 1.5)
+    assert notes == ["alone"] and not first._queued and first.busy_since == 1.5
     # Another actor's round is already due (a wake-up from a publish): it runs first, then this one.
     first.schedule(Noting("woken earlier", notes))
-    in_context(scheduler.run_one, second, Noting("timer", notes))
+    in_context(second.run_one, Noting("timer", notes), scheduler, loop.time())
     assert notes == ["alone", "woken earlier", "timer"]
     # An actor with work queued (its round is due): the entity waits behind that work.
     first.schedule(Noting("queued", notes))
-    in_context(scheduler.run_one, first, Noting("behind it", notes))
+    in_context(first.run_one, Noting("behind it", notes), scheduler, loop.time())
     assert notes[3:] == ["queued", "behind it"]
     await asyncio.sleep(0)  # the loop callback those wake-ups asked for finds nothing left to run
     assert notes[5:] == []
@@ -168,7 +169,7 @@ async def test_run_one_runs_an_idle_actors_round_at_once_and_otherwise_waits_its
     first.schedule(Awaiting(notes, release))
     await asyncio.sleep(0)
     assert first.awaiting and notes[5:] == ["async starts"]
-    in_context(scheduler.run_one, first, Noting("during", notes))
+    in_context(first.run_one, Noting("during", notes), scheduler, loop.time())
     assert notes[5:] == ["async starts"]
     release.set_result(None)
     for _ in range(3):
@@ -185,9 +186,9 @@ async def test_run_one_on_an_idle_actor_hands_an_async_callback_to_a_task_and_a_
     in_context = scheduler.context.run  # as a loop callback calls run_one: in the rounds' context
     notes: list[str] = []
     release = loop.create_future()
-    in_context(scheduler.run_one, actor, Awaiting(notes, release))
+    in_context(actor.run_one, Awaiting(notes, release), scheduler, loop.time())
     assert actor.awaiting and actor._queued and notes == ["async starts"]
-    in_context(scheduler.run_one, actor, Noting("while it awaits", notes))  # waits behind the async callback
+    in_context(actor.run_one, Noting("while it awaits", notes), scheduler, loop.time())  # waits behind the async callback
     release.set_result(None)
     for _ in range(3):
         await asyncio.sleep(0)
@@ -200,7 +201,7 @@ async def test_run_one_on_an_idle_actor_hands_an_async_callback_to_a_task_and_a_
         def _run(self):
             raise CallbackFailed(self, None, RuntimeError("no"))
 
-    in_context(scheduler.run_one, actor, Failing())
+    in_context(actor.run_one, Failing(), scheduler, loop.time())
     assert [type(e.error) for e in exits] == [RuntimeError] and actor.current is None  # type: ignore[union-attr]
-    in_context(scheduler.run_one, actor, Noting("after the end", notes))
+    in_context(actor.run_one, Noting("after the end", notes), scheduler, loop.time())
     assert notes[-1] == "while it awaits"  # a stopped actor runs nothing more

@@ -396,7 +396,7 @@ async def test_ticks_run_in_the_runtimes_one_context_alone_or_due_together():
         rt.spawn(Reader)
         await anyio.sleep(0.25)
         assert var.get() == "unset"
-    # At 0.1 the tick is due alone (Scheduler.run_one); at 0.2 after the tock (armed before its re-arm), in one
+    # At 0.1 the tick is due alone (Actor.run_one); at 0.2 after the tock (armed before its re-arm), in one
     # batch of rounds.
     assert seen == [("tick", "unset"), ("message", "set at 1"), ("tock", "set at 1"), ("tick", "set at 1"),
                     ("message", "set at 2")]
