@@ -268,7 +268,8 @@ class Deadlines:
         if limit < self._armed:  # not max(): it parses its arguments as keywords, ten times the cost
             limit = self._armed
         self._spent, self._handle = self._handle, None
-        skips = _SKIPS if self._skip_to is not None else 0
+        skip_to = self._skip_to  # a local: as an attribute, a bound method is looked up unspecialised
+        skips = _SKIPS if skip_to is not None else 0
         scheduler = self._scheduler
         # The callbacks re-arm their timers: one loop timer for all of them afterwards,
         # rather than one each (asyncio keeps a cancelled one in its heap until it is due).
@@ -303,7 +304,7 @@ class Deadlines:
                 # On virtual time, the next instant at once when the loop would do nothing
                 # but jump there and call this again: a physics step's instant is mostly
                 # the loop's iteration around it.
-                if not (skips and heap and self._skip_to(heap[0][0])):  # type: ignore[misc]
+                if not (skips and heap and skip_to(heap[0][0])):  # type: ignore[misc]
                     break
                 skips -= 1
                 now = limit = heap[0][0]
