@@ -45,6 +45,9 @@ from actors.clock import Clock, ClockType, Time, VirtualTimeLoop
 __all__ = ["Timer", "TimerInfo", "Deadlines"]
 
 _NS = 1_000_000_000
+# _NS as a float, to multiply a float by: the same product (10**9 is exact as a float), but
+# float * float is specialised by CPython and float * int is not, on every timer's re-arming.
+_NS_FLOAT = 1e9
 
 
 class TimerInfo:
@@ -173,7 +176,7 @@ class Deadlines:
         # On the nanosecond grid: timers due at one instant get the same float and fire together,
         # in the order armed (15 * 0.01 is 0.15 but 3 * 0.05 is 0.15000000000000002, which put a
         # 20 Hz timer's third tick a hair after a 100 Hz timer's fifteenth, in an iteration of its own).
-        timer._when = when = round(when * _NS) / _NS
+        timer._when = when = round(when * _NS_FLOAT) / _NS
         lane = timer._lane
         if lane is None:
             heappush(self._heap, (when, next(self._order), timer, None))
@@ -438,7 +441,7 @@ class Timer:
     @property
     def next_deadline(self) -> float:
         """The loop time of the next tick, on the nanosecond grid (as :meth:`Deadlines.add` sets it)."""
-        return round((self._start + self._k * self.period) * _NS) / _NS
+        return round((self._start + self._k * self.period) * _NS_FLOAT) / _NS
 
     def time_until_next_call(self) -> int | None:
         """Nanoseconds until the next tick (negative when it is overdue), or None when canceled."""
