@@ -122,6 +122,23 @@ async def test_odometry_is_relative_to_the_start_pose():
     assert (x, y) == (pytest.approx(1.0, abs=1e-6), pytest.approx(2.0 + 0.96, abs=0.02))
 
 
+async def test_odometry_reports_its_twist_as_floats_even_from_a_model_with_whole_number_limits(monkeypatch):
+    # The node's odometry publisher checks no field (Publisher.trust): the node itself makes the
+    # twist floats, which a model's int limits would otherwise leave ints (the clipped command).
+    from world.drive import MODELS, RobotModel
+
+    monkeypatch.setitem(MODELS, "whole", RobotModel(name="whole", max_linear=1, max_angular=2))
+    async with Runtime() as rt:
+        rt.spawn(World, params={"world": "empty"})
+        rt.spawn(TurtleBot, params={"model": "whole"})
+        observer = rt.spawn(Observer)
+        rt.spawn(ConstantControl, params={"v": 5.0, "omega": 5.0})
+        await anyio.sleep(1.02)
+    twist = observer.odom[-1].twist.twist
+    assert (twist.linear.x, twist.angular.z) == (1.0, 2.0)
+    assert type(twist.linear.x) is float and type(twist.angular.z) is float
+
+
 async def test_odometry_and_ground_truth_turn_with_the_robot_message_by_message():
     class Headings(Node):
         def __init__(self) -> None:

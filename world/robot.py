@@ -121,11 +121,11 @@ class TurtleBot(Node):
         self.scan_pub = self.create_publisher(LaserScan, "scan", 10)
         self.pose_pub = self.create_publisher(PoseStamped, "sim/pose", 10)
         # What this node fills is valid by construction: stamps from the clock, frame names,
-        # poses from the body's floats and math, covariances left at their zeros, the World's
-        # float64 ranges within range_max or infinite (finish_ranges).  Still checked: the twist
-        # (a model's limits may be ints, and so the clipped command) and the scan's constants
-        # (from the model's LidarSpec, whatever it holds).
-        self.odom_pub.trust("header", "child_frame_id", "pose", "twist.covariance")
+        # poses from the body's floats and math, the twist as floats (publish_odometry converts
+        # it: a model's limits may be ints, and so the clipped command), covariances left at
+        # their zeros, the World's float64 ranges within range_max or infinite (finish_ranges).
+        # Still checked: the scan's constants (from the model's LidarSpec, whatever it holds).
+        self.odom_pub.trust()
         self.pose_pub.trust()
         self.scan_pub.trust("header", "ranges", "intensities")
         # tf2's broadcasters' topics and QoS: /tf keeps 100, /tf_static is latched.
@@ -180,7 +180,7 @@ class TurtleBot(Node):
         position.x, position.y = c * dx + s * dy, -s * dx + c * dy
         _set_yaw(orientation, math.remainder(theta - theta0, math.tau))
         twist = msg.twist.twist
-        twist.linear.x, twist.angular.z = v, w
+        twist.linear.x, twist.angular.z = float(v), float(w)  # trusted (see __init__): made floats here
         self.odom_pub.publish(msg)
         if self.tf_pub.get_subscription_count():  # nobody listens: no transform to fill
             tf = self._tf.transforms[0]
