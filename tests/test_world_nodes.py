@@ -122,12 +122,15 @@ async def test_odometry_is_relative_to_the_start_pose():
     assert (x, y) == (pytest.approx(1.0, abs=1e-6), pytest.approx(2.0 + 0.96, abs=0.02))
 
 
-async def test_odometry_reports_its_twist_as_floats_even_from_a_model_with_whole_number_limits(monkeypatch):
-    # The node's odometry publisher checks no field (Publisher.trust): the node itself makes the
-    # twist floats, which a model's int limits would otherwise leave ints (the clipped command).
+async def test_odometry_and_scan_carry_floats_even_from_a_model_with_whole_number_limits(monkeypatch):
+    # The node's odometry and scan publishers check no field (Publisher.trust): the node itself
+    # makes floats of the twist, which a model's int limits would otherwise leave ints (the
+    # clipped command), and of the scan's range limits.
     from world.drive import MODELS, RobotModel
+    from world.lidar import LidarSpec
 
-    monkeypatch.setitem(MODELS, "whole", RobotModel(name="whole", max_linear=1, max_angular=2))
+    whole = RobotModel(name="whole", max_linear=1, max_angular=2, lidar=LidarSpec(range_min=0, range_max=4))
+    monkeypatch.setitem(MODELS, "whole", whole)
     async with Runtime() as rt:
         rt.spawn(World, params={"world": "empty"})
         rt.spawn(TurtleBot, params={"model": "whole"})
@@ -137,6 +140,9 @@ async def test_odometry_reports_its_twist_as_floats_even_from_a_model_with_whole
     twist = observer.odom[-1].twist.twist
     assert (twist.linear.x, twist.angular.z) == (1.0, 2.0)
     assert type(twist.linear.x) is float and type(twist.angular.z) is float
+    scan = observer.scans[-1]
+    assert (scan.range_min, scan.range_max) == (0.0, 4.0)
+    assert type(scan.range_min) is float and type(scan.range_max) is float
 
 
 async def test_odometry_and_ground_truth_turn_with_the_robot_message_by_message():

@@ -114,8 +114,8 @@ class TurtleBot(Node):
             angle_max=2 * math.pi * (lidar.beams - 1) / lidar.beams,
             angle_increment=2 * math.pi / lidar.beams,
             scan_time=SCAN_PERIOD,
-            range_min=lidar.range_min,
-            range_max=lidar.range_max,
+            range_min=float(lidar.range_min),  # a model's limits may be ints
+            range_max=float(lidar.range_max),
         )
         self.odom_pub = self.create_publisher(Odometry, "odom", 10)
         self.scan_pub = self.create_publisher(LaserScan, "scan", 10)
@@ -123,11 +123,11 @@ class TurtleBot(Node):
         # What this node fills is valid by construction: stamps from the clock, frame names,
         # poses from the body's floats and math, the twist as floats (publish_odometry converts
         # it: a model's limits may be ints, and so the clipped command), covariances left at
-        # their zeros, the World's float64 ranges within range_max or infinite (finish_ranges).
-        # Still checked: the scan's constants (from the model's LidarSpec, whatever it holds).
+        # their zeros, the scan's constants made floats above, the World's float64 ranges
+        # within range_max or infinite (finish_ranges).
         self.odom_pub.trust()
         self.pose_pub.trust()
-        self.scan_pub.trust("header", "ranges", "intensities")
+        self.scan_pub.trust()
         # tf2's broadcasters' topics and QoS: /tf keeps 100, /tf_static is latched.
         self.tf_pub = self.create_publisher(TFMessage, "/tf", 100)
         self.tf_static_pub = self.create_publisher(
