@@ -139,11 +139,11 @@ class Deadlines:
     __slots__ = ("_loop", "_scheduler", "_context", "_heap", "_lanes", "_handle", "_spent", "_call_again", "_skip_to",
                  "_armed", "_order", "_stale", "_firing")
 
-    def __init__(self, loop: asyncio.AbstractEventLoop, scheduler: Scheduler | None = None) -> None:
+    def __init__(self, loop: asyncio.AbstractEventLoop, scheduler: Scheduler) -> None:
         self._loop = loop
         self._scheduler = scheduler
         # The loop timer runs in the rounds' context: _fire runs them itself (Actor.run_one, Scheduler.run_now).
-        self._context = scheduler.context if scheduler is not None else None
+        self._context = scheduler.context
         self._heap: list[_Entry] = []
         self._lanes: dict[float, _Lane] = {}
         self._handle: asyncio.TimerHandle | None = None
@@ -292,17 +292,15 @@ class Deadlines:
                         due.append(timer)
                     else:
                         self._stale -= 1
-                if scheduler is not None and len(due) == 1:
+                if len(due) == 1:
                     due[0].node.actor.run_one(due[0], scheduler, now)  # most instants of a simulation
                 else:
-                    if scheduler is not None:
-                        scheduler.hold()  # the rounds run below, not from a loop callback of their own
+                    scheduler.hold()  # the rounds run below, not from a loop callback of their own
                     for timer in due:
                         timer.node.actor.schedule(timer)
-                    if scheduler is not None:
-                        scheduler.run_now()
+                    scheduler.run_now()
                 heap = self._heap  # discard() may have rebuilt it
-                if heap and heap[0][2]._when != heap[0][0]:
+                if self._stale and heap and heap[0][2]._when != heap[0][0]:  # no stale entry: the head is live
                     self._prune()
                 # On virtual time, the next instant at once when the loop would do nothing
                 # but jump there and call this again: a physics step's instant is mostly
