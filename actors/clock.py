@@ -707,7 +707,7 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
                 self._timer_cancelled_count -= 1
                 heappop(scheduled)._scheduled = False
 
-    def skip_to(self, when: float) -> bool:
+    def skip_to(self, when: float, again: bool = False) -> bool:
         """From a callback of this loop: move virtual time on to ``when`` now if the loop would do only that next.
 
         For a callback that would set its loop timer for ``when`` and return
@@ -719,14 +719,21 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
         descriptor but the loop's self-pipe nor any signal is watched (their
         poll is the loop's to make), no thread is at work, and the loop is
         neither stopping nor in debug mode.  False otherwise, time unmoved.
+
+        ``again``: the caller's previous call, from this same callback, returned
+        True, and only synchronous code has run since.  Then anyio's worker
+        threads are not looked for again: only a task starts one, and a task
+        that could have run since would have been ready, which stops the jump.
         """
         if self._ready or self._stopping or self._debug or not when > self._now:
             return False
         scheduled = self._scheduled
         if scheduled and scheduled[0]._when < when + self._clock_resolution:
             return False
-        selector = self._selector
-        if selector._peek is None or len(selector._fd_to_key) > 1 or self._signal_handlers or self.threads_busy():
+        # What a callback can start without a task: a watched descriptor, a signal handler, an executor job.
+        if len(self._selector._fd_to_key) > 1 or self._signal_handlers or self._threads.jobs:
+            return False
+        if not again and (self._selector._peek is None or self.threads_busy()):
             return False
         self._now = when
         return True

@@ -305,7 +305,7 @@ class Deadlines:
                 # On virtual time, the next instant at once when the loop would do nothing
                 # but jump there and call this again: a physics step's instant is mostly
                 # the loop's iteration around it.
-                if not (skips and heap and skip_to(heap[0][0])):  # type: ignore[misc]
+                if not (skips and heap and skip_to(heap[0][0], skips < _SKIPS)):  # type: ignore[misc]
                     break
                 skips -= 1
                 now = limit = heap[0][0]

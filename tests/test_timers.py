@@ -557,9 +557,9 @@ def test_instants_skipped_to_on_virtual_time_run_as_the_loops_own_iterations_wou
             nonlocal skipped
             loop = asyncio.get_running_loop()
 
-            def skip_to(when: float) -> bool:
+            def skip_to(when: float, again: bool) -> bool:
                 nonlocal skipped
-                moved = loop.skip_to(when)
+                moved = loop.skip_to(when, again)
                 skipped += moved
                 return moved
 
