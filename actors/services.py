@@ -108,7 +108,11 @@ class Service(Mailbox):
         assert queue is not None  # scheduled only by _push or _adopt, with calls queued
         handler, snapshot, adopt = self.handler, self._snapshot, self._adopt_response
         response_type = self.srv_type.Response
-        for left in range(len(queue) - 1, -1, -1):
+        # The calls queued when the round began, up to the last of them (each call is a tuple of
+        # its own): an identity test per call, no counter, and no range made for a lone call.
+        last = queue[-1]
+        call = None
+        while call is not last:
             call = queue.popleft()
             request, future = call
             if future.done():
@@ -118,7 +122,7 @@ class Service(Mailbox):
                 response = handler(request, response_type())
                 if type(response) is not response_type:
                     if isawaitable(response):
-                        return self._run_async(response, call, left)
+                        return self._run_async(response, call, last)
                     self._wrong(response)
                 response = (adopt if getrefcount(response) == ALONE else snapshot)(response)
             except Exception as exc:
@@ -132,8 +136,8 @@ class Service(Mailbox):
         self._round_done()
         return None
 
-    async def _run_async(self, pending: Awaitable[Any], call: _Call, left: int) -> None:
-        # An async handler: await its response, then serve the ``left`` calls still due this round.
+    async def _run_async(self, pending: Awaitable[Any], call: _Call, last: _Call) -> None:
+        # An async handler: await its response, then serve the calls still due this round, up to ``last``.
         try:
             self._answer(call, await pending)
         except Exception as exc:
@@ -141,7 +145,7 @@ class Service(Mailbox):
         response_type = self.srv_type.Response
         queue = self._queue
         assert queue is not None
-        for _ in range(left):
+        while call is not last:
             call = queue.popleft()
             request, future = call
             if future.done():

@@ -513,3 +513,36 @@ def test_on_the_wall_clock_answered_calls_are_swept_without_being_counted_and_a_
             assert (await caller.cli.call(AddTwoInts.Request(a=2, b=3), timeout=60)).sum == 5
 
     asyncio.run(main())
+
+
+async def test_a_round_of_an_async_handler_serves_the_calls_queued_when_it_began_and_later_ones_next_round():
+    # Calls that come while the handler awaits wait for the next round, behind a message that
+    # came meanwhile: the round stops at the last call queued when it began.
+    log: list[str] = []
+    gate = asyncio.Event()
+
+    class Slow(Node):
+        def __init__(self) -> None:
+            super().__init__("slow")
+            self.create_service(AddTwoInts, "add_two_ints", self.add)
+            self.create_subscription(Int64, "/slow_note", lambda msg: log.append(f"note {msg.data}"), 10)
+
+        async def add(self, request: AddTwoInts.Request, response: AddTwoInts.Response) -> AddTwoInts.Response:
+            log.append(f"call {request.a}")
+            if request.a == 0:
+                await gate.wait()
+            response.sum = request.a + request.b
+            return response
+
+    async with Runtime() as rt:
+        rt.spawn(Slow)
+        caller = rt.spawn(Caller)
+        note = caller.create_publisher(Int64, "/slow_note", 10)
+        early = [caller.cli.call_async(AddTwoInts.Request(a=a, b=0)) for a in range(3)]
+        while log != ["call 0"]:
+            await asyncio.sleep(0)
+        late = [caller.cli.call_async(AddTwoInts.Request(a=a, b=0)) for a in (3, 4)]
+        note.publish(Int64(data=7))
+        gate.set()
+        assert [r.sum for r in await asyncio.gather(*early, *late)] == [0, 1, 2, 3, 4]
+        assert log == ["call 0", "call 1", "call 2", "note 7", "call 3", "call 4"]
