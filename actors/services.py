@@ -68,7 +68,7 @@ def _check_srv_type(srv_type: Any, where: str) -> None:
 class Service(Mailbox):
     """A service server.  Create with ``Node.create_service``."""
 
-    __slots__ = ("node", "service_name", "srv_type", "handler", "handled", "_snapshot", "_adopt_response")
+    __slots__ = ("node", "service_name", "srv_type", "handler", "handled", "_response_type", "_snapshot", "_adopt_response")
     remote = False  # a transport's stand-in for a server elsewhere, which a local server replaces
 
     def __init__(self, node: Owner, service_name: str, srv_type: type, handler: Callable[..., Any]) -> None:
@@ -80,6 +80,9 @@ class Service(Mailbox):
         self.srv_type = srv_type
         self.handler = handler
         self.handled = 0
+        # Read per round from a slot: ``srv_type.Response``, an attribute of a class, is a lookup
+        # CPython 3.11 does not specialise.
+        self._response_type = srv_type.Response
         self._snapshot = snapshotter(srv_type.Response)
         # A response nobody else holds (the handler filled the one it was given, or made
         # one, and kept no reference) is checked in place: the caller gets it, not a copy.
@@ -107,7 +110,7 @@ class Service(Mailbox):
         queue = self._queue
         assert queue is not None  # scheduled only by _push or _adopt, with calls queued
         handler, snapshot, adopt = self.handler, self._snapshot, self._adopt_response
-        response_type = self.srv_type.Response
+        response_type = self._response_type
         # The calls queued when the round began, up to the last of them (each call is a tuple of
         # its own): an identity test per call, no counter, and no range made for a lone call.
         last = queue[-1]
@@ -142,7 +145,7 @@ class Service(Mailbox):
             self._answer(call, await pending)
         except Exception as exc:
             self._fail(call, exc)
-        response_type = self.srv_type.Response
+        response_type = self._response_type
         queue = self._queue
         assert queue is not None
         while call is not last:
@@ -163,7 +166,7 @@ class Service(Mailbox):
         raise TypeError(f"handler returned {type_name(type(response))}, expected {type_name(self.srv_type.Response)}")
 
     def _answer(self, call: _Call, response: Any) -> None:
-        if type(response) is not self.srv_type.Response:
+        if type(response) is not self._response_type:
             self._wrong(response)
         response = self._snapshot(response)  # copied: the frame that awaited it may hold it too
         self.handled += 1
