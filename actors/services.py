@@ -136,7 +136,11 @@ class Service(Mailbox):
                 future.set_result(response)
             except InvalidStateError:  # the handler cancelled its caller's task
                 pass
-        self._round_done()
+        # Mailbox._round_done, inlined (as Subscription._run does): one call less per round.
+        if queue:
+            self._actor.schedule(self)
+        else:
+            self._scheduled = False
         return None
 
     async def _run_async(self, pending: Awaitable[Any], call: _Call, last: _Call) -> None:
