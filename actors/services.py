@@ -337,7 +337,8 @@ class CallTimeouts:
 
     def add(self, future: asyncio.Future[Any], client: Client, timeout: float) -> None:
         """Fail ``future`` with TimeoutError ``timeout`` seconds from now unless it is done by then."""
-        when = self._time() + timeout
+        clock = self._time  # a local: CPython 3.11 leaves a method call on a slot unspecialised
+        when = clock() + timeout
         lane = self._lanes.get(timeout)
         if lane is None:
             lane = self._lanes[timeout] = _Lane()
