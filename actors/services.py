@@ -113,7 +113,8 @@ class Service(Mailbox):
         response_type = self._response_type
         # The calls queued when the round began, up to the last of them (each call is a tuple of
         # its own): an identity test per call, no counter, and no range made for a lone call.
-        last = queue[-1]
+        # None when there is none: destroying the server empties its queue, not its actor's line.
+        last = queue[-1] if queue else None
         call = None
         while call is not last:
             call = queue.popleft()

@@ -546,3 +546,28 @@ async def test_a_round_of_an_async_handler_serves_the_calls_queued_when_it_began
         gate.set()
         assert [r.sum for r in await asyncio.gather(*early, *late)] == [0, 1, 2, 3, 4]
         assert log == ["call 0", "call 1", "call 2", "note 7", "call 3", "call 4"]
+
+
+async def test_a_server_destroyed_with_calls_queued_before_its_round_fails_them_and_its_node_runs_on():
+    # The round the server was scheduled for still comes, to an emptied queue.
+    class Quitter(Node):
+        def __init__(self) -> None:
+            super().__init__("quitter")
+            self.create_subscription(Int64, "/quitter_stop", self.stop, 10)  # runs first in the round
+            self.srv = self.create_service(AddTwoInts, "add_two_ints", lambda request, response: response)
+
+        def stop(self, msg: Int64) -> None:
+            self.destroy_service(self.srv)
+
+    async with Runtime() as rt:
+        rt.spawn(Quitter)
+        caller = rt.spawn(Caller)
+        stop = caller.create_publisher(Int64, "/quitter_stop", 10)
+        await caller.cli.call(AddTwoInts.Request(a=1, b=1), timeout=1)
+        stop.publish(Int64(data=1))
+        futures = [caller.cli.call_async(AddTwoInts.Request(a=a, b=0)) for a in range(2)]
+        for future in futures:
+            with pytest.raises(ServiceError, match="was destroyed"):
+                await future
+        await asyncio.sleep(0)
+        assert rt.graph.nodes()[0].crashes == 0
