@@ -42,9 +42,10 @@ from __future__ import annotations
 
 import asyncio
 import contextvars
-import time
 from collections.abc import Awaitable, Callable
 from typing import Any, Protocol
+
+from actors.clock import loop_clock
 
 __all__ = ["Actor", "Scheduler", "Entity", "Owner", "CallbackFailed", "Mailbox", "OneShot"]
 
@@ -99,9 +100,7 @@ class Scheduler:
         self._loop = loop
         self._ready: list[Actor] = []
         self._armed = False
-        # The clock of a round's busy_since: asyncio's own loops tell time with time.monotonic,
-        # which costs a Python frame less than loop.time().  Other loops keep their own.
-        self._time = time.monotonic if type(loop).time is asyncio.BaseEventLoop.time else loop.time
+        self._time = loop_clock(loop)  # a round's busy_since
         self._flush_soon = self._flush  # one bound method, not a new one per wake
         # The context the rounds run in.  A loop callback that runs rounds itself (run_now,
         # Actor.run_one) is scheduled in it, so that they run without a Context.run of their own:

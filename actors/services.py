@@ -30,7 +30,6 @@ mailbox — so awaiting a call from inside a callback cannot deadlock.
 from __future__ import annotations
 
 import asyncio
-import time
 from asyncio import InvalidStateError
 from collections import deque
 from collections.abc import Awaitable, Callable, Iterator, Mapping
@@ -41,7 +40,7 @@ from sys import getrefcount
 from typing import Any, Protocol
 
 from actors.actor import Mailbox, Owner
-from actors.clock import VirtualTimeLoop
+from actors.clock import VirtualTimeLoop, loop_clock
 from actors.errors import ServiceError
 from actors.snapshot import ALONE, adopter, snapshotter
 from actors.topics import type_name
@@ -328,9 +327,7 @@ class CallTimeouts:
 
     def __init__(self, loop: asyncio.AbstractEventLoop) -> None:
         self._loop = loop
-        # asyncio's own loops tell time with time.monotonic: called directly, it costs half
-        # of loop.time(), a Python method.  Other loops (virtual time, uvloop) keep their own.
-        self._time = time.monotonic if type(loop).time is asyncio.BaseEventLoop.time else loop.time
+        self._time = loop_clock(loop)
         self._lanes: dict[float, _Lane] = {}  # by timeout
         self._heads: list[tuple[float, float]] = []  # (a lane's first deadline or earlier, its timeout), a heap
         self._handle: asyncio.TimerHandle | None = None
