@@ -136,8 +136,8 @@ class Deadlines:
     fire in the order they were armed.
     """
 
-    __slots__ = ("_loop", "_scheduler", "_context", "_heap", "_lanes", "_handle", "_spent", "_call_again", "_skip_to",
-                 "_armed", "_order", "_stale", "_firing")
+    __slots__ = ("_loop", "_scheduler", "_context", "_heap", "_lanes", "_periods", "_handle", "_spent", "_call_again",
+                 "_skip_to", "_armed", "_order", "_stale", "_firing")
 
     def __init__(self, loop: asyncio.AbstractEventLoop, scheduler: Scheduler) -> None:
         self._loop = loop
@@ -146,6 +146,7 @@ class Deadlines:
         self._context = scheduler.context
         self._heap: list[_Entry] = []
         self._lanes: dict[float, _Lane] = {}
+        self._periods: set[float] = set()  # the periods lane() was asked for, up to _MAX_LANES
         self._handle: asyncio.TimerHandle | None = None
         # The loop timer that ran _fire, set again for the next deadline where the loop can
         # (virtual time: one loop timer per instant, and a new handle cost as much as the rest of _arm).
@@ -165,10 +166,18 @@ class Deadlines:
         return len(self._heap) + sum(len(lane.queue) for lane in self._lanes.values())
 
     def lane(self, period: float) -> _Lane | None:
-        """The lane of timers of ``period`` (None once too many periods have one)."""
+        """The lane of timers of ``period``: None for the period's first timer, and once too many periods are known.
+
+        A period's first timer waits in the heap alone, as it would at the head of
+        a lane of its own, without the lane's bookkeeping on each of its ticks (a
+        simulation's physics step has a period to itself); the lane comes with the second.
+        """
         lane = self._lanes.get(period)
-        if lane is None and len(self._lanes) < _MAX_LANES:
-            lane = self._lanes[period] = _Lane()
+        if lane is None:
+            if period in self._periods:
+                lane = self._lanes[period] = _Lane()
+            elif len(self._periods) < _MAX_LANES:
+                self._periods.add(period)
         return lane
 
     def add(self, when: float, timer: Timer) -> None:

@@ -262,6 +262,18 @@ async def test_stale_deadlines_of_timers_sharing_a_period_are_swept_out():
         assert node.fired == [(pytest.approx(10.999, abs=1e-9), 999)]
 
 
+async def test_a_periods_first_timer_waits_in_the_heap_alone_and_its_second_opens_the_lane():
+    async with Runtime() as rt:
+        node = rt.spawn(Bare)
+        first, second, third = node.add(0.1), node.add(0.1), node.add(0.3)
+        assert first._lane is third._lane is None and rt.deadlines._lanes == {0.1: second._lane}
+        await anyio.sleep(0.35)
+        # In the order they were armed either way: at 0.3 the 0.3 s timer's first deadline came before the re-arms.
+        assert node.fired == [
+            (pytest.approx(t), i) for t, i in [(0.1, 0), (0.1, 1), (0.2, 0), (0.2, 1), (0.3, 2), (0.3, 0), (0.3, 1)]
+        ]
+
+
 async def test_timers_of_more_periods_than_lanes_tick_on_their_own_multiples():
     async with Runtime() as rt:
         node = rt.spawn(Bare)
