@@ -290,34 +290,47 @@ class Deadlines:
         self._firing = True
         heap = self._heap
         try:
+            if not heap or heap[0][0] > limit:
+                return  # nothing due (not expected: the loop timer is set for the heap's head)
             while True:
-                # The timers due by ``limit``, their rounds run; the heap's head live afterwards.
                 # One instant a loop: a Python call per instant cost more than its body's setup.
-                due = []
-                while heap and heap[0][0] <= limit:
-                    when, _, timer, _ = self._pop()
-                    if timer._when == when:
-                        timer._when = None  # due: it waits for no deadline until its callback has run
-                        due.append(timer)
+                # The timers due by ``limit``, the heap's head first (it is due here and after a
+                # skip), their rounds run; the heap's head live afterwards.  The first timer due
+                # is ``timer``, the others go in ``more``: most instants of a simulation run one
+                # timer, without a list to build and index.
+                timer = None
+                more: list[Timer] = []
+                while True:
+                    when, _, due, _ = self._pop()
+                    if due._when == when:
+                        due._when = None  # due: it waits for no deadline until its callback has run
+                        if timer is None:
+                            timer = due
+                        else:
+                            more.append(due)
                     else:
                         self._stale -= 1
-                if len(due) == 1:
-                    due[0].node.actor.run_one(due[0], scheduler, now)  # most instants of a simulation
-                else:
+                    if not heap or heap[0][0] > limit:
+                        break
+                if more:
                     scheduler.hold()  # the rounds run below, not from a loop callback of their own
-                    for timer in due:
-                        timer.node.actor.schedule(timer)
+                    for due in (timer, *more):
+                        due.node.actor.schedule(due)
                     scheduler.run_now()
+                elif timer is not None:
+                    timer.node.actor.run_one(timer, scheduler, now)
                 heap = self._heap  # discard() may have rebuilt it
                 if self._stale and heap and heap[0][2]._when != heap[0][0]:  # no stale entry: the head is live
                     self._prune()
                 # On virtual time, the next instant at once when the loop would do nothing
                 # but jump there and call this again: a physics step's instant is mostly
                 # the loop's iteration around it.
-                if not (skips and heap and skip_to(heap[0][0], skips < _SKIPS)):  # type: ignore[misc]
+                if not (skips and heap):
+                    break
+                now = limit = heap[0][0]
+                if not skip_to(limit, skips < _SKIPS):  # type: ignore[misc]
                     break
                 skips -= 1
-                now = limit = heap[0][0]
         finally:
             self._firing = False
             self._prune()  # after a callback's error, the head may not be live yet
