@@ -237,16 +237,13 @@ class Deadlines:
     def _pop(self) -> _Entry:
         # The earliest entry out of the heap, its lane's next entry in its place.
         heap = self._heap
-        entry = heap[0]
-        lane = entry[3]
+        lane = heap[0][3]
         if lane is None:
-            heappop(heap)
-        elif lane.queue:
-            heapreplace(heap, lane.queue.popleft())
-        else:
-            heappop(heap)
-            lane.open = False
-        return entry
+            return heappop(heap)
+        if lane.queue:
+            return heapreplace(heap, lane.queue.popleft())
+        lane.open = False
+        return heappop(heap)
 
     def _prune(self) -> None:
         heap = self._heap
