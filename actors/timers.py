@@ -221,7 +221,8 @@ class Deadlines:
             lane.queue.clear()
             lane.open = False
         live.sort()
-        self._heap = heap = []
+        heap = self._heap
+        heap.clear()  # the same list: _fire holds it in a local across its callbacks
         for entry in live:
             lane = entry[3]
             if lane is not None and lane.open:
@@ -316,7 +317,6 @@ class Deadlines:
                     scheduler.run_now()
                 elif timer is not None:
                     timer.node.actor.run_one(timer, scheduler, now)
-                heap = self._heap  # discard() may have rebuilt it
                 if self._stale and heap and heap[0][2]._when != heap[0][0]:  # no stale entry: the head is live
                     self._prune()
                 # On virtual time, the next instant at once when the loop would do nothing
@@ -331,7 +331,6 @@ class Deadlines:
         finally:
             self._firing = False
             self._prune()  # after a callback's error, the head may not be live yet
-            heap = self._heap
             if heap:
                 self._arm(heap[0][0])
             else:

@@ -262,6 +262,27 @@ async def test_stale_deadlines_of_timers_sharing_a_period_are_swept_out():
         assert node.fired == [(pytest.approx(10.999, abs=1e-9), 999)]
 
 
+async def test_stale_deadlines_swept_out_from_a_tick_leave_the_instants_after_it_on_time():
+    # A tick that cancels most timers rebuilds the heap while the loop timer's instants run.
+    class Sweeper(Bare):
+        def sweep(self) -> None:
+            self.fired.append((self.now(), -1))
+            for timer in reversed(self.timers):  # the earliest last: stale entries pile up behind it
+                timer.cancel()
+
+    async with Runtime() as rt:
+        node = rt.spawn(Sweeper)
+        for i in range(100):
+            node.add(1.0 + i / 1000)  # a period each: every deadline in the heap itself
+        node.timers.append(node.create_timer(0.05, node.sweep))
+        ticker = node.add(0.01)
+        node.timers.remove(ticker)
+        await anyio.sleep(0.205)
+        assert len(rt.deadlines) == 1 and rt.deadlines._entries() < 50
+        assert [t for t, index in node.fired if index == -1] == [pytest.approx(0.05)]
+        assert [t for t, index in node.fired if index == 101] == pytest.approx([k / 100 for k in range(1, 21)])
+
+
 async def test_a_periods_first_timer_waits_in_the_heap_alone_and_its_second_opens_the_lane():
     async with Runtime() as rt:
         node = rt.spawn(Bare)
