@@ -10,8 +10,8 @@ loop timer, rather than in a loop timer of its own.  asyncio's ``TimerHandle``
 orders its heap with a Python-level ``__lt__`` (about 0.1 µs a comparison,
 log2(n) of them per push and per pop), which made the loop's heap a third of
 a tick's cost with 10,000 timers.  Deadlines keeps the timers of each period
-in a FIFO lane (a re-armed timer's next deadline is the latest of its
-period), and only the lanes' first deadlines in a heap.  Timers whose deadlines
+in a FIFO lane from the second on (a re-armed timer's next deadline is the
+latest of its period), and only the lanes' first deadlines in a heap.  Timers whose deadlines
 have come when the loop timer fires all fire from it, so timers that share a
 deadline (every node started in the same instant, under virtual time) cost one
 loop timer between them.  Timers due together fire in the order they were armed,
@@ -131,7 +131,8 @@ class Deadlines:
     tuple comparisons for each push and pop, each a cache miss); a timer's
     deadline usually goes at the end of its period's :class:`_Lane` instead,
     and the heap holds one entry per lane.  A deadline earlier than its
-    lane's last (a timer reset, or ticking late) waits in the heap alone.
+    lane's last (a timer reset, or ticking late) waits in the heap alone, as
+    do the deadlines of a period's first timer (see :meth:`lane`).
     Entries pop in ``(when, order)`` order either way: timers due together
     fire in the order they were armed.
     """
