@@ -67,7 +67,10 @@ def _check_srv_type(srv_type: Any, where: str) -> None:
 class Service(Mailbox):
     """A service server.  Create with ``Node.create_service``."""
 
-    __slots__ = ("node", "service_name", "srv_type", "handler", "handled", "_response_type", "_snapshot", "_adopt_response")
+    __slots__ = (
+        "node", "service_name", "srv_type", "handler", "handled", "_listed", "_response_type", "_snapshot",
+        "_adopt_response",
+    )
     remote = False  # a transport's stand-in for a server elsewhere, which a local server replaces
 
     def __init__(self, node: Owner, service_name: str, srv_type: type, handler: Callable[..., Any]) -> None:
@@ -79,6 +82,9 @@ class Service(Mailbox):
         self.srv_type = srv_type
         self.handler = handler
         self.handled = 0
+        # Whether the ServiceTable lists this server under its name now (kept by the table): a
+        # client that found it calls it again without a lookup while it stays listed.
+        self._listed = False
         # Read per round from a slot: ``srv_type.Response``, an attribute of a class, is a lookup
         # CPython 3.11 does not specialise.
         self._response_type = srv_type.Response
@@ -192,7 +198,9 @@ class Service(Mailbox):
 class Client:
     """A service client.  Create with ``Node.create_client``."""
 
-    __slots__ = ("node", "service_name", "srv_type", "_request_type", "_table", "_loop", "_snapshot", "_new_future")
+    __slots__ = (
+        "node", "service_name", "srv_type", "_request_type", "_table", "_loop", "_snapshot", "_new_future", "_server",
+    )
 
     def __init__(self, node: Owner, service_name: str, srv_type: type, table: ServiceTable) -> None:
         _check_srv_type(srv_type, "create_client")
@@ -213,6 +221,10 @@ class Client:
             if type(loop).create_future is asyncio.BaseEventLoop.create_future
             else loop.create_future
         )
+        # The server the last lookup found, used while the table still lists it (``Service._listed``):
+        # calls skip the lookup by name and the own-service check (it is never this node's own).  A
+        # server removed or replaced is kept from the collector until this client's next call.
+        self._server: Service | None = None
 
     def service_is_ready(self) -> bool:
         """Whether a server for this service exists now."""
@@ -246,15 +258,23 @@ class Client:
             self._refuse(request)
         snapshot, new_future = self._snapshot, self._new_future  # locals: see __init__
         request = snapshot(request)
-        server = self._table.servers.get(self.service_name)
-        if server is not None and server.node is self.node:
-            self._refuse_own(server)
         future = new_future()
+        self._send(request, future)
+        return future
+
+    def _send(self, request: Any, future: asyncio.Future[Any]) -> None:
+        # Queue the call for the server listed now (remembered for the next calls), or park it
+        # until one appears; ServiceError if the server is this node's own.
+        server = self._server
+        if server is None or not server._listed:
+            server = self._table.servers.get(self.service_name)
+            if server is not None and server.node is self.node:
+                self._refuse_own(server)
+            self._server = server
         if server is not None:
             server._push((request, future))
         else:
             self._table.park(self.service_name, (request, future))
-        return future
 
     def _refuse(self, request: Any) -> None:
         raise TypeError(
@@ -282,12 +302,10 @@ class Client:
             self._refuse(request)
         snapshot, new_future = self._snapshot, self._new_future  # locals: see __init__
         request = snapshot(request)
-        server = self._table.servers.get(self.service_name)
-        if server is not None and server.node is self.node:
-            self._refuse_own(server)
         future = new_future()
-        if server is None:
-            self._table.park(self.service_name, (request, future))
+        server = self._server
+        if server is None or not server._listed:
+            self._send(request, future)  # the lookup by name
         elif server._scheduled:
             # _push's common case with many callers: the server is already due to run, so its
             # queue exists (a remote stand-in forwards in its own _push and is never scheduled).
@@ -477,7 +495,9 @@ class ServiceTable:
     that a client, a listener or a lookup through :meth:`get` may reach: a
     client's service is built when the client is made, and a node whose
     services a client already waits for builds them at once.  Listings see the
-    deferred ones through :meth:`deferred`.
+    deferred ones through :meth:`deferred`.  Only :meth:`add` and :meth:`remove`
+    change ``servers``: they keep each server's ``_listed`` flag, on which a
+    client relies to call the server it found last without looking it up again.
     """
 
     __slots__ = ("servers", "listeners", "_parked", "_watchers", "_timeouts", "_deferred", "_wanted", "_prefixes")
@@ -578,6 +598,9 @@ class ServiceTable:
                 f"({type_name(existing.srv_type)})"
             )
         self.servers[name] = service
+        if existing is not None:
+            existing._listed = False
+        service._listed = True
         if existing is None:
             prefix = name.rpartition("/")[0]
             self._prefixes[prefix] = self._prefixes.get(prefix, 0) + 1
@@ -596,6 +619,7 @@ class ServiceTable:
         """Unregister ``service``; its queued calls fail."""
         if self.servers.get(service.service_name) is service:
             del self.servers[service.service_name]
+            service._listed = False
             prefix = service.service_name.rpartition("/")[0]
             if self._prefixes[prefix] == 1:
                 del self._prefixes[prefix]

@@ -263,6 +263,53 @@ async def test_requests_queued_while_the_server_restarts_are_answered_by_the_new
         assert rt.clock.monotonic() == pytest.approx(1.0)  # crashed at 0, 1 s backoff
 
 
+async def test_calls_after_a_restart_go_to_the_new_instance():
+    # The client remembers the server it found; a restart's new instance takes its place.
+    async with Runtime(supervisor=SupervisorPolicy(backoff=1.0)) as rt:
+        rt.spawn(Adder)
+        caller = rt.spawn(Caller)
+        assert (await caller.cli.call(AddTwoInts.Request(a=1, b=1), timeout=1)).sum == 2
+        caller.crash_pub.publish(Int64(data=1))
+        await anyio.sleep(2)  # restarted
+        assert (await caller.cli.call(AddTwoInts.Request(a=2, b=2), timeout=1)).sum == 4
+        assert (await caller.cli.call(AddTwoInts.Request(a=3, b=3), timeout=1)).sum == 6
+        (info,) = [s for s in rt.graph.services() if s.name == "/add_two_ints"]
+        assert info.handled == 3
+
+
+async def test_a_call_after_its_server_was_destroyed_waits_for_the_next_server_of_the_name():
+    class Named(Node):
+        """Answers /who with its own name."""
+
+        def __init__(self, name: str) -> None:
+            super().__init__(name)
+            self.srv = self.create_service(Trigger, "/who", self.who)
+
+        def who(self, request: Trigger.Request, response: Trigger.Response) -> Trigger.Response:
+            response.message = self.get_name()
+            return response
+
+    class Asker(Node):
+        def __init__(self) -> None:
+            super().__init__("asker")
+            self.cli = self.create_client(Trigger, "/who")
+
+    async with Runtime() as rt:
+        first = rt.spawn(Named, "first")
+        asker = rt.spawn(Asker)
+        assert (await asker.cli.call(Trigger.Request(), timeout=1)).message == "first"
+        first.destroy_service(first.srv)
+        with pytest.raises(TimeoutError):
+            await asker.cli.call(Trigger.Request(), timeout=1)
+        parked = asker.cli.call_async(Trigger.Request())
+        second = rt.spawn(Named, "second")
+        assert (await parked).message == "second"
+        assert (await asker.cli.call(Trigger.Request(), timeout=1)).message == "second"
+        second.destroy_service(second.srv)
+        first.srv = first.create_service(Trigger, "/who", first.who)
+        assert (await asker.cli.call(Trigger.Request(), timeout=1)).message == "first"
+
+
 async def test_a_second_server_on_the_same_name_is_refused():
     async with Runtime() as rt:
         rt.spawn(Adder)
