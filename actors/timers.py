@@ -290,13 +290,15 @@ class Deadlines:
         heap = self._heap
         try:
             if not heap or heap[0][0] > limit:
-                return  # nothing due (not expected: the loop timer is set for the heap's head)
+                # Nothing due: the loop timer is set for the heap's head, so this should not happen,
+                # but the pop loop below pops before it tests, and would fire a timer early.
+                return
             while True:
                 # One instant a loop: a Python call per instant cost more than its body's setup.
                 # The timers due by ``limit``, the heap's head first (it is due here and after a
                 # skip), their rounds run; the heap's head live afterwards.  The first timer due
                 # is ``timer``, the others go in ``more``: most instants of a simulation run one
-                # timer, without a list to build and index.
+                # timer, which then goes straight to run_one, with no list to index or iterate.
                 timer = None
                 more: list[Timer] = []
                 while True:
