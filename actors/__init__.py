@@ -1,6 +1,6 @@
 """actors: ROS 2's programming model as a pure-Python asyncio runtime."""
 
-from actors.actions import (
+from actors.ros.actions import (
     ActionClient,
     ActionServer,
     CancelResponse,
@@ -8,7 +8,8 @@ from actors.actions import (
     GoalResponse,
     ServerGoalHandle,
 )
-from actors.clock import Clock, ClockType, Duration, Rate, ROSClock, Time, VirtualTimeLoop
+from actors.core.loops import VirtualTimeLoop
+from actors.ros.time import Clock, ClockType, Duration, Rate, ROSClock, Time
 from actors.errors import (
     ActionError,
     ActorsError,
@@ -21,25 +22,17 @@ from actors.errors import (
     TopicTypeError,
     VirtualTimeDeadlock,
 )
-from actors.introspection import EndpointInfo, GraphView, NodeInfo, TopicInfo
-from actors.log import LoggingSeverity
-from actors.node import Node
-from actors.param_client import AsyncParameterClient
-from actors.params import Parameter, ParameterType
+from actors.system.introspection import EndpointInfo, GraphView, NodeInfo, TopicInfo
+from actors.ros.log import LoggingSeverity
+from actors.ros.node import Node
+from actors.ros.param_client import AsyncParameterClient
+from actors.ros.parameter_store import Parameter, ParameterType
 from actors.runtime import Runtime
 from actors.services import Client, Service
-from actors.supervisor import RestartType, Strategy, SupervisorPolicy
-from actors.timers import Timer
-from actors.topics import (
-    DurabilityPolicy,
-    HistoryPolicy,
-    Publisher,
-    QoSProfile,
-    ReliabilityPolicy,
-    Subscription,
-    qos_profile_sensor_data,
-    qos_profile_system_default,
-)
+from actors.system.supervisor import RestartType, Strategy, SupervisorPolicy
+from actors.ros.timers import Timer
+from actors.ros.topics import Publisher, Subscription
+from actors.ros.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy, qos_profile_sensor_data, qos_profile_system_default
 
 __all__ = [
     "ActionClient",

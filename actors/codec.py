@@ -3,7 +3,7 @@
 The registry maps ``pkg/msg/Name`` (and ``pkg/srv/Name``, ``pkg/action/Name``,
 ``pkg/Name``) to the generated classes, importing a package's module only when one of its types is
 first asked for.  It is process-wide, like ``sys.modules``: types are
-definitions, not state.  Roots (see :mod:`actors.idl`) are searched newest
+definitions, not state.  Roots (see :mod:`actors.messages.idl`) are searched newest
 registered first, the shipped ``interfaces`` root last.
 
 ``encode``/``decode`` (msgpack) and ``encode_json``/``decode_json`` are the
@@ -13,8 +13,8 @@ receiving side's decode does).  JSON cannot carry NaN or infinity: msgspec
 writes them as ``null``, which does not decode as a float.
 
 ``encode_cdr``/``decode_cdr`` speak ROS 2's own wire format (see
-:mod:`actors.cdr`), ``type_hash`` names a type as ROS 2 does (see
-:mod:`actors.typehash`).
+:mod:`actors.messages.cdr`), ``type_hash`` names a type as ROS 2 does (see
+:mod:`actors.messages.typehash`).
 """
 
 from __future__ import annotations
@@ -31,10 +31,11 @@ from typing import Any, TypeVar
 import msgspec
 import msgspec.inspect as mi
 
-from actors import cdr, typehash
+from actors.messages import cdr
+from actors.messages import typehash
 from actors.errors import InterfaceError, MessageValidationError, UnknownInterfaceError
-from actors.explain import explain
-from actors.idl import PRIMITIVES
+from actors.core.explain import explain
+from actors.messages.idl import PRIMITIVES
 
 __all__ = [
     "convert",
@@ -125,7 +126,7 @@ def list_types() -> list[str]:
     Services' ``_Request``/``_Response`` messages are not listed separately,
     nor the parts and wire types of an action.
     """
-    from actors.idl import shipped_root
+    from actors.messages.idl import shipped_root
 
     names = {
         name

@@ -25,26 +25,17 @@ import anyio
 import anyio.abc
 import msgspec
 
-from actors.clock import WALL_LOOPS, VirtualTimeLoop
-from actors.config import MAX_SECONDS
-from actors.control import ControlEndpoint
+from actors.core.loops import WALL_LOOPS, VirtualTimeLoop
+from actors.core.tomlfile import MAX_SECONDS
+from actors.ops.control import ControlEndpoint
 from actors.errors import ActorsError, Escalation, GraphFileError
-from actors.graph import GraphFile, NodeEntry, TransportSection, load_graph
-from actors.log import LEVELS, configure_console
-from actors.node import Node
-from actors.runtime import Attachment, Runtime, frozen_startup
+from actors.launch.graph_file import GraphFile, TransportSection, load_graph
+from actors.ros.log import LEVELS, configure_console
+from actors.ros.node import Node
+from actors.launch.spawn import NodeStartError, one_line, spawn_graph
+from actors.runtime import Attachment, Runtime
 
-__all__ = ["main", "add_arguments", "launch", "run_graph", "spawn_graph", "NodeStartError"]
-
-
-class NodeStartError(Exception):
-    """A node's constructor raised while the graph started it; the error is ``__cause__``."""
-
-    def __init__(self, node: str, use: str, error: BaseException) -> None:
-        self.node = node
-        self.use = use
-        super().__init__(f"node {node} ({use}) failed to start: {_one_line(error)}")
-        self.__cause__ = error
+__all__ = ["main", "add_arguments", "launch", "run_graph"]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -126,66 +117,6 @@ async def run_graph(
             await tg.start(spawn_graph, rt, graph, classes)
             await rt.wait(duration or None)
             tg.cancel_scope.cancel()
-
-
-async def spawn_graph(
-    rt: Runtime,
-    graph: GraphFile,
-    classes: Sequence[type[Node]],
-    *,
-    task_status: anyio.abc.TaskStatus[None] = anyio.TASK_STATUS_IGNORED,
-) -> None:
-    """Spawn the graph's nodes into ``rt`` in file order, the delayed ones when their delay ends.
-
-    Reports started (``await tg.start(spawn_graph, ...)``) once the nodes without
-    a delay run, and returns when every node has been spawned.  Raises as
-    :func:`run_graph` does.
-    """
-    entries = list(enumerate(zip(graph.nodes, classes)))
-    with frozen_startup():
-        for i, (entry, cls) in entries:
-            if not entry.delay:
-                _spawn(rt, i, entry, cls)
-    task_status.started()
-    async with anyio.create_task_group() as tg:
-        for i, (entry, cls) in entries:
-            if entry.delay:
-                tg.start_soon(_spawn_later, rt, i, entry, cls)
-
-
-def _spawn(rt: Runtime, index: int, entry: NodeEntry, cls: type[Node]) -> None:
-    try:
-        rt.spawn(
-            cls,
-            name=entry.name,
-            namespace=entry.namespace or None,
-            params=entry.params,
-            remap=entry.remap,
-            restart=entry.restart,
-        )
-    except ActorsError as exc:
-        raise GraphFileError(f"nodes[{index}] ({entry.use}): {exc}") from None
-    except Exception as exc:
-        raise NodeStartError(_node_name(exc, cls) or f"nodes[{index}]", entry.use, exc) from exc
-
-
-def _node_name(error: BaseException, cls: type[Node]) -> str | None:
-    """The full name the failed constructor had given its node, if it got that far.
-
-    The instance is still reachable from the constructor's frame in the traceback.
-    """
-    for frame, _ in traceback.walk_tb(error.__traceback__):
-        core = getattr(frame.f_locals.get("self"), "_core", None)
-        if isinstance(frame.f_locals.get("self"), cls) and core is not None:
-            return str(core.fqn)
-    return None
-
-
-async def _spawn_later(rt: Runtime, index: int, entry: NodeEntry, cls: type[Node]) -> None:
-    await anyio.sleep(entry.delay)
-    # A failure leaves the runtime's block (in an ExceptionGroup), which stops every node
-    # gracefully before it reaches launch(), which unwraps it.
-    _spawn(rt, index, entry, cls)
 
 
 async def _stop_on_signal(
@@ -278,7 +209,7 @@ def _report(exc: BaseException, graph: str) -> int:
         elif isinstance(error, NodeStartError):
             headline, shown = str(error), error.__cause__
         else:
-            headline, shown = _one_line(error), error
+            headline, shown = one_line(error), error
         print(f"[FATAL] {headline}", file=sys.stderr)
         if shown is not None:
             print("".join(_user_traceback(shown)), end="", file=sys.stderr)
@@ -293,12 +224,6 @@ def _leaves(exc: BaseException) -> Iterator[BaseException]:
             yield from _leaves(inner)
     elif not isinstance(exc, asyncio.CancelledError):  # the only backend actors.run uses
         yield exc
-
-
-def _one_line(error: BaseException) -> str:
-    text = str(error)
-    name = type(error).__name__
-    return f"{name}: {text}" if text else name
 
 
 # Frames from these top-level packages are the machinery, not the user's code.
@@ -325,7 +250,7 @@ def _user_traceback(error: BaseException) -> list[str]:
     while current is not None and id(current) not in seen:
         seen.add(id(current))
         if current is not error:
-            lines.append(f"caused by {_one_line(current)}\n")
+            lines.append(f"caused by {one_line(current)}\n")
         frames = list(traceback.walk_tb(current.__traceback__))
         users = [(frame, line) for frame, line in frames if _is_users(frame)]
         if not users and not isinstance(current, ActorsError):

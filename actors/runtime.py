@@ -22,16 +22,17 @@ from typing import Any, Protocol, TypeVar
 import anyio
 import anyio.abc
 
-from actors.actor import Scheduler
-from actors.clock import ROSClock
+from actors.core._actor import Scheduler
+from actors.ros.time import ROSClock
 from actors.errors import InvalidNameError
-from actors.introspection import GraphView
-from actors.log import NodeLogger, console_unless_configured
-from actors.node import Node, NodeCore, SpawnRequest, spawning
+from actors.system.introspection import GraphView
+from actors.ros.log import NodeLogger, console_unless_configured
+from actors.ros.node import Node, NodeCore, SpawnRequest, spawning
 from actors.services import ServiceTable
-from actors.supervisor import Child, RestartType, Supervisor, SupervisorPolicy
-from actors.timers import Deadlines
-from actors.topics import Publisher, QoSProfile, TopicTable
+from actors.system.supervisor import Child, RestartType, Supervisor, SupervisorPolicy
+from actors.ros.timers import Deadlines
+from actors.ros.topics import Publisher, TopicTable
+from actors.ros.qos import QoSProfile
 
 __all__ = ["Runtime", "Attachment", "frozen_startup"]
 
@@ -41,7 +42,7 @@ N = TypeVar("N", bound=Node)
 class Attachment(Protocol):
     """Something that runs beside a graph for as long as its runtime runs.
 
-    The control endpoint (:class:`actors.control.ControlEndpoint`) is one; so
+    The control endpoint (:class:`actors.ops.control.ControlEndpoint`) is one; so
     are a transport to other processes and a recorder.  The runtime starts each
     with ``await task_group.start(attachment, runtime)`` once its supervisor
     runs, in the order given, and cancels them after every node has stopped.

@@ -19,12 +19,12 @@ mailbox — so awaiting a call from inside a callback cannot deadlock.
 - A cancelled or timed-out caller does not disturb the server: the response is
   simply dropped.
 - Requests and responses go through the publish-time snapshot
-  (:mod:`actors.snapshot`): the server sees the request as it was when the
+  (:mod:`actors.messages._copy`): the server sees the request as it was when the
   call was made, the caller the response as the handler returned it, and a
   field of the wrong type fails the call naming the field (in ``call_async``
   for a request, as ServiceError for a response).  A response that nobody else
   holds when a plain handler returns it (``sys.getrefcount``) is checked in
-  place (:func:`actors.snapshot.adopter`) instead of copied.
+  place (:func:`actors.messages._copy.adopter`) instead of copied.
 """
 
 from __future__ import annotations
@@ -39,11 +39,11 @@ from inspect import isawaitable
 from sys import getrefcount
 from typing import Any, Protocol
 
-from actors.actor import Mailbox, Owner
-from actors.clock import VirtualTimeLoop, loop_clock
+from actors.core._actor import Mailbox, Owner
+from actors.core.loops import VirtualTimeLoop, loop_clock
 from actors.errors import ServiceError
-from actors.snapshot import ALONE, adopter, snapshotter
-from actors.topics import type_name
+from actors.messages._copy import ALONE, adopter, snapshotter
+from actors.ros.topics import type_name
 
 __all__ = ["Service", "Client", "CallTimeouts", "ServiceListener", "Deferred", "ServiceTable"]
 

@@ -8,7 +8,7 @@
 
 The mark is enough, in pytest-asyncio's ``strict`` mode as in ``auto``: the
 plugin adds ``asyncio`` to a marked coroutine test while it is collected, and
-hands pytest-asyncio (1.4+) a :class:`~actors.clock.VirtualTimeLoop` through
+hands pytest-asyncio (1.4+) a :class:`~actors.core.loops.VirtualTimeLoop` through
 its ``pytest_asyncio_loop_factories`` hook, so the test and its async fixtures
 share one virtual clock.  The mark works on a test, a class or a module
 (``pytestmark = pytest.mark.virtual_time``).  Unmarked tests are left to
@@ -34,7 +34,7 @@ from typing import TYPE_CHECKING, Any
 
 import pytest
 
-from actors.clock import VirtualTimeLoop
+from actors.core.loops import VirtualTimeLoop
 
 if TYPE_CHECKING:
     from actors.compat.grading import ScriptRun

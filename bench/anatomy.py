@@ -21,7 +21,7 @@ from collections.abc import Callable
 from typing import Any
 
 from actors import Node, QoSProfile, Runtime
-from actors.snapshot import snapshotter
+from actors.messages._copy import snapshotter
 from bench.services import handle
 from bench.throughput import Listener, Talker, call_rate
 from interfaces.std_msgs.msg import String

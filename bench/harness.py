@@ -45,7 +45,7 @@ def uvloop_factory() -> Callable[[], Any] | None:
         import uvloop  # noqa: F401
     except ImportError:
         return None
-    from actors.clock import uvloop_loop
+    from actors.core.loops import uvloop_loop
 
     return uvloop_loop
 

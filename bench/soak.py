@@ -48,8 +48,8 @@ import anyio
 import msgspec
 
 from actors.cli._client import connect
-from actors.control import Diagnose, GetGraph, Publish, Reply, Subscribe, decode_reply, frame
-from actors.doctor import Report
+from actors.ops.control import Diagnose, GetGraph, Publish, Reply, Subscribe, decode_reply, frame
+from actors.ops.doctor import Report
 
 __all__ = ["GraphProcess", "hammer_round", "rss_kb", "slope", "main"]
 

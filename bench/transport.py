@@ -135,7 +135,7 @@ def _actors(role: str, args: dict[str, Any]) -> Any:
     import anyio
 
     from actors import HistoryPolicy, Node, QoSProfile, ReliabilityPolicy, Runtime
-    from actors.graph import TransportSection
+    from actors.launch.graph_file import TransportSection
     from actors.transport.zenoh import ZenohTransport
     from bench.services import handle
     from interfaces.std_msgs.msg import Int64, String

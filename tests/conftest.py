@@ -47,7 +47,8 @@ def live_loop_timers() -> list[asyncio.TimerHandle]:
 def generated_package(root: Path, package: str, messages: dict[str, str]) -> None:
     """Write ``messages`` (name -> .msg text) as ``package`` under the interface root ``root``,
     generate its module and register the root, so ``codec.get_type("package/msg/Name")`` finds them."""
-    from actors import codec, idl_gen
+    from actors import codec
+    from actors.messages import generate as idl_gen
 
     folder = root / package / "msg"
     folder.mkdir(parents=True)

@@ -8,7 +8,7 @@ import anyio
 import pytest
 
 from actors import Node, Runtime
-from actors.actions import ActionCall, CancelResponse, GoalResponse, ServerGoalHandle, status_name, wire_names
+from actors.ros.actions import ActionCall, CancelResponse, GoalResponse, ServerGoalHandle, status_name, wire_names
 from actors.errors import ActionError, ServiceError
 from interfaces.action_msgs.msg import GoalStatus, GoalStatusArray
 from interfaces.builtin_interfaces.msg import Time
@@ -465,7 +465,7 @@ async def test_a_node_cannot_send_goals_to_its_own_server():
 
 
 async def test_the_graph_lists_actions_read_off_their_topics():
-    from actors.introspection import action_of
+    from actors.system.introspection import action_of
 
     assert action_of("/a/_action/send_goal", "p/action/Move_SendGoal") == ("/a", "p/action/Move")
     assert action_of("/a/_action/feedback", "p/action/Move_FeedbackMessage") == ("/a", "p/action/Move")

@@ -143,7 +143,7 @@ class Awaiting:
 
 
 async def test_run_one_runs_an_idle_actors_round_at_once_and_otherwise_waits_its_turn():
-    from actors.actor import Actor, Scheduler
+    from actors.core._actor import Actor, Scheduler
 
     loop = asyncio.get_running_loop()
     scheduler = Scheduler(loop)
@@ -178,7 +178,7 @@ async def test_run_one_runs_an_idle_actors_round_at_once_and_otherwise_waits_its
 
 
 async def test_run_one_on_an_idle_actor_hands_an_async_callback_to_a_task_and_a_failure_ends_the_actor():
-    from actors.actor import Actor, CallbackFailed, Scheduler
+    from actors.core._actor import Actor, CallbackFailed, Scheduler
 
     loop = asyncio.get_running_loop()
     scheduler = Scheduler(loop)

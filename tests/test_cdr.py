@@ -14,7 +14,9 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from actors import cdr, codec, idl_gen
+from actors import codec
+from actors.messages import cdr
+from actors.messages import generate as idl_gen
 from actors.errors import CdrError, MessageValidationError
 from goldens.ros import padding_positions, same_wire
 from goldens.values import DrawPick, message, shipped_messages

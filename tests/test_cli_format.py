@@ -6,10 +6,10 @@ import pytest
 
 from actors.cli._format import field, ros_repr, yaml_text
 from actors.cli.graph import to_dot
-from actors.control import GraphSnapshot
+from actors.ops.control import GraphSnapshot
 from actors.errors import ControlError
-from actors.introspection import EndpointInfo, TopicInfo
-from actors.qos import QoSSnapshot
+from actors.system.introspection import EndpointInfo, TopicInfo
+from actors.ros.qos import QoSSnapshot
 from interfaces.geometry_msgs.msg import Twist
 from interfaces.std_msgs.msg import String
 

@@ -12,7 +12,7 @@ import yaml
 
 from actors import Node, Runtime
 from actors.cli import main
-from actors.control import ControlEndpoint
+from actors.ops.control import ControlEndpoint
 from interfaces.rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
 
 

@@ -14,7 +14,8 @@ import anyio
 import pytest
 
 from actors import Node, Runtime
-from actors.clock import Clock, ClockType, Duration, Infinite, Rate, ROSClock, Time, VirtualTimeLoop
+from actors.core.loops import VirtualTimeLoop
+from actors.ros.time import Clock, ClockType, Duration, Infinite, Rate, ROSClock, Time
 from actors.errors import VirtualTimeDeadlock
 
 
@@ -364,7 +365,7 @@ async def test_the_runtime_clock_is_ros_time_on_the_loop():
 def test_precise_loop_waits_in_select():
     import selectors
 
-    from actors.clock import precise_loop
+    from actors.core.loops import precise_loop
 
     loop = precise_loop()
     try:
@@ -375,7 +376,7 @@ def test_precise_loop_waits_in_select():
 
 def test_actors_run_uses_the_precise_loop_on_the_wall_clock(monkeypatch):
     import actors.run
-    from actors.clock import precise_loop
+    from actors.core.loops import precise_loop
 
     seen = {}
     monkeypatch.setattr(actors.run.anyio, "run", lambda fn, backend_options: seen.update(backend_options))
@@ -425,7 +426,7 @@ async def test_a_nodes_rate_and_destroying_it():
 
 
 def test_uvloop_loop_without_uvloop_names_the_extra(monkeypatch):
-    from actors.clock import uvloop_loop
+    from actors.core.loops import uvloop_loop
 
     monkeypatch.setitem(sys.modules, "uvloop", None)  # as if not installed
     with pytest.raises(ImportError, match=r"uvloop is not installed: pip install 'actors\[fast\]'"):
@@ -434,7 +435,7 @@ def test_uvloop_loop_without_uvloop_names_the_extra(monkeypatch):
 
 def test_a_runtime_runs_on_uvloop():
     uvloop = pytest.importorskip("uvloop")
-    from actors.clock import uvloop_loop
+    from actors.core.loops import uvloop_loop
 
     class Ticker(Node):
         def __init__(self) -> None:

@@ -9,7 +9,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from actors import codec, idl
+from actors import codec
+from actors.messages import idl
 from actors.errors import MessageValidationError, UnknownInterfaceError
 from interfaces.builtin_interfaces.msg import Time
 from interfaces.example_interfaces.action import Fibonacci

@@ -28,7 +28,7 @@ from actors.compat.rclpy.executors import (
 from actors.compat.rclpy.qos import QoSProfile
 from actors.compat.rclpy.task import Future
 from actors.compat.rclpy.wait_for_message import wait_for_message
-from actors.node import Node as NativeNode
+from actors.ros.node import Node as NativeNode
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.std_msgs.msg import Int64, String
 
@@ -504,7 +504,7 @@ def test_a_call_the_loop_stopped_before_running_raises_instead_of_hanging():
 
 
 def test_parameter_requests_wait_for_the_spin(session):
-    from actors.params import Parameter
+    from actors.ros.parameter_store import Parameter
     from interfaces.rcl_interfaces.srv import SetParameters
 
     node = rclpy.create_node("tunable")
@@ -522,7 +522,7 @@ def test_parameter_requests_wait_for_the_spin(session):
 
 
 def test_a_raw_subscription_gets_the_cdr_bytes_rmw_fastrtps_delivers(session):
-    from actors import cdr
+    from actors.messages import cdr
 
     node = rclpy.create_node("raw")
     got: list[bytes] = []

@@ -14,7 +14,7 @@ from actors.compat.rclpy.parameter import (
     parameter_value_to_python,
 )
 from actors.compat.rclpy.parameter_client import AsyncParameterClient
-from actors.node import Node as NativeNode
+from actors.ros.node import Node as NativeNode
 
 PARAMS = """\
 /**:

@@ -13,8 +13,8 @@ import pytest
 from anyio.streams.buffered import BufferedByteReceiveStream
 
 from actors import Node, Runtime
-from actors.connections import EVICT_AFTER, ConnectionLimits, ConnectionPool
-from actors.control import ControlEndpoint, GetGraph, Reply, Subscribe, decode_reply, frame
+from actors.ops._connections import EVICT_AFTER, ConnectionLimits, ConnectionPool
+from actors.ops.control import ControlEndpoint, GetGraph, Reply, Subscribe, decode_reply, frame
 from interfaces.std_msgs.msg import String
 
 pytestmark = pytest.mark.virtual_time
@@ -151,11 +151,11 @@ async def test_a_reader_that_does_not_read_loses_samples_and_costs_at_most_its_o
 
 
 async def test_a_descriptor_select_cannot_watch_is_refused_not_registered(name, monkeypatch):
-    import actors.connections
+    import actors.ops._connections
 
     async with Runtime(name=name, attach=[ControlEndpoint()]) as rt:
-        monkeypatch.setattr(actors.connections, "_SELECT_LIMIT", 0)
-        monkeypatch.setattr(actors.connections, "_uses_select", lambda: True)
+        monkeypatch.setattr(actors.ops._connections, "_SELECT_LIMIT", 0)
+        monkeypatch.setattr(actors.ops._connections, "_uses_select", lambda: True)
         client = await Client.open(rt)
         refused = await client.reply()
         assert refused.error.startswith("the graph has too many open files")

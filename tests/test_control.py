@@ -14,7 +14,7 @@ from anyio.streams.buffered import BufferedByteReceiveStream
 
 from actors import DurabilityPolicy, Node, QoSProfile, Runtime
 from actors.cli._client import connect
-from actors.control import (
+from actors.ops.control import (
     MAX_FRAME,
     ControlEndpoint,
     ControlServer,

@@ -14,8 +14,8 @@ import pytest
 
 from actors import DurabilityPolicy, Node, QoSProfile, ReliabilityPolicy, Runtime, SupervisorPolicy
 from actors.cli._client import connect
-from actors.control import ControlEndpoint, Subscribe
-from actors.doctor import Report, diagnose
+from actors.ops.control import ControlEndpoint, Subscribe
+from actors.ops.doctor import Report, diagnose
 from interfaces.std_msgs.msg import Int64, String
 
 
@@ -322,7 +322,7 @@ def test_watchdog_blames_a_running_callback_unless_the_whole_process_was_starved
 def run_watchdog(frozen: float) -> tuple[str, str] | None:
     from types import SimpleNamespace
 
-    from actors.doctor import LagMonitor
+    from actors.ops.doctor import LagMonitor
 
     now = [0.0]
     entity = SimpleNamespace()
@@ -359,7 +359,7 @@ def test_a_stall_spent_waiting_for_a_cpu_is_not_blamed_on_the_callback(monkeypat
     import asyncio
     from types import SimpleNamespace
 
-    from actors import doctor
+    from actors.ops import doctor
 
     now = [0.0]
     queued = [0.0]
@@ -400,7 +400,7 @@ def test_the_run_queue_counter_counts_a_threads_wait_for_a_cpu_not_its_time_on_o
     # One CPU shared with two busy processes: a thread gets about a third of it,
     # so it waits about twice as long as it runs.  (Counting its time on the CPU
     # instead would give a ratio of 1.)
-    from actors.doctor import _CpuWait
+    from actors.ops.doctor import _CpuWait
 
     cpu = min(os.sched_getaffinity(0))
     hogs = [

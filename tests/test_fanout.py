@@ -21,11 +21,11 @@ from actors import (
     Runtime,
     SupervisorPolicy,
 )
-from actors import topics
-from actors.clock import VirtualTimeLoop
+from actors.ros import topics
+from actors.core.loops import VirtualTimeLoop
 from actors.errors import MessageRefused
 from actors.recording.tap import TapSet
-from actors.topics import Publisher
+from actors.ros.topics import Publisher
 from interfaces.std_msgs.msg import Int64
 
 TOPIC = "numbers"

@@ -101,7 +101,7 @@ def test_recording_a_topic_nobody_uses_needs_its_type():
 def test_set_parameters_callbacks_of_a_students_node():
     from interfaces.rcl_interfaces.srv import SetParameters
 
-    from actors.params import Parameter
+    from actors.ros.parameter_store import Parameter
 
     def request(**values: float) -> SetParameters.Request:
         return SetParameters.Request(parameters=[Parameter(k, value=v).to_parameter_msg() for k, v in values.items()])

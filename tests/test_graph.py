@@ -5,8 +5,8 @@ from __future__ import annotations
 import pytest
 
 from actors.errors import GraphFileError
-from actors.graph import load_graph
-from actors.supervisor import RestartType, Strategy
+from actors.launch.graph_file import load_graph
+from actors.system.supervisor import RestartType, Strategy
 
 
 def write(tmp_path, text):

@@ -1,4 +1,4 @@
-"""Tests for actors.idl and actors.idl_gen: parsing .msg/.srv/.action text, generating modules, drift."""
+"""Tests for actors.messages.idl and actors.messages.generate: parsing .msg/.srv/.action text, generating modules, drift."""
 
 from __future__ import annotations
 
@@ -8,7 +8,9 @@ from pathlib import Path
 
 import pytest
 
-from actors import codec, idl, idl_gen
+from actors import codec
+from actors.messages import idl
+from actors.messages import generate as idl_gen
 from actors.errors import IdlError, InterfaceError, MessageValidationError
 
 THING = """\
@@ -370,5 +372,5 @@ def test_generate_rejects_unusable_names(tmp_path, name, files, problem):
 
 
 def test_module_all_is_honest():
-    for module in (idl, importlib.import_module("actors.idl_gen")):
+    for module in (idl, importlib.import_module("actors.messages.generate")):
         assert all(hasattr(module, name) for name in module.__all__)

@@ -10,8 +10,8 @@ import anyio
 import pytest
 
 from actors import Node, Runtime
-from actors.clock import ClockType, ROSClock, Time
-from actors.log import (
+from actors.ros.time import ClockType, ROSClock, Time
+from actors.ros.log import (
     LoggingSeverity,
     RosFormatter,
     configure_console,

@@ -3,7 +3,7 @@
 import pytest
 
 from actors.errors import InvalidNameError
-from actors.names import Resolver, expand, normalize_namespace, validate_node_name
+from actors.ros.names import Resolver, expand, normalize_namespace, validate_node_name
 
 
 @pytest.mark.parametrize(

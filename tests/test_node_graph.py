@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from actors import DurabilityPolicy, Node, QoSProfile, Runtime
-from actors.endpoint_info import TopicEndpointInfo, TopicEndpointTypeEnum
+from actors.ros.endpoint_info import TopicEndpointInfo, TopicEndpointTypeEnum
 from actors.errors import InvalidServiceNameException, InvalidTopicNameException
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.std_msgs.msg import String

@@ -6,8 +6,8 @@ import anyio
 import pytest
 
 from actors import Node, Parameter, Runtime
-from actors.param_client import AsyncParameterClient
-from actors.params import ParameterType, value_from_msg
+from actors.ros.param_client import AsyncParameterClient
+from actors.ros.parameter_store import ParameterType, value_from_msg
 from interfaces.rcl_interfaces.msg import ParameterDescriptor, ParameterEvent
 
 pytestmark = pytest.mark.virtual_time

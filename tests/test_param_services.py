@@ -9,7 +9,7 @@ import pytest
 
 from actors import Node, Runtime
 from actors.errors import ServiceError
-from actors.params import ParameterType, value_from_msg, value_to_msg
+from actors.ros.parameter_store import ParameterType, value_from_msg, value_to_msg
 from interfaces.std_msgs.msg import Int64
 from interfaces.rcl_interfaces.msg import Parameter as ParameterMsg
 from interfaces.rcl_interfaces.srv import (

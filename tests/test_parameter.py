@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from actors.parameter import Parameter, value_from_msg, value_to_msg
+from actors.ros.parameter import Parameter, value_from_msg, value_to_msg
 
 
 def test_a_parameter_checks_its_value_against_its_type():

@@ -18,7 +18,7 @@ from actors.errors import (
     ParameterNotDeclaredException,
     ParameterUninitializedException,
 )
-from actors.params import ParameterType, value_from_msg, value_to_msg
+from actors.ros.parameter_store import ParameterType, value_from_msg, value_to_msg
 from interfaces.rcl_interfaces.msg import (
     FloatingPointRange,
     IntegerRange,

@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import importlib
 import pkgutil
+import re
 import types
+from pathlib import Path
 
 import pytest
 
@@ -38,3 +40,18 @@ def test_actors_reexports_its_public_names():
         if not name.startswith(("_", "@")) and not isinstance(value, types.ModuleType)
     } - {"annotations"}
     assert set(actors.__all__) == public
+
+
+def test_shipped_user_code_reaches_only_public_modules():
+    # The line between public and internal: a module or package whose name starts with "_" is
+    # internal.  What users copy (the shipped nodes and worlds, the scripts, the README) must
+    # not cross it, or the line means nothing.
+    root = Path(__file__).resolve().parent.parent
+    sources = [*root.glob("nodes/*.py"), *root.glob("world/*.py"), *root.glob("scripts/*.py"), root / "README.md"]
+    private = re.compile(r"\bactors(?:\.\w+)*\._\w+")
+    crossings = [
+        f"{path.relative_to(root)}: {match.group(0)}"
+        for path in sources
+        for match in private.finditer(path.read_text(encoding="utf-8"))
+    ]
+    assert crossings == []

@@ -5,9 +5,9 @@ from __future__ import annotations
 import msgspec
 import pytest
 
-from actors.clock import Duration, Infinite
+from actors.ros.time import Duration, Infinite
 from actors.errors import InvalidQoSProfileException
-from actors.qos import (
+from actors.ros.qos import (
     DurabilityPolicy,
     HistoryPolicy,
     LivelinessPolicy,

@@ -9,8 +9,8 @@ import msgspec
 import pytest
 
 from actors import Node, Runtime
-from actors.clock import Duration
-from actors.qos import (
+from actors.ros.time import Duration
+from actors.ros.qos import (
     DurabilityPolicy,
     LivelinessPolicy,
     QoSPolicyKind,
@@ -19,14 +19,14 @@ from actors.qos import (
     qos_profile_best_available,
     qos_profile_sensor_data,
 )
-from actors.qos_events import (
+from actors.ros.qos_events import (
     PublisherEventCallbacks,
     QoSLivelinessChangedInfo,
     QoSOfferedDeadlineMissedInfo,
     QoSRequestedDeadlineMissedInfo,
     SubscriptionEventCallbacks,
 )
-from actors.topics import Publisher
+from actors.ros.topics import Publisher
 from interfaces.std_msgs.msg import String
 
 pytestmark = pytest.mark.virtual_time

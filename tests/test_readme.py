@@ -40,7 +40,7 @@ import pytest
 
 from actors import Node, Runtime
 from actors.errors import ActorsError
-from actors.names import is_hidden
+from actors.ros.names import is_hidden
 from conftest import ROOT, python_env
 
 README = ROOT / "README.md"
@@ -170,7 +170,7 @@ def test_the_graph_commands_run_as_written(private_endpoints):
 def running(words: list[str], env: dict[str, str]) -> Iterator[subprocess.Popen[str]]:
     """A wall-clock graph started by ``words``, once every node of its file runs; then Ctrl-C."""
     from actors.cli._client import connect
-    from actors.graph import load_graph
+    from actors.launch.graph_file import load_graph
 
     graph = next(word for word in words[3:] if word.endswith(".toml"))
     wanted = len(load_graph(ROOT / graph)[0].nodes)

@@ -10,7 +10,7 @@ import anyio
 import pytest
 
 from actors import Node, Runtime, VirtualTimeLoop, codec
-from actors.control import ControlEndpoint
+from actors.ops.control import ControlEndpoint
 from actors.errors import BagError
 from actors.recording import Recorder
 from actors.recording.expect import BagExpectation, differences

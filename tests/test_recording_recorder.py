@@ -10,7 +10,7 @@ import anyio
 import pytest
 
 from actors import Node, Runtime, VirtualTimeLoop, codec
-from actors.doctor import diagnose
+from actors.ops.doctor import diagnose
 from actors.recording import Recorder
 from conftest import ROOT, python_env
 from interfaces.std_msgs.msg import String
@@ -200,7 +200,7 @@ def test_a_disk_that_fills_up_leaves_a_valid_bag_and_the_graph_running(tmp_path)
         "signal.signal(signal.SIGXFSZ, signal.SIG_IGN)\n"
         "resource.setrlimit(resource.RLIMIT_FSIZE, (60_000, 60_000))\n"
         "from actors import VirtualTimeLoop\n"
-        "from actors.graph import load_graph\n"
+        "from actors.launch.graph_file import load_graph\n"
         "from actors.recording import Recorder\n"
         "from actors.run import run_graph\n"
         "graph, classes = load_graph('graphs/turtlebot.toml')\n"
@@ -258,8 +258,8 @@ class ShortLived(Node):
 
     def __init__(self) -> None:
         super().__init__("short_lived")
-        from actors.clock import Duration
-        from actors.qos import DurabilityPolicy, QoSProfile
+        from actors.ros.time import Duration
+        from actors.ros.qos import DurabilityPolicy, QoSProfile
 
         qos = QoSProfile(depth=5, lifespan=Duration(seconds=0.1), durability=DurabilityPolicy.TRANSIENT_LOCAL)
         self.pub = self.create_publisher(String, "short", qos)

@@ -8,8 +8,8 @@ import anyio
 import pytest
 
 from actors import MessageRefused, Node, Runtime
-from actors.doctor import diagnose
-from actors.refusals import LOG_BURST, LOG_PERIOD, Refusals
+from actors.ops.doctor import diagnose
+from actors.ros._refusals import LOG_BURST, LOG_PERIOD, Refusals
 from interfaces.std_msgs.msg import Int64
 
 

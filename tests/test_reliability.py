@@ -39,9 +39,9 @@ import actors.run
 from actors import Runtime
 from actors.cli._client import Connection, connect
 from actors.errors import ControlError
-from actors.connections import ConnectionLimits
-from actors.control import ControlEndpoint, Diagnose, GetGraph, Publish, Subscribe, decode_reply, endpoint_dir, frame
-from actors.doctor import Check, Report
+from actors.ops._connections import ConnectionLimits
+from actors.ops.control import ControlEndpoint, Diagnose, GetGraph, Publish, Subscribe, decode_reply, endpoint_dir, frame
+from actors.ops.doctor import Check, Report
 from conftest import ROOT, python_env
 from nodes.constant_control import ConstantControl
 from world.robot import TurtleBot

@@ -11,8 +11,8 @@ import textwrap
 import pytest
 
 from actors.errors import RosArgsError
-from actors.log import DEBUG, WARN
-from actors.rosargs import (
+from actors.ros.log import DEBUG, WARN
+from actors.launch.rosargs import (
     ParamRule,
     Remap,
     load_params_file,
@@ -213,7 +213,7 @@ def test_same_result_as_rclpy(tmp_path, params_file):
     assert rest[1:] == expected["rest"]
     for name, ns in [("talker", None), ("driver", "/robot1"), ("listener", "/robot2")]:
         node = ros.for_node(name, ns)
-        from actors.names import Resolver
+        from actors.ros.names import Resolver
 
         topic = Resolver(node.namespace, node.name, node.remap).resolve("chatter")
         assert [node.name, node.namespace, topic, node.params] == expected[name]

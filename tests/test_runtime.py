@@ -131,9 +131,9 @@ async def test_a_runtime_failed_from_outside_the_supervisor_still_stops_its_node
 @pytest.mark.virtual_time
 async def test_a_node_built_under_spawning_runs_on_the_actor_it_is_given():
     # The seam the rclpy layer builds a script's nodes with, outside the supervisor.
-    from actors.actor import Actor
-    from actors.node import SpawnRequest, spawning
-    from actors.supervisor import Child, RestartType
+    from actors.core._actor import Actor
+    from actors.ros.node import SpawnRequest, spawning
+    from actors.system.supervisor import Child, RestartType
 
     async with Runtime() as rt:
         actor = Actor(rt.loop)

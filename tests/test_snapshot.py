@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from actors import codec
 from actors.errors import MessageValidationError
-from actors.snapshot import ALONE, FLOAT32_MAX, adopter, checker, snapshot, snapshotter
+from actors.messages._copy import ALONE, FLOAT32_MAX, adopter, checker, snapshot, snapshotter
 from conftest import generated_package
 from goldens.values import DrawPick, message, shipped_messages
 from interfaces.geometry_msgs.msg import PoseWithCovariance, Twist, Vector3

@@ -12,8 +12,9 @@ import anyio
 import pytest
 
 from actors import Node, Runtime
-from actors.clock import Clock, ClockType, Time, VirtualTimeLoop
-from actors.timers import TimerInfo, _timer_info_parameter
+from actors.core.loops import VirtualTimeLoop
+from actors.ros.time import Clock, ClockType, Time
+from actors.ros.timers import TimerInfo, _timer_info_parameter
 from conftest import live_loop_timers
 from interfaces.std_msgs.msg import String
 
@@ -402,7 +403,7 @@ async def test_a_node_a_tick_wakes_runs_in_its_own_round_after_the_ticks():
 
 
 async def test_ticks_run_in_the_runtimes_one_context_alone_or_due_together():
-    # Rounds share one context (actors.actor): what a tick's callback sets, the callbacks after it see,
+    # Rounds share one context (actors.core._actor): what a tick's callback sets, the callbacks after it see,
     # a subscription's round (a loop callback of its own) included, and the runtime's caller does not.
     var: contextvars.ContextVar[str] = contextvars.ContextVar("var", default="unset")
     seen: list[tuple[str, str]] = []

@@ -10,7 +10,7 @@ import anyio.abc
 import pytest
 
 from actors import DurabilityPolicy, Node, QoSProfile, ReliabilityPolicy, Runtime, ServiceError, SupervisorPolicy
-from actors.qos import QoSSnapshot
+from actors.ros.qos import QoSSnapshot
 from actors.transport import Hub, Inlet, Outlet, RemoteEndpoint, RemoteNode, RemoteService, is_proxy
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.std_msgs.msg import Int64, String

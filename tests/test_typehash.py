@@ -8,7 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from actors import codec, typehash
+from actors import codec
+from actors.messages import typehash
 from actors.errors import UnknownInterfaceError
 from goldens.values import shipped_types
 from interfaces.std_msgs.msg import Empty
@@ -79,7 +80,7 @@ def test_bounded_types_and_arrays_change_the_hash(tmp_path):
     definitions = {"A": "string<=5 s\n", "B": "string s\n", "C": "int32[3] v\n", "D": "int32[<=3] v\n", "E": "int32[] v\n"}
     for name, text in definitions.items():
         (root / "hash_pkg" / "msg" / f"{name}.msg").write_text(text)
-    from actors import idl_gen
+    from actors.messages import generate as idl_gen
 
     idl_gen.generate([root])
     codec.register_root(root)

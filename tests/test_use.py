@@ -14,12 +14,12 @@ from pathlib import Path
 import pytest
 
 from actors.errors import GraphFileError
-from actors.graph import load_graph
-from actors.use import shipped_graphs
+from actors.launch.graph_file import load_graph
+from actors.launch.importing import shipped_graphs
 from conftest import ROOT
 
 WHICH = (
-    "import sys; from actors.graph import load_graph; "
+    "import sys; from actors.launch.graph_file import load_graph; "
     "_, classes = load_graph(sys.argv[1]); "
     "print(*[f'{c.__module__}={sys.modules[c.__module__].__file__}' for c in classes])"
 )

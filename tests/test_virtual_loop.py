@@ -17,7 +17,7 @@ import threading
 
 import pytest
 
-from actors.clock import VirtualTimeLoop
+from actors.core.loops import VirtualTimeLoop
 
 
 class AsyncioIteration(VirtualTimeLoop):

@@ -326,10 +326,10 @@ async def test_the_world_says_when_a_robot_touches_something_and_when_it_is_free
 @pytest.mark.parametrize("path", ["graphs/turtlebot.toml", "graph.toml"])
 async def test_the_demo_robot_drives_a_minute_without_touching_anything_until_killed_then_stops(path):
     """The demo graphs as configured: /kill at any time in the first minute is visibly what stops it."""
-    from actors.graph import load_graph
+    from actors.launch.graph_file import load_graph
 
     graph, classes = load_graph(ROOT / path)
-    # The shipped graph's classes are actors.world's (see actors.use), graph.toml's the repository's.
+    # The shipped graph's classes are actors.world's (see actors.launch.importing), graph.toml's the repository's.
     robot_part = [(e, c) for e, c in zip(graph.nodes, classes) if c.__name__ in ("World", "TurtleBot", "ConstantControl")]
     assert len(robot_part) == 3
     async with Runtime() as rt:

@@ -13,7 +13,7 @@ import anyio
 import pytest
 
 from actors import Node, Runtime, ServiceError
-from actors.doctor import diagnose
+from actors.ops.doctor import diagnose
 from actors.transport.zenoh import ZenohTransport
 from actors.transport.zenoh.attachment import pack
 from actors.transport.zenoh.keys import data_key

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from actors import codec
-from actors.qos import DurabilityPolicy, HistoryPolicy, LivelinessPolicy, QoSSnapshot, ReliabilityPolicy
+from actors.ros.qos import DurabilityPolicy, HistoryPolicy, LivelinessPolicy, QoSSnapshot, ReliabilityPolicy
 from actors.transport.zenoh import attachment
 from actors.transport.zenoh.keys import (
     data_key,

@@ -14,7 +14,7 @@ from typing import Any
 
 import anyio
 
-from actors.graph import TransportSection
+from actors.launch.graph_file import TransportSection
 from conftest import ROOT, python_env
 
 __all__ = ["free_port", "zenoh_env", "Process", "spawned", "section", "raw_config", "peer", "matched", "until"]

@@ -40,9 +40,9 @@ from typing import Annotated, NamedTuple
 
 import msgspec
 
-from actors.config import load_toml
+from actors.core.tomlfile import load_toml
 from actors.errors import WorldFileError
-from actors.explain import did_you_mean
+from actors.core.explain import did_you_mean
 
 __all__ = [
     "WORLDS_DIR",

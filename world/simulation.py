@@ -16,7 +16,7 @@ import numpy as np
 import pymunk
 import pymunk.autogeometry
 
-from actors.explain import did_you_mean
+from actors.core.explain import did_you_mean
 
 from .arena import Post, Solid, World, load_world, posts, solids
 from .drive import MODELS, Contact, Pose, Robot, RobotModel

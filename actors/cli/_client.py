@@ -22,7 +22,7 @@ from typing import Any, TypeVar
 
 import msgspec
 
-from actors.control import (
+from actors.ops.control import (
     Call,
     GetGraph,
     GraphSnapshot,
@@ -340,7 +340,7 @@ def print_matching(entries: Iterable[Any], type_: str, count_only: bool) -> None
 
 def type_of(entries: Iterable[Any], name: str, what: str) -> str:
     """The type of the entry called ``name`` (a topic, a service, an action); ControlError if none."""
-    from actors.names import expand
+    from actors.ros.names import expand
 
     full = expand(name, "/", "_", what=f"{what} name")
     for entry in entries:
@@ -357,7 +357,7 @@ def add_type_and_find(
     ``entries`` picks the topics (or services...) out of the graph; ``example``
     is a type of them, for the help.
     """
-    from actors.names import is_hidden_name
+    from actors.ros.names import is_hidden_name
 
     def type_verb(args: argparse.Namespace) -> None:
         print(type_of(entries(graph_snapshot(args)), args.name, what))

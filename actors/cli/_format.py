@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, Any
 from actors.errors import ControlError
 
 if TYPE_CHECKING:
-    from actors.layout import FieldLayout, MessageLayout
+    from actors.messages._fields import FieldLayout, MessageLayout
 
 __all__ = ["ros_repr", "yaml_text", "parse_yaml", "field"]
 
@@ -31,7 +31,7 @@ def yaml_text(value: Any, *, no_arr: bool = False, no_str: bool = False) -> str:
     ``no_str`` its ``<string length: <N>>`` in place of each string.
     """
     from actors import codec
-    from actors.layout import layout
+    from actors.messages._fields import layout
 
     if hasattr(type(value), "__ros_type__"):
         if not (no_arr or no_str):
@@ -47,7 +47,7 @@ _IDL_NAMES = {"bool": "boolean", "byte": "octet", "char": "uint8", "float32": "f
 
 def _abridged(data: dict[str, Any], message: MessageLayout, no_arr: bool, no_str: bool) -> dict[str, Any]:
     """``data`` (a message's builtins) with arrays and strings summarised, nested messages too."""
-    from actors.idl import STRINGS
+    from actors.messages.idl import STRINGS
 
     def one(value: Any, field: FieldLayout) -> Any:
         if field.nested is not None:

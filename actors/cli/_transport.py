@@ -26,9 +26,9 @@ from pathlib import Path
 
 import anyio
 
-from actors.control import ControlServer
+from actors.ops.control import ControlServer
 from actors.errors import ActorsError, ControlError
-from actors.graph import TransportSection
+from actors.launch.graph_file import TransportSection
 from actors.runtime import Runtime
 from actors.transport.zenoh import ZenohTransport
 

@@ -1,7 +1,7 @@
 """``actors action list|info|type|find|send_goal``: a running graph's actions, as ``ros2 action`` shows them.
 
 Actions are read off the graph's topics and services (see
-:mod:`actors.introspection`).  ``send_goal`` drives an action through the
+:mod:`actors.system.introspection`).  ``send_goal`` drives an action through the
 control endpoint's ordinary operations: it subscribes to the feedback topic
 (with ``--feedback``) and calls the action's ``send_goal`` and ``get_result``
 services, as any ROS client does on the wire.
@@ -61,13 +61,13 @@ def register(subparsers: Any) -> None:
 
 
 def _actions(args: argparse.Namespace) -> list[Any]:
-    from actors.introspection import action_infos
+    from actors.system.introspection import action_infos
 
     return action_infos(graph_snapshot(args).topics)
 
 
 def _expand(name: str) -> str:
-    from actors.names import expand
+    from actors.ros.names import expand
 
     return expand(name, "/", "_", what="action name")
 
@@ -112,7 +112,7 @@ def send_goal(args: argparse.Namespace) -> int:
     goal runs, it asks the server to cancel the goal first.
     """
     from actors import codec
-    from actors.actions import status_name, wire_names
+    from actors.ros.actions import status_name, wire_names
     from actors.cli._format import yaml_text
     from actors.errors import UnknownInterfaceError
     from interfaces.unique_identifier_msgs.msg import UUID
@@ -153,7 +153,7 @@ def send_goal(args: argparse.Namespace) -> int:
 
 def _check_server(conn: Connection, name: str, type_: str) -> None:
     from actors.errors import ControlError
-    from actors.introspection import action_infos
+    from actors.system.introspection import action_infos
 
     found = next((a for a in action_infos(conn.graph().topics) if a.name == name), None)
     if found is None or not found.servers:
@@ -164,7 +164,7 @@ def _check_server(conn: Connection, name: str, type_: str) -> None:
 
 def _follow(graph: str, topic: str) -> Connection:
     """A second connection streaming the feedback topic (replies and samples never share one)."""
-    from actors.control import Subscribe
+    from actors.ops.control import Subscribe
 
     feed = connect(graph)
     feed.request(Subscribe(topic=topic, depth=1000))

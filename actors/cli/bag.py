@@ -129,7 +129,7 @@ def play_bag(args: argparse.Namespace) -> None:
     virtual time as fast as the graph handles them.  Topics whose type is
     unknown here are named and skipped.  Ctrl-C stops the playing.
     """
-    from actors.control import Play
+    from actors.ops.control import Play
     from actors.errors import BagError
     from actors.recording.player import parse_remaps, plan
 
@@ -166,9 +166,9 @@ def record_bag(args: argparse.Namespace) -> None:
     import selectors
 
     from actors import codec
-    from actors.control import Subscribe
+    from actors.ops.control import Subscribe
     from actors.errors import BagError, ControlError
-    from actors.names import expand, is_hidden_name
+    from actors.ros.names import expand, is_hidden_name
     from actors.recording.bag_writer import BagWriter
 
     if not args.all and not args.topics:

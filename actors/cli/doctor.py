@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any
 from actors.cli._client import add_verb, connect
 
 if TYPE_CHECKING:
-    from actors.doctor import Check
+    from actors.ops.doctor import Check
 
 __all__ = ["register"]
 
@@ -43,9 +43,9 @@ def doctor(args: argparse.Namespace) -> None:
     ``--include-warnings`` is given; then it is listed with the failures.
     Exits 0 either way: the checks ran.  Only an unreachable graph is an error.
     """
-    from actors.control import Diagnose
-    from actors.doctor import Report
-    from actors.introspection import action_infos
+    from actors.ops.control import Diagnose
+    from actors.ops.doctor import Report
+    from actors.system.introspection import action_infos
 
     with connect(args.graph) as conn:
         report = conn.request(Diagnose(), Report)

@@ -19,7 +19,7 @@ from actors.cli._client import add_verb, graph_snapshot
 from actors.errors import ControlError
 
 if TYPE_CHECKING:
-    from actors.control import GraphSnapshot
+    from actors.ops.control import GraphSnapshot
 
 __all__ = ["register", "to_dot"]
 
@@ -94,8 +94,8 @@ def _edges(
     graph: GraphSnapshot, everything: bool
 ) -> tuple[list[str], list[str], list[tuple[str, str, bool]]]:
     """Node names, topic names and edges ``(node, topic, node_publishes)`` to draw."""
-    from actors.names import is_hidden
-    from actors.doctor import IGNORED_TOPICS
+    from actors.ros.names import is_hidden
+    from actors.ops.doctor import IGNORED_TOPICS
 
     nodes = {n.name for n in graph.nodes if everything or not is_hidden(n.name)}
     topics, edges = [], []

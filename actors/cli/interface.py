@@ -142,7 +142,7 @@ def show_type(args: argparse.Namespace) -> None:
 
 def generate_modules(args: argparse.Namespace) -> None:
     """Generate the modules of each root and print the files written; raises IdlError."""
-    from actors import idl_gen
+    from actors.messages import generate as idl_gen
 
     written = idl_gen.generate(args.roots)
     for path in written:
@@ -156,7 +156,8 @@ def _expand(cls: type, comments: bool, depth: int = 0) -> list[str]:
 
     As ``ros2 interface show`` does, nested types are shown without comments.
     """
-    from actors import codec, idl
+    from actors import codec
+    from actors.messages import idl
 
     pkg, kind, name = cls.__ros_type__.split("/")
     text = cls.__ros_definition__

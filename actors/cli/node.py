@@ -6,9 +6,9 @@ import argparse
 from typing import Any
 
 from actors.cli._client import add_verb, graph_snapshot, query
-from actors.control import GetNode, NodeDetail
-from actors.introspection import action_of
-from actors.names import is_hidden, is_hidden_name
+from actors.ops.control import GetNode, NodeDetail
+from actors.system.introspection import action_of
+from actors.ros.names import is_hidden, is_hidden_name
 
 __all__ = ["register"]
 

@@ -99,7 +99,7 @@ def list_parameters(args: argparse.Namespace) -> None:
 
 def get_parameter(args: argparse.Namespace) -> None:
     """Print ``String value is: world`` and the like; ControlError when the parameter is not set."""
-    from actors.params import value_from_msg
+    from actors.ros.parameter_store import value_from_msg
 
     with connect(args.graph) as conn:
         (node,) = _nodes(conn, args.node)
@@ -193,7 +193,7 @@ def load_parameters(args: argparse.Namespace) -> int:
     RosArgsError (exit 2) for a file that is not one, ControlError when it
     has nothing for NODE.
     """
-    from actors.rosargs import load_params_file, node_key_matches
+    from actors.launch.rosargs import load_params_file, node_key_matches
 
     rules = load_params_file(args.file)
     with connect(args.graph) as conn:
@@ -216,7 +216,7 @@ def load_parameters(args: argparse.Namespace) -> int:
 
 def _parameter(name: str, value: Any) -> Any:
     """``rcl_interfaces/msg/Parameter`` holding ``value``; ControlError if no parameter can."""
-    from actors.params import value_to_msg
+    from actors.ros.parameter_store import value_to_msg
     from interfaces.rcl_interfaces.msg import Parameter
 
     try:
@@ -242,7 +242,7 @@ def _outcome(result: Any, done: str, failed: str) -> int:
 def dump_parameters(args: argparse.Namespace) -> None:
     """Print ``/node:`` / ``ros__parameters:`` / ``name: value``: a parameters file."""
     from actors.cli._format import yaml_text
-    from actors.params import value_from_msg
+    from actors.ros.parameter_store import value_from_msg
 
     with connect(args.graph) as conn:
         (node,) = _nodes(conn, args.node)
@@ -254,7 +254,7 @@ def dump_parameters(args: argparse.Namespace) -> None:
 
 def _nodes(conn: Connection, name: str | None) -> list[str]:
     """``[name]`` in full if the graph has it (else ControlError); every node when None."""
-    from actors.names import expand
+    from actors.ros.names import expand
 
     nodes = sorted(node.name for node in conn.graph().nodes)
     if name is None:

@@ -50,8 +50,8 @@ def register(subparsers: Any) -> None:
 
 def create(args: argparse.Namespace) -> None:
     """Write the package; ControlError (exit 2) for a bad name or an existing folder."""
-    from actors.idl import PACKAGE_NAME
-    from actors.names import validate_node_name
+    from actors.messages.idl import PACKAGE_NAME
+    from actors.ros.names import validate_node_name
 
     package = args.package_name
     node = args.node_name or f"{package}_node"

@@ -44,7 +44,7 @@ def register(subparsers: Any) -> None:
 
 def list_services(args: argparse.Namespace) -> None:
     """Print each service's name, with ``[type]`` under ``-t``; hidden ones only when asked."""
-    from actors.names import is_hidden_name
+    from actors.ros.names import is_hidden_name
 
     services = graph_snapshot(args).services
     print_names([s for s in services if args.include_hidden_services or not is_hidden_name(s.name)], args.show_types)

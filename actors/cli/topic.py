@@ -10,7 +10,7 @@ from actors.cli._client import add_type_and_find, add_verb, connect, graph_snaps
 
 if TYPE_CHECKING:
     from actors.cli._client import Connection
-    from actors.control import Sample
+    from actors.ops.control import Sample
 
 __all__ = ["register"]
 
@@ -107,7 +107,7 @@ def _positive(text: str) -> float:
 
 def list_topics(args: argparse.Namespace) -> None:
     """Print each topic's name, with ``[type]`` under ``-t``; hidden ones only when asked."""
-    from actors.names import is_hidden_name
+    from actors.ros.names import is_hidden_name
 
     topics = graph_snapshot(args).topics
     print_names([t for t in topics if args.include_hidden_topics or not is_hidden_name(t.name)], args.show_types)
@@ -116,7 +116,7 @@ def list_topics(args: argparse.Namespace) -> None:
 def topic_info(args: argparse.Namespace) -> None:
     """Print the type and endpoint counts (with ``-v``, each endpoint); ControlError if unknown."""
     from actors.errors import ControlError
-    from actors.names import expand
+    from actors.ros.names import expand
 
     name = expand(args.topic, "/", "_")
     topic = next((t for t in graph_snapshot(args).topics if t.name == name), None)
@@ -158,7 +158,7 @@ def echo_topic(args: argparse.Namespace) -> None:
     """
     from actors import codec
     from actors.cli._format import field, yaml_text
-    from actors.control import Subscribe
+    from actors.ops.control import Subscribe
 
     asked = codec.ros_name(codec.get_type(args.type)) if args.type else ""
     with connect(args.graph) as conn:
@@ -185,7 +185,7 @@ def publish(args: argparse.Namespace) -> None:
 
     from actors import codec
     from actors.cli._format import ros_repr
-    from actors.control import Publish
+    from actors.ops.control import Publish
 
     msg_type = codec.get_type(args.type)
     msg = codec.from_yaml(args.values, msg_type)
@@ -215,7 +215,7 @@ def topic_hz(args: argparse.Namespace) -> None:
     import math
     from collections import deque
 
-    from actors.control import Subscribe
+    from actors.ops.control import Subscribe
 
     intervals: deque[float] = deque(maxlen=max(1, args.window))
     last: float | None = None
@@ -263,7 +263,7 @@ def topic_bw(args: argparse.Namespace) -> None:
     from collections import deque
 
     from actors import codec
-    from actors.control import Subscribe
+    from actors.ops.control import Subscribe
 
     window: deque[tuple[float, int]] = deque(maxlen=max(2, args.window))
 

@@ -72,7 +72,7 @@ on without it (a thread reading the keyboard must not stop a run).
 
 **What it costs native users: nothing.**  Native nodes, publish, delivery and
 timers run exactly the code they ran before; the hooks the overlay uses are a
-node's actor handed in through :class:`~actors.node.SpawnRequest` and the
+node's actor handed in through :class:`~actors.ros.node.SpawnRequest` and the
 virtual-time loop's ``threads_busy()``.
 """
 

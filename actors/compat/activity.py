@@ -51,8 +51,8 @@ from contextlib import contextmanager
 from types import FrameType
 from typing import Any
 
-from actors.clock import VirtualTimeLoop
-from actors.log import ROOT_LOGGER
+from actors.core.loops import VirtualTimeLoop
+from actors.ros.log import ROOT_LOGGER
 
 __all__ = ["Activity", "Token", "Waiter", "ScriptTimeLoop", "HOLD_WARNING", "run_as"]
 

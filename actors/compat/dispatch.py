@@ -27,8 +27,8 @@ from collections import deque
 from collections.abc import Awaitable, Callable, Coroutine
 from typing import Any, Protocol
 
-from actors.actions import ActionCall, ActionClient, ActionServer
-from actors.actor import Actor, Entity
+from actors.ros.actions import ActionCall, ActionClient, ActionServer
+from actors.core._actor import Actor, Entity
 
 __all__ = ["Dispatcher", "ScriptActor", "WorkSource", "NativeWork", "NativeProxy", "NodeState", "ScriptNode", "SpinningExecutor"]
 

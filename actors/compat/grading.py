@@ -34,10 +34,10 @@ from actors.compat.rclpy.context import use_session
 from actors.compat.rclpy.executors import ExternalShutdownException
 from actors.compat.rclpy.utilities import get_default_context, try_shutdown
 from actors.compat.session import Session
-from actors.graph import load_graph
-from actors.log import INFO, ROOT_LOGGER, RosFormatter
-from actors.node import Node as NativeNode
-from actors.topics import HistoryPolicy, QoSProfile, ReliabilityPolicy
+from actors.launch.graph_file import load_graph
+from actors.ros.log import INFO, ROOT_LOGGER, RosFormatter
+from actors.ros.node import Node as NativeNode
+from actors.ros.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy
 
 __all__ = ["ScriptRun", "run_script", "run_node"]
 

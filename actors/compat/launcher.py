@@ -42,11 +42,11 @@ from actors.compat.rclpy.executors import ExternalShutdownException
 from actors.compat.rclpy.utilities import get_default_context, try_shutdown
 from actors.compat.script_state import ScriptArgv
 from actors.compat.session import Session
-from actors.control import ControlEndpoint
+from actors.ops.control import ControlEndpoint
 from actors.errors import ActorsError, GraphFileError, RosArgsError
-from actors.graph import load_graph
-from actors.log import INFO, LEVELS, configure_console
-from actors.rosargs import parse
+from actors.launch.graph_file import load_graph
+from actors.ros.log import INFO, LEVELS, configure_console
+from actors.launch.rosargs import parse
 
 __all__ = ["run_script"]
 

@@ -29,12 +29,12 @@ import anyio
 import anyio.abc
 import anyio.from_thread
 
-from actors.clock import precise_loop
+from actors.core.loops import precise_loop
 from actors.compat.activity import Activity, ScriptTimeLoop, Waiter, run_as
 from actors.compat.dispatch import Dispatcher
-from actors.graph import GraphFile
-from actors.node import Node
-from actors.run import spawn_graph
+from actors.launch.graph_file import GraphFile
+from actors.ros.node import Node
+from actors.launch.spawn import spawn_graph
 from actors.runtime import Attachment, Runtime
 
 try:  # anyio tells its backend by sniffio when that is installed: a loop callback must say it

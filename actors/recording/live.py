@@ -34,10 +34,10 @@ import anyio.abc
 
 from actors import codec
 from actors.errors import ActorsError
-from actors.names import is_hidden_name
+from actors.ros.names import is_hidden_name
 from actors.recording.tap import Tap, TapOwner, TapSet, latched
 from actors.services import Client, Service
-from actors.topics import type_name
+from actors.ros.topics import type_name
 
 if TYPE_CHECKING:
     from actors.runtime import Runtime

@@ -21,11 +21,12 @@ from typing import TYPE_CHECKING, Any
 import yaml
 
 from actors import codec
-from actors.actor import Actor
+from actors.core._actor import Actor
 from actors.errors import ActorsError, InterfaceError
-from actors.names import expand
+from actors.ros.names import expand
 from actors.recording.reader import Bag
-from actors.topics import DurabilityPolicy, HistoryPolicy, Publisher, QoSProfile, ReliabilityPolicy
+from actors.ros.topics import Publisher
+from actors.ros.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 
 if TYPE_CHECKING:
     from actors.runtime import Runtime

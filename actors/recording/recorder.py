@@ -31,7 +31,7 @@ import anyio
 import anyio.abc
 
 from actors import codec
-from actors.names import expand, is_hidden_name
+from actors.ros.names import expand, is_hidden_name
 from actors.recording.bag_writer import BagWriter
 from actors.recording.tap import Tap, TapSet
 

@@ -20,17 +20,9 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from actors import codec
-from actors.actor import Actor
-from actors.topics import (
-    DurabilityPolicy,
-    Expiring,
-    Publisher,
-    QoSProfile,
-    ReliabilityPolicy,
-    Subscription,
-    Topic,
-    type_name,
-)
+from actors.core._actor import Actor
+from actors.ros.topics import Expiring, Publisher, Subscription, Topic, type_name
+from actors.ros.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
 if TYPE_CHECKING:
     from actors.runtime import Runtime

@@ -2,7 +2,7 @@
 
 A transport is an attachment (``Runtime(attach=[...])``) that carries topics
 and services to other processes.  It learns of the graph's own endpoints
-through the tables' listeners (:class:`~actors.topics.TopicListener`,
+through the tables' listeners (:class:`~actors.ros.topics.TopicListener`,
 :class:`~actors.services.ServiceListener`), and joins the tables through
 three kinds of endpoints of its own, all owned by one hidden :class:`Hub`:
 
@@ -34,12 +34,12 @@ from typing import Any, Protocol, runtime_checkable
 
 import msgspec
 
-from actors.actor import Actor
+from actors.core._actor import Actor
 from actors.errors import ServiceError
-from actors.log import NodeLogger
-from actors.qos import DurabilityPolicy, QoSSnapshot, ReliabilityPolicy
+from actors.ros.log import NodeLogger
+from actors.ros.qos import DurabilityPolicy, QoSSnapshot, ReliabilityPolicy
 from actors.services import Service, ServiceListener
-from actors.topics import Publisher, Subscription, TopicListener, type_name
+from actors.ros.topics import Publisher, Subscription, TopicListener, type_name
 
 __all__ = [
     "Hub",
@@ -74,7 +74,7 @@ class Hub:
         """The transport's logger."""
         return self._logger
 
-    # The transport removes its endpoints itself; these only satisfy actors.actor.Owner.
+    # The transport removes its endpoints itself; these only satisfy actors.core._actor.Owner.
     def destroy_publisher(self, publisher: Any) -> None: ...
 
     def destroy_subscription(self, subscription: Any) -> None: ...

@@ -31,7 +31,7 @@ HERE = Path(__file__).resolve().parent
 sys.path[:0] = [str(HERE.parent.parent), str(HERE.parent)]
 
 from actors import codec  # noqa: E402
-from actors.idl import shipped_root  # noqa: E402
+from actors.messages.idl import shipped_root  # noqa: E402
 from goldens.ros import rclpy_class, same_wire, to_rclpy  # noqa: E402
 from goldens.values import RandomPick, message, shipped_messages, shipped_types  # noqa: E402
 

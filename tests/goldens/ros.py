@@ -2,7 +2,7 @@
 
 rclpy's ``serialize_message`` (rmw_fastrtps) writes the same CDR as
 ``encode_cdr`` but leaves the alignment padding as its buffer held it and
-returns as many bytes as its size estimate says (see :mod:`actors.cdr`).
+returns as many bytes as its size estimate says (see :mod:`actors.messages.cdr`).
 :func:`same_wire` therefore compares every byte that is not padding (found
 by encoding twice with different padding bytes) and checks rclpy's length
 against :func:`fastrtps_length`, a model of that estimate.
@@ -13,9 +13,9 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
-from actors import cdr
-from actors.idl import OCTETS, STRINGS
-from actors.layout import MessageLayout, layout
+from actors.messages import cdr
+from actors.messages.idl import OCTETS, STRINGS
+from actors.messages._fields import MessageLayout, layout
 
 __all__ = ["rclpy_class", "to_rclpy", "same_wire", "padding_positions", "fastrtps_length"]
 

@@ -15,8 +15,8 @@ import struct
 from typing import Any, Protocol
 
 from actors import codec
-from actors.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType, shipped_root
-from actors.layout import MessageLayout, layout
+from actors.messages.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType, shipped_root
+from actors.messages._fields import MessageLayout, layout
 
 __all__ = ["Pick", "RandomPick", "DrawPick", "message", "shipped_types", "shipped_messages", "float32"]
 

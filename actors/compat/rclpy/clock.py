@@ -2,6 +2,6 @@
 
 from __future__ import annotations
 
-from actors.clock import Clock, ClockType, ROSClock
+from actors.ros.time import Clock, ClockType, ROSClock
 
 __all__ = ["Clock", "ClockType", "ROSClock"]

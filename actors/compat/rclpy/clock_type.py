@@ -2,6 +2,6 @@
 
 from __future__ import annotations
 
-from actors.clock import ClockType
+from actors.ros.time import ClockType
 
 __all__ = ["ClockType"]

@@ -2,6 +2,6 @@
 
 from __future__ import annotations
 
-from actors.clock import Duration, Infinite
+from actors.ros.time import Duration, Infinite
 
 __all__ = ["Duration", "Infinite"]

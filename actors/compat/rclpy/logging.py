@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from actors.log import (
+from actors.ros.log import (
     LoggingSeverity,
     NodeLogger,
     get_logger,

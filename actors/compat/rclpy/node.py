@@ -33,11 +33,11 @@ from actors.compat.rclpy.service import Service
 from actors.compat.rclpy.subscription import Subscription
 from actors.compat.rclpy.timer import Rate, Timer
 from actors.compat.rclpy.utilities import get_default_context
-from actors.log import NodeLogger
-from actors.node import Node as NativeNode
-from actors.node import SpawnRequest, spawning
-from actors.rosargs import RosArgs, parse
-from actors.supervisor import RestartType
+from actors.ros.log import NodeLogger
+from actors.ros.node import Node as NativeNode
+from actors.ros.node import SpawnRequest, spawning
+from actors.launch.rosargs import RosArgs, parse
+from actors.system.supervisor import RestartType
 
 if TYPE_CHECKING:
     from actors.compat.session import Session

@@ -14,7 +14,7 @@ from typing import Any
 
 from actors.compat.rclpy.parameter import parameter_dict_from_yaml_file
 from actors.compat.rclpy.task import Future
-from actors.param_client import AsyncParameterClient as NativeParameterClient
+from actors.ros.param_client import AsyncParameterClient as NativeParameterClient
 
 __all__ = ["AsyncParameterClient"]
 

@@ -14,10 +14,10 @@ from collections import deque
 from collections.abc import Callable
 from typing import Any, TypedDict
 
-from actors import cdr
+from actors.messages import cdr
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
 from actors.compat.rclpy.task import await_or_execute
-from actors.topics import HistoryPolicy
+from actors.ros.qos import HistoryPolicy
 
 
 __all__ = ["Subscription", "MessageInfo", "serialized"]

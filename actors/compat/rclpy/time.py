@@ -2,6 +2,6 @@
 
 from __future__ import annotations
 
-from actors.clock import ClockType, Time
+from actors.ros.time import ClockType, Time
 
 __all__ = ["Time", "ClockType"]

@@ -16,7 +16,7 @@ from actors.compat.activity import Waiter
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
 from actors.compat.rclpy.exceptions import ROSInterruptException
 from actors.compat.rclpy.task import await_or_execute
-from actors.timers import TimerInfo
+from actors.ros.timers import TimerInfo
 
 
 __all__ = ["Timer", "Rate", "TimerInfo"]

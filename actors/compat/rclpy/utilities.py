@@ -8,7 +8,7 @@ from collections.abc import Sequence
 from actors.compat.rclpy.constants import S_TO_NS
 from actors.compat.rclpy.context import Context
 from actors.compat.script_state import script_state
-from actors.rosargs import remove_ros_args as _remove_ros_args
+from actors.launch.rosargs import remove_ros_args as _remove_ros_args
 
 __all__ = [
     "get_default_context",

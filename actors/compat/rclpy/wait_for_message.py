@@ -7,7 +7,7 @@ from typing import Any
 from actors.compat.activity import Waiter
 from actors.compat.dispatch import ScriptNode
 from actors.compat.rclpy.subscription import Subscription
-from actors.node import Node as NativeNode
+from actors.ros.node import Node as NativeNode
 
 __all__ = ["wait_for_message"]
 

@@ -31,7 +31,7 @@ from types import ModuleType
 from typing import Any
 
 from actors.errors import TransportError
-from actors.graph import TransportSection
+from actors.launch.graph_file import TransportSection
 
 __all__ = ["INSTALL_HINT", "RENDEZVOUS", "load_zenoh", "domain_id", "session_config"]
 

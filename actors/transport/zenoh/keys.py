@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import msgspec
 
-from actors.qos import DurabilityPolicy, HistoryPolicy, LivelinessPolicy, QoSSnapshot, ReliabilityPolicy
+from actors.ros.qos import DurabilityPolicy, HistoryPolicy, LivelinessPolicy, QoSSnapshot, ReliabilityPolicy
 
 __all__ = [
     "ADMIN_SPACE",

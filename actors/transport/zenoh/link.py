@@ -14,9 +14,9 @@ from typing import Any
 
 from actors import codec
 from actors.errors import ActorsError
-from actors.log import NodeLogger
-from actors.qos import QoSSnapshot
-from actors.topics import type_name
+from actors.ros.log import NodeLogger
+from actors.ros.qos import QoSSnapshot
+from actors.ros.topics import type_name
 from actors.transport.seam import Hub
 from actors.transport.zenoh.attachment import gid_of
 from actors.transport.zenoh.handoff import Handoff

@@ -26,7 +26,7 @@ from typing import Any
 
 from actors import codec
 from actors.errors import ServiceError
-from actors.qos import QoSSnapshot
+from actors.ros.qos import QoSSnapshot
 from actors.services import Client, Service, ServiceTable
 from actors.transport.seam import RemoteService, submit
 from actors.transport.zenoh.attachment import gid_of, pack, unpack

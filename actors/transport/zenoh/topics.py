@@ -28,8 +28,8 @@ from __future__ import annotations
 from typing import Any
 
 from actors import codec
-from actors.qos import DurabilityPolicy, HistoryPolicy, ReliabilityPolicy
-from actors.topics import Publisher, Subscription, Topic, TopicTable
+from actors.ros.qos import DurabilityPolicy, HistoryPolicy, ReliabilityPolicy
+from actors.ros.topics import Publisher, Subscription, Topic, TopicTable
 from actors.transport.seam import Inlet, Outlet
 from actors.transport.zenoh.attachment import pack, unpack
 from actors.transport.zenoh.link import Endpoint, Link

@@ -1,4 +1,4 @@
-"""``rclpy.action.client``: a script node's action client, on the native one (:mod:`actors.actions`).
+"""``rclpy.action.client``: a script node's action client, on the native one (:mod:`actors.ros.actions`).
 
 Each request (send a goal, get its result, cancel it) runs as a call of the
 native client on the runtime's thread; its answer is queued on this waitable
@@ -21,13 +21,13 @@ from collections.abc import Awaitable, Callable
 from functools import partial
 from typing import TYPE_CHECKING, Any
 
-from actors.actions import ActionClient as NativeClient
-from actors.actions import ClientGoalHandle as NativeGoal
+from actors.ros.actions import ActionClient as NativeClient
+from actors.ros.actions import ClientGoalHandle as NativeGoal
 from actors.compat.activity import Waiter
 from actors.compat.dispatch import ScriptNode
 from actors.compat.rclpy.action.base import ActionWork, GoalHandle
 from actors.compat.rclpy.task import Future, await_or_execute
-from actors.node import Node as NativeNode
+from actors.ros.node import Node as NativeNode
 from interfaces.action_msgs.msg import GoalStatus
 from interfaces.action_msgs.srv import CancelGoal
 from interfaces.unique_identifier_msgs.msg import UUID

@@ -1,4 +1,4 @@
-"""``rclpy.action.server``: a script node's action server, on the native one (:mod:`actors.actions`).
+"""``rclpy.action.server``: a script node's action server, on the native one (:mod:`actors.ros.actions`).
 
 The native server keeps the goals, their states, results and timeouts; its
 goal, cancel and accepted callbacks are the overlay's *catchers*, which run on
@@ -25,14 +25,14 @@ from collections.abc import Callable
 from functools import partial
 from typing import Any
 
-from actors.actions import ActionServer as NativeServer
-from actors.actions import CancelResponse, GoalEvent, GoalResponse
-from actors.actions import ServerGoalHandle as NativeGoal
+from actors.ros.actions import ActionServer as NativeServer
+from actors.ros.actions import CancelResponse, GoalEvent, GoalResponse
+from actors.ros.actions import ServerGoalHandle as NativeGoal
 from actors.compat.dispatch import ScriptNode
 from actors.compat.rclpy.action.base import ActionWork, GoalHandle
 from actors.compat.rclpy.task import Task, await_or_execute
 from actors.errors import ActionError
-from actors.node import Node as NativeNode
+from actors.ros.node import Node as NativeNode
 from interfaces.action_msgs.msg import GoalStatus
 
 __all__ = [

@@ -1,5 +1,5 @@
-"""``rclpy.impl.logging_severity``: the severities, as :mod:`actors.log` numbers them."""
+"""``rclpy.impl.logging_severity``: the severities, as :mod:`actors.ros.log` numbers them."""
 
-from actors.log import LoggingSeverity
+from actors.ros.log import LoggingSeverity
 
 __all__ = ["LoggingSeverity"]

@@ -1,0 +1,390 @@
+"""The event loops a graph runs on: virtual time, a precise wall clock, uvloop.
+
+:class:`VirtualTimeLoop` is an asyncio ``SelectorEventLoop`` whose clock starts
+at 0 and jumps to the next timer whenever nothing is ready, so an hour of robot
+time costs milliseconds.  It never jumps while work is pending in an executor
+or in anyio's worker threads (that work runs in real time), and it turns a wait
+on nothing (no timer, no I/O, no thread) into
+:class:`~actors.errors.VirtualTimeDeadlock` after ``idle_timeout`` real
+seconds, instead of hanging.  The epoch that turns loop time into ROS time is
+kept by :class:`~actors.ros.time.ROSClock`, not here.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import selectors
+import time
+import weakref
+from collections.abc import Callable
+from contextvars import copy_context
+from heapq import heapify, heappop, heappush
+from typing import Any
+
+from actors.errors import VirtualTimeDeadlock
+
+__all__ = ["VirtualTimeLoop", "loop_clock", "precise_loop", "uvloop_loop", "WALL_LOOPS"]
+
+
+def loop_clock(loop: asyncio.AbstractEventLoop) -> Callable[[], float]:
+    """What tells ``loop.time()`` cheapest: ``time.monotonic`` itself on asyncio's own loops.
+
+    Called directly it costs half of ``loop.time()``, a Python method around
+    it.  Loops that keep their own time (virtual time, uvloop) give their ``time``.
+    """
+    return time.monotonic if type(loop).time is asyncio.BaseEventLoop.time else loop.time
+
+
+def precise_loop() -> asyncio.AbstractEventLoop:
+    """A wall-clock asyncio loop whose waits have microsecond precision.
+
+    asyncio's default loop on Linux waits in ``epoll_wait``, which takes whole
+    milliseconds and rounds every wait up, so a 1 kHz timer lands up to 1 ms
+    late (p99 1.16 ms in BENCHMARKS.md).  ``select()`` takes microseconds (p99
+    0.31 ms).  Its limits (file descriptors below 1024, a scan per wait) do not
+    matter for a graph, which watches a handful: the control socket and its
+    clients.  ``python -m actors.run`` uses this loop on the wall clock.
+    """
+    return asyncio.SelectorEventLoop(selectors.SelectSelector())
+
+
+def uvloop_loop() -> asyncio.AbstractEventLoop:
+    """A uvloop event loop (the ``fast`` extra: ``pip install 'actors[fast]'``), for the wall clock only.
+
+    Faster per wake-up than asyncio's loops (BENCHMARKS.md shows both), but
+    its clock counts whole milliseconds: ``loop.time()`` is libuv's time,
+    read once per loop iteration, so a timer's deadlines start from a
+    millisecond-rounded time and fire up to a millisecond late, and stamps
+    taken within one iteration are equal.  Fine for 10-100 Hz control loops;
+    use :func:`precise_loop` for kHz timers.  Virtual time stays on
+    :class:`VirtualTimeLoop`.  Raises ImportError with the install hint when
+    uvloop is missing.
+    """
+    try:
+        import uvloop
+    except ImportError:
+        raise ImportError("uvloop is not installed: pip install 'actors[fast]'") from None
+    return uvloop.new_event_loop()
+
+
+#: The wall-clock loops ``python -m actors.run --loop NAME`` offers, by name.
+WALL_LOOPS: dict[str, Callable[[], asyncio.AbstractEventLoop]] = {
+    "select": precise_loop,
+    "asyncio": asyncio.new_event_loop,
+    "uvloop": uvloop_loop,
+}
+
+
+_new_handle = object.__new__
+# The fields asyncio's Handle and TimerHandle have (3.11 to 3.13): call_at and call_soon fill them
+# in directly; a Python whose handles differ gets asyncio's own constructors.
+_LEAN_HANDLES = set(asyncio.Handle.__slots__) == {
+    "_callback", "_args", "_cancelled", "_loop", "_source_traceback", "_repr", "__weakref__", "_context"
+} and set(asyncio.TimerHandle.__slots__) == {"_scheduled", "_when"}
+
+
+def _handle(cls: type, callback: Callable[..., object], args: tuple[Any, ...], loop: VirtualTimeLoop,
+            context: Any) -> Any:
+    # Handle.__init__ outside debug mode, filled in by one call instead of two (TimerHandle's and Handle's).
+    handle = _new_handle(cls)
+    handle._callback = callback
+    handle._args = args
+    handle._cancelled = False
+    handle._loop = loop
+    handle._source_traceback = None
+    handle._repr = None
+    handle._context = copy_context() if context is None else context
+    return handle
+
+
+_MAX_WAIT = 24 * 3600.0  # asyncio's longest wait in one select (MAXIMUM_SELECT_TIMEOUT)
+_MIN_SCHEDULED = 100  # asyncio's: below this many timers, cancelled ones are only popped at the head
+
+
+class _JumpingSelector(selectors.DefaultSelector):
+    """The selector of :class:`VirtualTimeLoop`: polls I/O, then jumps instead of sleeping."""
+
+    def __init__(self, loop: VirtualTimeLoop) -> None:
+        super().__init__()
+        self._vloop = loop
+        # epoll says whether anything is ready in one C call (it is level-triggered: what it
+        # saw is still there for select()), where select() spends a microsecond in Python.
+        self._peek = self._selector.poll if isinstance(self, selectors.EpollSelector) else None
+        # Whether a descriptor besides the loop's self-pipe is watched, kept by register and
+        # unregister: VirtualTimeLoop.skip_to asks it before every jump (a physics step's).
+        self.watching = False
+
+    def register(self, fileobj: Any, events: int, data: Any = None) -> selectors.SelectorKey:
+        key = super().register(fileobj, events, data)
+        self.watching = len(self._fd_to_key) > 1
+        return key
+
+    def unregister(self, fileobj: Any) -> selectors.SelectorKey:
+        key = super().unregister(fileobj)
+        self.watching = len(self._fd_to_key) > 1
+        return key
+
+    def select(self, timeout: float | None = None) -> list[tuple[selectors.SelectorKey, int]]:
+        peek = self._peek
+        if timeout == 0:
+            return super().select(0) if peek is None or peek(0, 1) else []
+        loop = self._vloop
+        # Ask the threads before polling: a thread hands its work over (call_soon_threadsafe
+        # writes the self-pipe) before it goes idle, so once none is busy, the poll below sees
+        # all they handed over.  Polled first, a hand-off between the poll and the question
+        # would be missed and time would jump past the work it brings.
+        busy = loop.threads_busy()
+        if peek is None or self.watching or loop._signal_handlers:
+            if peek is None or peek(0, 1):  # real I/O, or a signal's byte in the self-pipe
+                events = super().select(0)
+                if events:
+                    return events
+        elif loop._ready:
+            # The self-pipe alone is watched, and no signal writes to it: only threads do, and
+            # call_soon_threadsafe queues the callback before it writes.  So a thread's hand-over
+            # shows in the ready queue (read it, no jump) and an empty queue means nothing to
+            # read: no system call (with the GIL let go and taken back) on every jump.
+            return super().select(0)
+        if busy:
+            # Real work is running in a thread: wait for it in real time (looking again after
+            # busy_poll, when set, for threads that stop being busy without waking the loop).
+            poll = loop.busy_poll
+            if poll is not None and (timeout is None or timeout > poll):
+                timeout = poll
+            return super().select(timeout)
+        if timeout is not None:
+            # Land exactly on the earliest deadline, not on now + (when - now), which float
+            # rounding can leave a hair short of it.
+            scheduled = loop._scheduled  # the base loop's heap of TimerHandles
+            if scheduled and scheduled[0]._when > loop._now:
+                loop._now = scheduled[0]._when
+            return []
+        # No timer at all: only real I/O could still wake anything.
+        events = super().select(loop.idle_timeout)
+        if not events and not loop.threads_busy():
+            raise VirtualTimeDeadlock(
+                f"virtual time is idle: no timer is scheduled and nothing happened for "
+                f"{loop.idle_timeout} s of real time, so every task waits forever "
+                f"(an event nobody sets, a queue nobody feeds?)"
+            )
+        return events
+
+
+class VirtualTimeLoop(asyncio.SelectorEventLoop):
+    """An asyncio event loop whose clock jumps to the next timer when nothing is ready.
+
+    Use it anywhere a loop factory is taken::
+
+        anyio.run(main, backend_options={"loop_factory": VirtualTimeLoop})
+        asyncio.Runner(loop_factory=VirtualTimeLoop).run(main())
+
+    ``time()`` starts at 0.0.  ``epoch`` is the wall-clock time (seconds since the
+    Unix epoch) that virtual time 0 stands for in timestamps; it defaults to 0,
+    like simulated time in ROS.  Raises :class:`~actors.errors.VirtualTimeDeadlock`
+    out of ``run_*`` when no timer, I/O or thread could ever wake a task and
+    ``idle_timeout`` real seconds pass with nothing happening.
+
+    Its iterations, ``call_at`` and ``call_soon`` are asyncio's specialised to
+    virtual time (tests/test_virtual_loop.py runs the same programs on asyncio's
+    own code and compares): a simulation spends most of its loop iterations on
+    one timer each, and asyncio's generic iteration cost as much as a physics
+    step.  In debug mode the loop takes asyncio's own code (slow-callback warnings).
+    """
+
+    def __init__(self, *, epoch: float = 0.0, idle_timeout: float = 5.0) -> None:
+        # Five attributes beside asyncio's 24: CPython 3.11 keeps at most 30 of an object's
+        # attributes inline, and past that the method calls made on it (every timer's
+        # loop.time()) go unspecialised, 1.2k instructions a physics step (tests/test_clock.py).
+        self._now = 0.0
+        self._threads = _Threads(self)
+        self.busy_poll: float | None = None  # see _JumpingSelector.select
+        self.epoch = epoch
+        self.idle_timeout = idle_timeout
+        super().__init__(selector=_JumpingSelector(self))
+
+    def time(self) -> float:
+        return self._now
+
+    def call_at(self, when: float, callback: Callable[..., object], *args: Any,
+                context: Any = None) -> asyncio.TimerHandle:
+        if self._debug or self._closed or when is None or not _LEAN_HANDLES:
+            return super().call_at(when, callback, *args, context=context)
+        # asyncio's call_at without its two constructors' debug questions and the closed
+        # check's call: the same handle, with the same fields, in the same heap.
+        timer = _handle(asyncio.TimerHandle, callback, args, self, context)
+        timer._when = when
+        heappush(self._scheduled, timer)
+        timer._scheduled = True
+        return timer
+
+    def call_again(self, handle: asyncio.TimerHandle, when: float) -> asyncio.TimerHandle:
+        """``handle``, a timer handle of this loop that has run, scheduled again for ``when``; returns the handle.
+
+        For a callback that sets its loop timer again each time it runs (a
+        runtime's timers, every instant of a simulation): the same object,
+        callback, arguments and context back in the heap, as ``call_at`` would
+        make them, without a new handle.  A new one from ``call_at`` for a
+        handle still waiting, and in debug mode.  ValueError for a cancelled
+        handle (cancelling forgets the callback).
+        """
+        if handle._cancelled:
+            raise ValueError("a cancelled handle cannot be called again")
+        if self._debug or self._closed or handle._scheduled:
+            return self.call_at(when, handle._callback, *handle._args, context=handle._context)
+        handle._when = when
+        heappush(self._scheduled, handle)
+        handle._scheduled = True
+        return handle
+
+    def call_soon(self, callback: Callable[..., object], *args: Any, context: Any = None) -> asyncio.Handle:
+        if self._debug or self._closed or not _LEAN_HANDLES:
+            return super().call_soon(callback, *args, context=context)
+        handle = _handle(asyncio.Handle, callback, args, self, context)
+        self._ready.append(handle)
+        return handle
+
+    def _run_once(self) -> None:
+        # One iteration of asyncio's loop (BaseEventLoop._run_once), specialised to virtual time:
+        # the same steps in the same order (drop cancelled timers, poll I/O or jump, move the due
+        # timers to the ready queue, run what was ready when the iteration began), without the
+        # generic parts it pays for on every instant: time() calls, the timeout's arithmetic when
+        # something is ready, the debug checks, an empty _process_events.  Debug mode (slow
+        # callback warnings, the current handle) takes asyncio's own iteration.
+        if self._debug:
+            super()._run_once()
+            return
+        if self._timer_cancelled_count:
+            self._drop_cancelled()
+        scheduled = self._scheduled
+        ready = self._ready
+        if ready or self._stopping:
+            events = self._selector.select(0)
+        elif scheduled:
+            # min() and max() parse their arguments as keywords: plain comparisons cost a tenth.
+            timeout = scheduled[0]._when - self._now
+            events = self._selector.select(0 if timeout < 0 else _MAX_WAIT if timeout > _MAX_WAIT else timeout)
+        else:
+            events = self._selector.select(None)
+        if events:
+            self._process_events(events)
+        events = None  # no cycle through a handle's exception
+        end = self._now + self._clock_resolution
+        while scheduled and scheduled[0]._when < end:
+            handle = heappop(scheduled)
+            handle._scheduled = False
+            ready.append(handle)
+        # Only what is ready now: callbacks scheduled by these run in the next iteration, after a poll.
+        popleft = ready.popleft
+        todo = len(ready)  # counted down: a range object costs more than the one or two handles of an instant
+        while todo:
+            todo -= 1
+            handle = popleft()
+            if not handle._cancelled:
+                handle._run()
+        handle = None
+
+    def _drop_cancelled(self) -> None:
+        # As asyncio does: rebuild the heap when cancelled timers are most of a large one,
+        # otherwise pop those at its head.
+        scheduled = self._scheduled
+        if len(scheduled) > _MIN_SCHEDULED and self._timer_cancelled_count * 2 > len(scheduled):
+            live = []
+            for handle in scheduled:
+                if handle._cancelled:
+                    handle._scheduled = False
+                else:
+                    live.append(handle)
+            heapify(live)
+            self._scheduled = live
+            self._timer_cancelled_count = 0
+        else:
+            while scheduled and scheduled[0]._cancelled:
+                self._timer_cancelled_count -= 1
+                heappop(scheduled)._scheduled = False
+
+    def skip_to(self, when: float, again: bool = False) -> bool:
+        """From a callback of this loop: move virtual time on to ``when`` now if the loop would do only that next.
+
+        For a callback that would set its loop timer for ``when`` and return
+        (a runtime's timers, instant after instant of a simulation): True, time
+        moved, means the caller may do now what that timer would, without the
+        loop's iteration around it.  That is when the next iteration would jump
+        to ``when`` and run that timer alone: nothing is ready, no timer of the
+        loop's is due before ``when`` or within its clock resolution, no file
+        descriptor but the loop's self-pipe nor any signal is watched (their
+        poll is the loop's to make), no thread is at work, and the loop is
+        neither stopping nor in debug mode.  False otherwise, time unmoved.
+
+        ``again``: the caller's previous call, from this same callback, returned
+        True, and only synchronous code has run since.  Then anyio's worker
+        threads are not looked for again: only a task starts one, and a task
+        that could have run since would have been ready, which stops the jump.
+        """
+        if self._ready or self._stopping or self._debug or not when > self._now:
+            return False
+        scheduled = self._scheduled
+        if scheduled and scheduled[0]._when < when + self._clock_resolution:
+            return False
+        # What a callback can start without a task: a watched descriptor, a signal handler, an executor job.
+        if self._selector.watching or self._signal_handlers or self._threads.jobs:
+            return False
+        if not again and (self._selector._peek is None or self.threads_busy()):
+            return False
+        self._now = when
+        return True
+
+    def advance(self, seconds: float) -> None:
+        """Move virtual time forward by ``seconds`` at once (timers due run next)."""
+        if seconds < 0:
+            raise ValueError("virtual time cannot go backwards")
+        self._now += seconds
+
+    def run_in_executor(self, executor: Any, func: Any, *args: Any) -> asyncio.Future[Any]:
+        future = super().run_in_executor(executor, func, *args)
+        self._threads.jobs += 1
+        future.add_done_callback(self._executor_job_done)
+        return future
+
+    def _executor_job_done(self, _future: asyncio.Future[Any]) -> None:
+        self._threads.jobs -= 1
+
+    def threads_busy(self) -> bool:
+        """Whether executor jobs or anyio worker-thread calls are still running."""
+        threads = self._threads
+        if threads.jobs > 0:
+            return True
+        limiter = threads.limiter
+        if limiter is None:  # made by anyio at the loop's first to_thread call, then kept
+            # Asked on every jump of virtual time: the lookup inline, no call of its own.
+            found = threads.run_vars.get(threads.loop)
+            if found is None or (limiter := found.get(threads.limiter_key)) is None:
+                return False
+            threads.limiter = limiter
+        return limiter.borrowed_tokens > 0
+
+
+class _Threads:
+    """What a VirtualTimeLoop knows of its work in other threads, in one attribute of the loop (see its __init__)."""
+
+    __slots__ = ("jobs", "limiter", "loop", "run_vars", "limiter_key")
+
+    def __init__(self, loop: VirtualTimeLoop) -> None:
+        self.jobs = 0  # run_in_executor calls still running
+        self.limiter: Any = None  # anyio's default thread limiter of the loop, once it exists
+        self.loop = weakref.ref(loop)  # how anyio's per-loop run vars know the loop
+        self.run_vars, self.limiter_key = _anyio_run_vars()
+
+
+def _anyio_run_vars() -> tuple[dict[Any, dict[Any, Any]], Any]:
+    # anyio runs ``to_thread.run_sync`` in its own workers, outside run_in_executor,
+    # holding a token of the loop's default limiter while the call runs.  anyio has
+    # no public way to ask this from outside a task, so read its per-loop run vars:
+    # the WeakKeyDictionary's own dict, by the loop's weak reference (its get() builds
+    # one per call), and the limiter's key in them.  tests/test_clock.py fails if that
+    # ever stops working.
+    try:
+        from anyio._backends._asyncio import _default_thread_limiter
+        from anyio.lowlevel import _run_vars
+    except ImportError:  # pragma: no cover - a future anyio
+        return {}, None
+    return _run_vars.data, _default_thread_limiter

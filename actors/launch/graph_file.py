@@ -1,0 +1,282 @@
+"""The graph file (``graph.toml``): its schema, loading, and spawning its nodes.
+
+Every key is optional except each node's ``use``::
+
+    [runtime]
+    clock = "wall"            # or "virtual"
+    duration = 0.0            # seconds; 0 runs until stopped
+    log_level = "info"
+
+    [supervisor]
+    strategy = "one_for_one"  # one_for_all, rest_for_one
+    intensity = 3
+    period = 5.0
+    backoff = 0.1
+    max_backoff = 2.0
+
+    [[nodes]]
+    use = "nodes.talker:MinimalPublisher"
+    name = "talker"
+    namespace = ""
+    params = { }
+    params_file = "params.yaml"   # ROS parameter file (node_name: ros__parameters:), under params
+    remap = { topic = "chatter" }
+    restart = "transient"     # permanent, temporary
+    delay = 0.0               # start this node so many seconds later (launch's TimerAction)
+
+    [transport]               # other processes (and ROS 2 with rmw_zenoh_cpp) see this graph
+    kind = "zenoh"
+    domain_id = 0             # default: $ROS_DOMAIN_ID, else 0
+    connect = ["tcp/127.0.0.1:7447"]
+    listen = ["tcp/127.0.0.1:7447", "tcp/127.0.0.1:0"]
+    mode = "peer"             # or "client" (through a router)
+    config = "zenoh.json5"    # a Zenoh config file for everything else (relative to this file)
+
+``use`` is found as :mod:`actors.launch.importing` says: the graph file's folder, then the
+working directory, then installed packages (``nodes`` and ``world`` are the
+shipped ``actors.nodes`` and ``actors.world`` when nothing else has them,
+and always for the shipped graphs).  ``load_graph`` also takes the bare name
+of a shipped graph (``turtlebot``).
+
+Any error names the file, the key path and the problem, as one line.  Beyond
+each key's type, the file must name at least one node; numbers must be finite
+and in range (durations, periods and delays at most :data:`~actors.core.tomlfile.MAX_SECONDS`,
+``intensity`` at most 1,000,000, ``max_backoff`` at least ``backoff``); and
+no two nodes may have the same full name, delayed or not (a node without a
+``name`` has the one its class gives ``super().__init__``, when the class
+says it plainly).
+"""
+
+from __future__ import annotations
+
+import ast
+import inspect
+import textwrap
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+import msgspec
+
+from actors.core.tomlfile import MAX_SECONDS, load_toml
+from actors.errors import GraphFileError, InvalidNameError, RosArgsError
+from actors.ros.names import expand, fully_qualified, normalize_namespace, validate_node_name
+from actors.ros.node import Node
+from actors.launch.rosargs import load_params_file, node_key_matches, values_for
+from actors.system.supervisor import RestartType, Strategy, SupervisorPolicy
+from actors.launch.importing import find_graph, import_use
+
+__all__ = [
+    "RuntimeSection",
+    "SupervisorSection",
+    "NodeEntry",
+    "TransportSection",
+    "GraphFile",
+    "load_graph",
+    "import_node_class",
+    "default_node_name",
+]
+
+Seconds = Annotated[float, msgspec.Meta(ge=0, le=MAX_SECONDS)]
+
+
+class RuntimeSection(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
+    """``[runtime]``: how the graph runs."""
+
+    clock: Literal["wall", "virtual"] = "wall"
+    duration: Seconds = 0.0
+    log_level: Literal["debug", "info", "warn", "warning", "error", "fatal"] = "info"
+
+
+class SupervisorSection(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
+    """``[supervisor]``: restart strategy, intensity and backoff."""
+
+    strategy: Strategy = Strategy.ONE_FOR_ONE
+    intensity: Annotated[int, msgspec.Meta(ge=0, le=1_000_000)] = 3
+    period: Annotated[float, msgspec.Meta(gt=0, le=MAX_SECONDS)] = 5.0
+    backoff: Seconds = 0.1
+    max_backoff: Seconds = 2.0
+
+    def __post_init__(self) -> None:
+        if self.max_backoff < self.backoff:
+            raise ValueError(f"max_backoff ({self.max_backoff:g}) must be at least backoff ({self.backoff:g})")
+
+    def policy(self) -> SupervisorPolicy:
+        """These settings as the runtime's SupervisorPolicy."""
+        return SupervisorPolicy(**msgspec.structs.asdict(self))
+
+
+class NodeEntry(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
+    """``[[nodes]]``: one node to start."""
+
+    use: str
+    name: str | None = None
+    namespace: str = ""
+    params: dict[str, Any] = {}
+    params_file: str | None = None  # a ROS parameter file, relative to the graph file; params win over it
+    remap: dict[str, str] = {}
+    restart: RestartType = RestartType.TRANSIENT
+    delay: Seconds = 0.0  # seconds after the graph starts, as launch's TimerAction
+
+
+class TransportSection(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
+    """``[transport]``: how the graph reaches other processes (see actors.transport.zenoh.config).
+
+    ``None`` means the default: ``$ROS_DOMAIN_ID`` for the domain; for the
+    endpoints, a peer that listens on and connects to loopback only.
+    """
+
+    kind: Literal["zenoh"] = "zenoh"
+    domain_id: Annotated[int, msgspec.Meta(ge=0, le=232)] | None = None
+    connect: list[str] | None = None
+    listen: list[str] | None = None
+    mode: Literal["peer", "client"] = "peer"
+    config: str = ""
+
+
+class GraphFile(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
+    """A whole graph file."""
+
+    runtime: RuntimeSection = RuntimeSection()
+    supervisor: SupervisorSection = SupervisorSection()
+    nodes: list[NodeEntry] = []
+    transport: TransportSection | None = None
+
+
+def import_node_class(use: str, graph: Path | None = None) -> type[Node]:
+    """Import ``"module:Class"`` as graph file ``graph`` names it, and check it is a Node subclass.
+
+    Where the module comes from is :mod:`actors.launch.importing`'s business (the graph's
+    folder, the working directory, installed code).  ValueError says why it
+    cannot be had.
+    """
+    module_name, sep, attr = use.partition(":")
+    if not sep or not module_name or not attr:
+        raise ValueError(f"expected 'module:Class', got {use!r}")
+    module = import_use(module_name, graph)
+    cls = module
+    for part in attr.split("."):
+        cls = getattr(cls, part, None)
+        if cls is None:
+            raise ValueError(f"module {module_name!r} has no {attr!r}")
+    if not (isinstance(cls, type) and issubclass(cls, Node)):
+        raise ValueError(f"{use!r} is not a subclass of actors.Node")
+    return cls
+
+
+def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
+    """Load and check a graph file: schema, values, names, and that every ``use`` imports.
+
+    Returns the decoded file and the node classes, in file order.  Raises
+    GraphFileError naming the file, the key path and the problem; nothing has
+    started then, so a graph with a mistake anywhere never starts half-way.
+    """
+    try:
+        path = find_graph(path)
+    except FileNotFoundError as exc:
+        raise GraphFileError(str(exc)) from None
+    graph = load_toml(path, GraphFile, GraphFileError)
+    if not graph.nodes:
+        raise GraphFileError(
+            f'{path}: no nodes: a graph needs at least one [[nodes]] table with use = "module:Class"'
+        )
+    if graph.transport is not None and graph.transport.config:
+        # A Zenoh config file is found beside the graph file, as a relative path reads.
+        config = Path(path).parent / graph.transport.config
+        if not config.is_file():
+            raise GraphFileError(f"{path}: transport.config: no such file: {config}")
+        graph = msgspec.structs.replace(
+            graph, transport=msgspec.structs.replace(graph.transport, config=str(config))
+        )
+    classes = []
+    nodes = list(graph.nodes)
+    taken: dict[str, int] = {}  # full node names known before start, and the entry that has each
+    for i, entry in enumerate(graph.nodes):
+        key = f"nodes[{i}]"
+        try:
+            cls = import_node_class(entry.use, Path(path))
+        except ValueError as exc:
+            raise GraphFileError(f"{path}: {key}.use: {exc}") from None
+        classes.append(cls)
+        try:
+            if entry.name is not None:
+                validate_node_name(entry.name)
+            namespace = normalize_namespace(entry.namespace)
+        except InvalidNameError as exc:
+            field = "name" if entry.name is not None and "node name" in str(exc) else "namespace"
+            raise GraphFileError(f"{path}: {key}.{field}: {exc}") from None
+        for source, target in entry.remap.items():
+            try:
+                expand(source, namespace, entry.name or "node", what="remap source")
+                expand(target, namespace, entry.name or "node", what="remap target")
+            except InvalidNameError as exc:
+                raise GraphFileError(f"{path}: {key}.remap.{source}: {exc}") from None
+        if entry.params_file is not None:
+            params = _file_params(Path(path).parent / entry.params_file, entry, namespace, f"{path}: {key}")
+            nodes[i] = msgspec.structs.replace(entry, params={**params, **entry.params})
+        name = entry.name or default_node_name(cls)
+        if name is not None:
+            fqn = fully_qualified(namespace, name)
+            if fqn in taken:
+                where = "name" if entry.name else "use"
+                raise GraphFileError(
+                    f"{path}: {key}.{where}: a node named {fqn} is already nodes[{taken[fqn]}]; "
+                    "give one of them another name"
+                )
+            taken[fqn] = i
+    return msgspec.structs.replace(graph, nodes=nodes), classes
+
+
+def _file_params(file: Path, entry: NodeEntry, namespace: str, where: str) -> dict[str, Any]:
+    """What a ROS parameter file gives the node of ``entry``: matched by its full name, as rcl does."""
+    try:
+        rules = load_params_file(file)
+    except RosArgsError as exc:
+        raise GraphFileError(f"{where}.params_file: {exc}") from None
+    if entry.name is not None:
+        return values_for(rules, fully_qualified(namespace, entry.name))
+    # Without a name the node's own default decides, known only once it runs: only keys that
+    # match any node name (wildcards) can be applied here.
+    named = [rule.node_key for rule in rules if not _any_name(rule.node_key, namespace)]
+    if named:
+        raise GraphFileError(
+            f"{where}.params_file: {file} has parameters for {', '.join(named)}: give the node a `name` "
+            f"so that they can be matched"
+        )
+    return values_for(rules, fully_qualified(namespace, "any"))
+
+
+def _any_name(node_key: str, namespace: str) -> bool:
+    return all(node_key_matches(node_key, fully_qualified(namespace, name)) for name in ("a", "b"))
+
+
+def default_node_name(cls: type[Node]) -> str | None:
+    """The name ``cls`` gives ``super().__init__`` when its source says it plainly, else None.
+
+    ``super().__init__("talker")`` or ``super().__init__(node_name="talker")``
+    in the class's own ``__init__`` (or the nearest base that has one).  A name
+    computed at run time is None: the runtime still refuses a duplicate when
+    it starts the node.
+    """
+    for klass in cls.__mro__:
+        if klass is Node or "__init__" not in vars(klass):
+            continue
+        try:
+            tree = ast.parse(textwrap.dedent(inspect.getsource(vars(klass)["__init__"])))
+        except (OSError, TypeError, SyntaxError):
+            return None
+        for node in ast.walk(tree):
+            if (
+                isinstance(node, ast.Call)
+                and isinstance(node.func, ast.Attribute)
+                and node.func.attr == "__init__"
+                and isinstance(node.func.value, ast.Call)
+                and getattr(node.func.value.func, "id", None) == "super"
+            ):
+                given = node.args[0] if node.args else next(
+                    (k.value for k in node.keywords if k.arg == "node_name"), None
+                )
+                if isinstance(given, ast.Constant) and isinstance(given.value, str):
+                    return given.value
+                return None
+        return None
+    return None

@@ -1,0 +1,68 @@
+"""What ``Node.get_publishers_info_by_topic`` returns: rclpy's TopicEndpointInfo, one per endpoint."""
+
+from __future__ import annotations
+
+from enum import IntEnum
+from typing import Any
+
+import msgspec
+
+from actors.ros.topics import type_name
+
+__all__ = ["TopicEndpointTypeEnum", "TopicEndpointInfo", "endpoint_info"]
+
+
+class TopicEndpointTypeEnum(IntEnum):
+    """Whether an endpoint publishes or subscribes (values as ``rmw``'s)."""
+
+    INVALID = 0
+    PUBLISHER = 1
+    SUBSCRIPTION = 2
+
+
+class TopicEndpointInfo(msgspec.Struct, kw_only=True):
+    """A publisher or subscription of a topic, with the fields rclpy's has.
+
+    ``endpoint_gid`` is an opaque id, unique among the endpoints alive in the
+    process (as a GID is in a ROS graph).  rclpy's ``topic_type_hash`` is not
+    given.
+    """
+
+    node_name: str = ""
+    node_namespace: str = ""
+    topic_type: str = ""
+    endpoint_type: TopicEndpointTypeEnum = TopicEndpointTypeEnum.INVALID
+    endpoint_gid: list[int] = msgspec.field(default_factory=list)
+    qos_profile: Any = None
+
+    def __str__(self) -> str:
+        qos = self.qos_profile
+        lines = [
+            f"Node name: {self.node_name}",
+            f"Node namespace: {self.node_namespace}",
+            f"Topic type: {self.topic_type}",
+            f"Endpoint type: {self.endpoint_type.name}",
+            f"GID: {'.'.join(format(b, '02x') for b in self.endpoint_gid)}",
+            "QoS profile:",
+        ]
+        if qos is not None:
+            depth = f" ({qos.depth})" if qos.history.name == "KEEP_LAST" else ""
+            lines += [
+                f"  Reliability: {qos.reliability.name}",
+                f"  History (Depth): {qos.history.name}{depth}",
+                f"  Durability: {qos.durability.name}",
+            ]
+        return "\n".join(lines)
+
+
+def endpoint_info(endpoint: Any, kind: TopicEndpointTypeEnum) -> TopicEndpointInfo:
+    """The TopicEndpointInfo of a Publisher or Subscription."""
+    namespace, _, node_name = endpoint.node.fqn.rpartition("/")
+    return TopicEndpointInfo(
+        node_name=node_name,
+        node_namespace=namespace or "/",
+        topic_type=type_name(endpoint.msg_type),
+        endpoint_type=kind,
+        endpoint_gid=list(id(endpoint).to_bytes(8, "little")) + [0] * 8,
+        qos_profile=endpoint.qos,
+    )
