@@ -31,10 +31,9 @@ from typing import Any, TypeVar
 import msgspec
 import msgspec.inspect as mi
 
-from actors.messages import cdr
-from actors.messages import typehash
-from actors.errors import InterfaceError, MessageValidationError, UnknownInterfaceError
 from actors.core.explain import explain
+from actors.errors import InterfaceError, MessageValidationError, UnknownInterfaceError
+from actors.messages import cdr, typehash
 from actors.messages.idl import PRIMITIVES
 
 __all__ = [
@@ -95,8 +94,7 @@ def get_type(name: str) -> type:
         candidates = [name]
     else:
         raise UnknownInterfaceError(
-            f"{name!r} is not an interface name "
-            "(expected pkg/msg/Name, pkg/srv/Name, pkg/action/Name or pkg/Name)"
+            f"{name!r} is not an interface name (expected pkg/msg/Name, pkg/srv/Name, pkg/action/Name or pkg/Name)"
         )
     for full_name in candidates:
         found = _registered.get(full_name) or _import_type(full_name)
@@ -136,8 +134,7 @@ def list_types() -> list[str]:
     for root in [*_roots, shipped_root()]:
         for kind in _KINDS:
             names.update(
-                f"{source.parent.parent.name}/{kind}/{source.stem}"
-                for source in root.glob(f"*/{kind}/*.{kind}")
+                f"{source.parent.parent.name}/{kind}/{source.stem}" for source in root.glob(f"*/{kind}/*.{kind}")
             )
     return sorted(names)
 
@@ -360,9 +357,7 @@ def dump_yaml(data: Any) -> str:
 
     import yaml
 
-    return yaml.safe_dump(
-        data, sort_keys=False, default_flow_style=False, allow_unicode=True, width=sys.maxsize
-    )
+    return yaml.safe_dump(data, sort_keys=False, default_flow_style=False, allow_unicode=True, width=sys.maxsize)
 
 
 @functools.cache

@@ -227,6 +227,8 @@ class ControlError(ActorsError):
 
 class TransportError(ActorsError):
     """A transport cannot start: its package is missing, a setting is wrong, the network refuses."""
+
+
 class BagError(ActorsError):
     """A bag (MCAP file) cannot be read or written; the message names the file and byte offset."""
 

@@ -27,12 +27,12 @@ import msgspec
 
 from actors.core.loops import WALL_LOOPS, VirtualTimeLoop
 from actors.core.tomlfile import MAX_SECONDS
-from actors.ops.control import ControlEndpoint
 from actors.errors import ActorsError, Escalation, GraphFileError
 from actors.launch.graph_file import GraphFile, TransportSection, load_graph
+from actors.launch.spawn import NodeStartError, one_line, spawn_graph
+from actors.ops.control import ControlEndpoint
 from actors.ros.log import LEVELS, configure_console
 from actors.ros.node import Node
-from actors.launch.spawn import NodeStartError, one_line, spawn_graph
 from actors.runtime import Attachment, Runtime
 
 __all__ = ["main", "add_arguments", "launch", "run_graph"]
@@ -55,16 +55,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         choices=("zenoh", "none"),
         help="reach other processes over Zenoh (the [transport] section's settings, or the defaults), or not",
     )
+    parser.add_argument("--record", metavar="BAG", help="record topics into a ROS 2 bag: BAG.mcap, or a bag directory")
+    parser.add_argument("--topics", nargs="+", default=[], metavar="TOPIC", help="with --record: only these topics")
     parser.add_argument(
-        "--record", metavar="BAG", help="record topics into a ROS 2 bag: BAG.mcap, or a bag directory"
-    )
-    parser.add_argument(
-        "--topics", nargs="+", default=[], metavar="TOPIC", help="with --record: only these topics"
-    )
-    parser.add_argument(
-        "--foxglove", nargs="?", type=_port, const=8765, metavar="PORT",
-        help="serve every topic live to Foxglove on ws://127.0.0.1:PORT (default 8765; "
-        "pip install 'actors[foxglove]')",
+        "--foxglove",
+        nargs="?",
+        type=_port,
+        const=8765,
+        metavar="PORT",
+        help="serve every topic live to Foxglove on ws://127.0.0.1:PORT (default 8765; pip install 'actors[foxglove]')",
     )
 
 
@@ -108,20 +107,17 @@ async def run_graph(
         from actors.transport.zenoh import ZenohTransport
 
         everything.append(ZenohTransport(graph.transport))
-    async with Runtime(name=name, supervisor=policy, attach=everything) as rt:
-        async with anyio.create_task_group() as tg:
-            if handle_signals:
-                # Listening before the first node is made: a Ctrl-C that comes while the graph
-                # starts is a graceful stop too, not asyncio's KeyboardInterrupt.
-                await tg.start(_stop_on_signal, rt)
-            await tg.start(spawn_graph, rt, graph, classes)
-            await rt.wait(duration or None)
-            tg.cancel_scope.cancel()
+    async with Runtime(name=name, supervisor=policy, attach=everything) as rt, anyio.create_task_group() as tg:
+        if handle_signals:
+            # Listening before the first node is made: a Ctrl-C that comes while the graph
+            # starts is a graceful stop too, not asyncio's KeyboardInterrupt.
+            await tg.start(_stop_on_signal, rt)
+        await tg.start(spawn_graph, rt, graph, classes)
+        await rt.wait(duration or None)
+        tg.cancel_scope.cancel()
 
 
-async def _stop_on_signal(
-    rt: Runtime, *, task_status: anyio.abc.TaskStatus[None] = anyio.TASK_STATUS_IGNORED
-) -> None:
+async def _stop_on_signal(rt: Runtime, *, task_status: anyio.abc.TaskStatus[None] = anyio.TASK_STATUS_IGNORED) -> None:
     with anyio.open_signal_receiver(signal.SIGINT, signal.SIGTERM) as signals:
         task_status.started()
         async for _ in signals:
@@ -185,7 +181,7 @@ def launch(args: argparse.Namespace) -> int:
             lambda: run_graph(graph, classes, name=Path(args.graph).stem, duration=duration, attach=attach),
             backend_options=options,
         )
-    except BaseException as exc:  # noqa: BLE001 - every error ends here, printed once
+    except BaseException as exc:
         return _report(exc, args.graph)
     return 0
 
@@ -227,9 +223,7 @@ def _leaves(exc: BaseException) -> Iterator[BaseException]:
 
 
 # Frames from these top-level packages are the machinery, not the user's code.
-_MACHINERY = frozenset(
-    {"actors", "anyio", "asyncio", "runpy", "contextlib", "sniffio", "importlib", "selectors"}
-)
+_MACHINERY = frozenset({"actors", "anyio", "asyncio", "runpy", "contextlib", "sniffio", "importlib", "selectors"})
 
 
 def _is_users(frame: FrameType) -> bool:
@@ -256,9 +250,7 @@ def _user_traceback(error: BaseException) -> list[str]:
         if not users and not isinstance(current, ActorsError):
             users = frames  # a bug of the machinery itself: show where
         lines += traceback.StackSummary.extract(iter(users)).format()
-        current = current.__cause__ or (
-            None if current.__suppress_context__ else current.__context__
-        )
+        current = current.__cause__ or (None if current.__suppress_context__ else current.__context__)
     return lines
 
 

@@ -23,16 +23,16 @@ import anyio
 import anyio.abc
 
 from actors.core._actor import Scheduler
-from actors.ros.time import ROSClock
 from actors.errors import InvalidNameError
-from actors.system.introspection import GraphView
 from actors.ros.log import NodeLogger, console_unless_configured
 from actors.ros.node import Node, NodeCore, SpawnRequest, spawning
-from actors.services import ServiceTable
-from actors.system.supervisor import Child, RestartType, Supervisor, SupervisorPolicy
+from actors.ros.qos import QoSProfile
+from actors.ros.time import ROSClock
 from actors.ros.timers import Deadlines
 from actors.ros.topics import Publisher, TopicTable
-from actors.ros.qos import QoSProfile
+from actors.services import ServiceTable
+from actors.system.introspection import GraphView
+from actors.system.supervisor import Child, RestartType, Supervisor, SupervisorPolicy
 
 __all__ = ["Runtime", "Attachment", "frozen_startup"]
 
@@ -50,9 +50,7 @@ class Attachment(Protocol):
     imported here.
     """
 
-    async def __call__(
-        self, runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any]
-    ) -> None: ...
+    async def __call__(self, runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any]) -> None: ...
 
 
 class Runtime:
@@ -159,9 +157,7 @@ class Runtime:
 
     def _require_running(self) -> None:
         if self._state != "running":
-            raise RuntimeError(
-                f"runtime {self.name!r} is {self._state}; use it inside `async with Runtime() as rt:`"
-            )
+            raise RuntimeError(f"runtime {self.name!r} is {self._state}; use it inside `async with Runtime() as rt:`")
 
     # -- nodes ----------------------------------------------------------------
 
@@ -194,8 +190,14 @@ class Runtime:
         if not self._burst:
             self._begin_burst()
         child = Child(
-            cls, name=name, namespace=namespace, params=params, remap=remap, restart=restart,
-            args=args, kwargs=kwargs,
+            cls,
+            name=name,
+            namespace=namespace,
+            params=params,
+            remap=remap,
+            restart=restart,
+            args=args,
+            kwargs=kwargs,
         )
         try:
             core = self.supervisor.start(child)
@@ -313,7 +315,6 @@ class Runtime:
         pub = Publisher(self._owner, topic, msg_type, QoSProfile(depth=1000))
         self.topics.add_publisher(pub)
         return pub
-
 
 
 _BURST_THRESHOLD = 2**31 - 1  # the youngest generation's threshold while a burst of spawns runs

@@ -68,7 +68,14 @@ class Service(Mailbox):
     """A service server.  Create with ``Node.create_service``."""
 
     __slots__ = (
-        "node", "service_name", "srv_type", "handler", "handled", "_listed", "_response_type", "_snapshot",
+        "node",
+        "service_name",
+        "srv_type",
+        "handler",
+        "handled",
+        "_listed",
+        "_response_type",
+        "_snapshot",
         "_adopt_response",
     )
     remote = False  # a transport's stand-in for a server elsewhere, which a local server replaces
@@ -199,7 +206,15 @@ class Client:
     """A service client.  Create with ``Node.create_client``."""
 
     __slots__ = (
-        "node", "service_name", "srv_type", "_request_type", "_table", "_loop", "_snapshot", "_new_future", "_server",
+        "node",
+        "service_name",
+        "srv_type",
+        "_request_type",
+        "_table",
+        "_loop",
+        "_snapshot",
+        "_new_future",
+        "_server",
     )
 
     def __init__(self, node: Owner, service_name: str, srv_type: type, table: ServiceTable) -> None:

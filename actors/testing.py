@@ -73,9 +73,7 @@ def bag_expectation(request: pytest.FixtureRequest) -> Any:
 
 def pytest_configure(config: pytest.Config) -> None:
     """Declare the ``virtual_time`` marker."""
-    config.addinivalue_line(
-        "markers", f"{_MARK}: run this async test on actors' VirtualTimeLoop (virtual time)"
-    )
+    config.addinivalue_line("markers", f"{_MARK}: run this async test on actors' VirtualTimeLoop (virtual time)")
 
 
 @pytest.hookimpl(wrapper=True, tryfirst=True)
@@ -130,9 +128,7 @@ def pytest_asyncio_loop_factories_virtual_time(
 # pytest-asyncio requires an answer for every async test once any implementation exists:
 # the last word is the loop it would have made without one.
 @pytest.hookimpl(optionalhook=True, trylast=True)
-def pytest_asyncio_loop_factories(
-    config: pytest.Config, item: pytest.Item
-) -> Mapping[str, Callable[[], Any]]:
+def pytest_asyncio_loop_factories(config: pytest.Config, item: pytest.Item) -> Mapping[str, Callable[[], Any]]:
     """An ordinary asyncio loop (from the current event loop policy) for every other async test."""
     return {"asyncio": asyncio.new_event_loop}
 

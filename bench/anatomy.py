@@ -106,9 +106,7 @@ async def _topics(rt: Runtime, repeats: int) -> dict[str, dict[str, float]]:
             "a callback alone (a node's bound method)": path["callback"],
             f"publish() (share): call, type check, snapshot, {into}": path["pushed"] / n,
             "  of which the snapshot (share)": snap / n,
-            "the rounds: each message's call and result check (callback included)": (
-                path["delivered"] - path["pushed"]
-            )
+            "the rounds: each message's call and result check (callback included)": (path["delivered"] - path["pushed"])
             / n,
             "total per delivery": total,
             "floor ÷ total (× the floor's rate, as the target reads)": path["floor"] / total,
@@ -155,8 +153,11 @@ async def _service(rt: Runtime, repeats: int) -> dict[str, float]:
     return {
         "call_async(): type check, snapshot, future, queue": sending,
         "  of which the request's snapshot": _ns(lambda: [snap_request(request) for _ in range(BATCH)], BATCH, repeats),
-        "serving a queued call: handler, response check and snapshot, set_result": _ns(served, BATCH, repeats) - sending,
-        "  of which the response's snapshot": _ns(lambda: [snap_response(response) for _ in range(BATCH)], BATCH, repeats),
+        "serving a queued call: handler, response check and snapshot, set_result": _ns(served, BATCH, repeats)
+        - sending,
+        "  of which the response's snapshot": _ns(
+            lambda: [snap_response(response) for _ in range(BATCH)], BATCH, repeats
+        ),
         "a timeout's deadline, kept and dropped (timeout=)": (
             _ns(lambda: answered(True), BATCH, repeats) - _ns(lambda: answered(False), BATCH, repeats)
         ),

@@ -50,7 +50,11 @@ def samples() -> dict[str, Any]:
     )
     width, height = 640, 480
     image = Image(
-        header=Header(frame_id="camera"), height=height, width=width, encoding="rgb8", step=3 * width,
+        header=Header(frame_id="camera"),
+        height=height,
+        width=width,
+        encoding="rgb8",
+        step=3 * width,
         data=bytes(range(256)) * (3 * width * height // 256),
     )
     return {**base, "Odometry": odometry, "Image 640×480 rgb8": image}
@@ -69,7 +73,9 @@ def _micros(fn: Callable[[], object], loops: int) -> float:
     return (time.perf_counter() - start) / loops * 1e6
 
 
-def _measure(encode: Callable[[], bytes], decode: Callable[[], object], loops: int, reps: int) -> dict[str, list[float]]:
+def _measure(
+    encode: Callable[[], bytes], decode: Callable[[], object], loops: int, reps: int
+) -> dict[str, list[float]]:
     return {verb: repeat(lambda: _micros(fn, loops), reps) for verb, fn in (("encode", encode), ("decode", decode))}
 
 
@@ -96,7 +102,9 @@ def measure_rosbags(name: str, msg: Any, loops: int, reps: int) -> dict[str, lis
     theirs = store.deserialize_cdr(codec.encode_cdr(msg), ros_type)
     data = store.serialize_cdr(theirs, ros_type)
     assert _same(data, msg)
-    return _measure(lambda: store.serialize_cdr(theirs, ros_type), lambda: store.deserialize_cdr(data, ros_type), loops, reps)
+    return _measure(
+        lambda: store.serialize_cdr(theirs, ros_type), lambda: store.deserialize_cdr(data, ros_type), loops, reps
+    )
 
 
 def measure_rclpy(quick: bool, reps: int) -> dict[str, dict[str, list[float]]] | str:
@@ -106,7 +114,7 @@ def measure_rclpy(quick: bool, reps: int) -> dict[str, dict[str, list[float]]] |
         return why
     try:
         return run_child(["-m", "bench.cdr", "--rclpy", json.dumps({"quick": quick, "reps": reps})], ros.ros_env())
-    except Exception as exc:  # noqa: BLE001 - say why and go on with the other rows
+    except Exception as exc:
         return f"rclpy: failed — {exc}"
 
 
@@ -122,7 +130,9 @@ def _rclpy_child(args: dict[str, Any]) -> None:
         data = serialize_message(theirs)
         assert _same(data, msg)
         loops = loops_for(name, args["quick"])
-        out[name] = _measure(lambda: serialize_message(theirs), lambda: deserialize_message(data, cls), loops, args["reps"])
+        out[name] = _measure(
+            lambda: serialize_message(theirs), lambda: deserialize_message(data, cls), loops, args["reps"]
+        )
     print(json.dumps(out))
 
 

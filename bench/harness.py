@@ -55,6 +55,7 @@ def run_on(main: Callable[[], Any], loop: Loop | None) -> Any:
     with asyncio.Runner(loop_factory=loop) as runner:
         return runner.run(main())
 
+
 ROOT = Path(__file__).resolve().parent.parent
 T = TypeVar("T")
 

@@ -71,6 +71,7 @@ def _child(count: int) -> None:
 
     asyncio.run(main())
 
+
 def ros_executors(count: int, quick: bool) -> tuple[str, ...]:
     """The rclpy executors measured with ``count`` nodes: both at 100; at 1,000 only
     SingleThreaded and only in a full run (a node's creation and memory are rcl's and
@@ -87,8 +88,9 @@ def ros_note(count: int, quick: bool) -> str:
     return "rclpy: not run with --quick (about 90 s a run)" if not ros_executors(count, quick) else ""
 
 
-def rclpy_nodes(scenario: str, count: int, executors: tuple[str, ...], key: str, unit: str,
-                scale: float = 1.0) -> list[Result]:
+def rclpy_nodes(
+    scenario: str, count: int, executors: tuple[str, ...], key: str, unit: str, scale: float = 1.0
+) -> list[Result]:
     """Rows for ``count`` rclpy nodes: ``key`` of each run (``spawn`` or ``rss_per_node``) times ``scale``."""
     results = []
     for executor in executors:
@@ -107,11 +109,19 @@ def run(quick: bool = False) -> list[Result]:
         samples = repeat(lambda: run_child(["-m", "bench.memory", "--child", str(count)]) / 1024, REPS, warmup=False)
         executors = ros_executors(count, quick)
         results.append(
-            Result(scenario, "actors", "KiB/node", samples, False, note=ros_note(count, quick),
-                   baselines=ros.baselines(executors))
+            Result(
+                scenario,
+                "actors",
+                "KiB/node",
+                samples,
+                False,
+                note=ros_note(count, quick),
+                baselines=ros.baselines(executors),
+            )
         )
         results += rclpy_nodes(scenario, count, executors, "rss_per_node", "KiB/node", 1 / 1024)
     return results
+
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])

@@ -50,8 +50,13 @@ class _Scans(Node):
 
 def _scan() -> LaserScan:
     return LaserScan(
-        angle_min=-3.14, angle_max=3.14, angle_increment=0.0175, range_min=0.1, range_max=3.5,
-        ranges=[1.0 + i / BEAMS for i in range(BEAMS)], intensities=[],
+        angle_min=-3.14,
+        angle_max=3.14,
+        angle_increment=0.0175,
+        range_min=0.1,
+        range_max=3.5,
+        ranges=[1.0 + i / BEAMS for i in range(BEAMS)],
+        intensities=[],
     )
 
 
@@ -87,7 +92,9 @@ def library_rate(n: int, folder: Path) -> float:
     with open(path, "wb") as f:
         writer = Writer(f, chunk_size=1 << 20, compression=CompressionType.ZSTD)
         writer.start(profile="ros2", library="bench")
-        schema = writer.register_schema("sensor_msgs/msg/LaserScan", "ros2msg", codec.definition_text(LaserScan).encode())
+        schema = writer.register_schema(
+            "sensor_msgs/msg/LaserScan", "ros2msg", codec.definition_text(LaserScan).encode()
+        )
         channel = writer.register_channel("/scan", "cdr", schema)
         for i in range(n):
             writer.add_message(channel, log_time=i, data=data, publish_time=i)
@@ -146,20 +153,36 @@ def run(quick: bool = False) -> list[Result]:
         written = repeat(lambda: write_rate(scans, folder), reps)
         dropped = sorted(d for _, d in written)[len(written) // 2]
         results.append(
-            Result("l. recording: writing", "LaserScan bag", "MB/s of CDR", [mb for mb, _ in written],
-                   baselines={"library": "mcap library Writer"},
-                   note=f"{scans} scans of {len(codec.encode_cdr(_scan()))} B; median {dropped} dropped")
+            Result(
+                "l. recording: writing",
+                "LaserScan bag",
+                "MB/s of CDR",
+                [mb for mb, _ in written],
+                baselines={"library": "mcap library Writer"},
+                note=f"{scans} scans of {len(codec.encode_cdr(_scan()))} B; median {dropped} dropped",
+            )
         )
         results.append(
-            Result("l. recording: writing", "mcap library Writer", "MB/s of CDR", repeat(lambda: library_rate(scans, folder), reps),
-                   note="payloads encoded beforehand")
+            Result(
+                "l. recording: writing",
+                "mcap library Writer",
+                "MB/s of CDR",
+                repeat(lambda: library_rate(scans, folder), reps),
+                note="payloads encoded beforehand",
+            )
         )
         bag = folder / "turtlebot.mcap"
         anyio.run(_turtlebot, bag, 30.0, backend_options={"loop_factory": VirtualTimeLoop})
         count, size = Bag(bag).message_count, bag.stat().st_size
         results.append(
-            Result("l. recording: play", "30 s TurtleBot bag, virtual clock", "s", repeat(lambda: play_seconds(bag), reps),
-                   higher_better=False, note=f"{count} messages, {size / 1024:.0f} KiB")
+            Result(
+                "l. recording: play",
+                "30 s TurtleBot bag, virtual clock",
+                "s",
+                repeat(lambda: play_seconds(bag), reps),
+                higher_better=False,
+                note=f"{count} messages, {size / 1024:.0f} KiB",
+            )
         )
         return results
     finally:
@@ -178,8 +201,14 @@ def _one_way(n: int, reps: int, folder: Path) -> list[Result]:
     with_recorder = repeat(recorded, reps)
     del drops[0]  # the warm-up's
     return [
-        Result("l. recording: one-way", "recording on", "deliveries/s", with_recorder,
-               baselines={"off": "recording off"}, note=f"dropped per run: {drops}"),
+        Result(
+            "l. recording: one-way",
+            "recording on",
+            "deliveries/s",
+            with_recorder,
+            baselines={"off": "recording off"},
+            note=f"dropped per run: {drops}",
+        ),
         Result("l. recording: one-way", "recording off", "deliveries/s", repeat(lambda: actors_rate(n, 1), reps)),
     ]
 

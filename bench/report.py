@@ -69,7 +69,7 @@ def write(results: Sequence[Result], wall: float, path: Path = PATH) -> None:
         text = path.read_text()
         if KEEP in text:
             kept = text.split(KEEP, 1)[1].lstrip("\n")
-    now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    now = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
     parts = [
         "# Benchmarks",
         "",

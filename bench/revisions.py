@@ -37,9 +37,21 @@ ROWS = {
     # floors and bare futures are each revision's own copy of the baseline, measured in the
     # same rounds: the actors rows' ratios to them are this run's.
     "a. one-way": ("from bench.throughput import actors_rate; print(actors_rate(100_000, 1))", "deliveries/s", True),
-    "a. direct call (floor)": ("from bench.throughput import floor_rate; print(floor_rate(100_000, 1))", "deliveries/s", True),
-    "b. fan-out 1→10": ("from bench.throughput import actors_rate; print(actors_rate(10_000, 10))", "deliveries/s", True),
-    "b. direct call (floor)": ("from bench.throughput import floor_rate; print(floor_rate(10_000, 10))", "deliveries/s", True),
+    "a. direct call (floor)": (
+        "from bench.throughput import floor_rate; print(floor_rate(100_000, 1))",
+        "deliveries/s",
+        True,
+    ),
+    "b. fan-out 1→10": (
+        "from bench.throughput import actors_rate; print(actors_rate(10_000, 10))",
+        "deliveries/s",
+        True,
+    ),
+    "b. direct call (floor)": (
+        "from bench.throughput import floor_rate; print(floor_rate(10_000, 10))",
+        "deliveries/s",
+        True,
+    ),
     "c. service sequential": (f"{_CALLS}(actors_call_time(20_000, 1))", "µs/call", False),
     "c. service sequential, timeout=5": (f"{_CALLS}(actors_call_time(20_000, 1, 5.0))", "µs/call", False),
     "c. future+Queue sequential": (f"{_CALLS}(future_call_time(20_000, 1))", "µs/call", False),
@@ -48,7 +60,10 @@ ROWS = {
     "c. future+Queue 100 callers": (f"{_CALLS}(future_call_time(20_000, 100))", "µs/call", False),
     **{
         f"g. {row}, {robots} robot{'s' if robots > 1 else ''}": (
-            f"from bench.sim import {factor}; print({factor}({robots}, 30.0))", "× real time", True)
+            f"from bench.sim import {factor}; print({factor}({robots}, 30.0))",
+            "× real time",
+            True,
+        )
         for robots in (1, 20, 100)
         for row, factor in (("nodes", "nodes_factor"), ("core (floor)", "core_factor"))
     },
@@ -95,7 +110,9 @@ def main(argv: Sequence[str] | None = None) -> None:
     parser = argparse.ArgumentParser(prog="python -m bench.revisions", description=__doc__.splitlines()[0])
     parser.add_argument("revisions", nargs="+", metavar="REV", help="git revisions; ratios are to the first")
     parser.add_argument("--rounds", type=int, default=7, help="measurements per revision and row (default 7)")
-    parser.add_argument("--only", metavar="LETTERS", default="abc", help="the scenarios to measure, e.g. c (default abc)")
+    parser.add_argument(
+        "--only", metavar="LETTERS", default="abc", help="the scenarios to measure, e.g. c (default abc)"
+    )
     parser.add_argument("--cpu", action="store_true", help="time the rows in CPU time, not wall time")
     args = parser.parse_args(argv)
     rows = {row: spec for row, spec in ROWS.items() if row[0] in args.only}
@@ -109,7 +126,10 @@ def main(argv: Sequence[str] | None = None) -> None:
                     samples.setdefault((row, rev), []).append(measure(trees[rev], code, args.cpu))
             print(f"round {round_ + 1} of {args.rounds}", file=sys.stderr, flush=True)
     first = args.revisions[0]
-    lines = [f"| row | revision | median | min–max | unit | vs {first} | vs baseline |", "|---|---|---:|---:|---|---|---|"]
+    lines = [
+        f"| row | revision | median | min–max | unit | vs {first} | vs baseline |",
+        "|---|---|---:|---:|---|---|---|",
+    ]
     for row, (_, unit, higher) in rows.items():
         base = statistics.median(samples[(row, first)])
         for rev in args.revisions:

@@ -68,7 +68,7 @@ def unavailable() -> str | None:
         return INSTALL_HINT
     try:
         run_child(["-m", "bench.ros", "probe", "single", "{}"], ros_env(), timeout=60)
-    except Exception as exc:  # noqa: BLE001 - any failure means "say so and go on"
+    except Exception as exc:
         return f"rclpy: failed to start — {exc}"
     return None
 
@@ -94,7 +94,7 @@ def measured(
     for executor, case in EXECUTORS.items():
         try:
             samples = run_child(["-m", "bench.ros", measure, executor, json.dumps({**args, "reps": reps})], ros_env())
-        except Exception as exc:  # noqa: BLE001
+        except Exception as exc:
             results.append(Result(scenario, case, unit, [], higher_better, note=f"failed: {exc}"))
             continue
         results.append(Result(scenario, case, unit, samples, higher_better))
@@ -111,7 +111,7 @@ def first_message(scenario: str, reps: int) -> list[Result]:
         args = ["-m", "bench.ros", "first_message", executor, "{}"]
         try:
             samples = repeat(lambda: time_to_line(args, FIRST_MESSAGE, ros_env()), reps)
-        except Exception as exc:  # noqa: BLE001
+        except Exception as exc:
             results.append(Result(scenario, case, "s", [], False, note=f"failed: {exc}"))
             continue
         results.append(Result(scenario, case, "s", samples, False))
@@ -132,7 +132,7 @@ def nodes(count: int, executor: str, reps: int) -> list[dict[str, float]] | str:
     args = ["-m", "bench.ros", "nodes", executor, json.dumps({"count": count})]
     try:
         return repeat(lambda: run_child(args, ros_env(), timeout=1800), reps, warmup=False)
-    except Exception as exc:  # noqa: BLE001
+    except Exception as exc:
         return f"failed: {exc}"
 
 

@@ -131,7 +131,9 @@ def run(quick: bool = False) -> list[Result]:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="1,000 nodes, 1 s of ticks")
-    parser.add_argument("--child", nargs=3, metavar=("N", "MODE", "SECONDS"), help="measure in this process, print JSON")
+    parser.add_argument(
+        "--child", nargs=3, metavar=("N", "MODE", "SECONDS"), help="measure in this process, print JSON"
+    )
     args = parser.parse_args()
     if args.child:
         count, mode, seconds = int(args.child[0]), args.child[1], float(args.child[2])

@@ -115,8 +115,11 @@ def run(quick: bool = False) -> list[Result]:
         ]
         uvloop = uvloop_factory()
         cases += [
-            ("actors, uvloop", uvloop and functools.partial(actors_call_time, loop=uvloop),
-             {"asyncio's loop": "actors", "future": "future+Queue, uvloop"}),
+            (
+                "actors, uvloop",
+                uvloop and functools.partial(actors_call_time, loop=uvloop),
+                {"asyncio's loop": "actors", "future": "future+Queue, uvloop"},
+            ),
             ("future+Queue, uvloop", uvloop and functools.partial(future_call_time, loop=uvloop), {}),
         ]
         measured = side_by_side(
@@ -126,9 +129,7 @@ def run(quick: bool = False) -> list[Result]:
             if fn is None:
                 results.append(Result(scenario, case, "µs/call", [], higher_better=False, note=UVLOOP_HINT))
                 continue
-            results.append(
-                Result(scenario, case, "µs/call", measured[case], higher_better=False, baselines=baselines)
-            )
+            results.append(Result(scenario, case, "µs/call", measured[case], higher_better=False, baselines=baselines))
         results += ros.measured(scenario, "service", "µs/call", reps, higher_better=False, n=n, callers=callers)
     return results
 

@@ -82,9 +82,7 @@ def run(quick: bool = False) -> list[Result]:
         samples = side_by_side(
             {"nodes": lambda: nodes_factor(robots, seconds), "core": lambda: core_factor(robots, seconds)}, 5
         )
-        results.append(
-            Result(scenario, "nodes", "× real time", samples["nodes"], baselines={"core": "core (floor)"})
-        )
+        results.append(Result(scenario, "nodes", "× real time", samples["nodes"], baselines={"core": "core (floor)"}))
         results.append(Result(scenario, "core (floor)", "× real time", samples["core"]))
     return results
 

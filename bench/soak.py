@@ -108,13 +108,12 @@ class GraphProcess:
             self.log.append(line)
 
     def _answers(self) -> bool:
-        with contextlib.suppress(Exception):
-            with self.connect() as conn:
-                conn.graph()
-                return True
+        with contextlib.suppress(Exception), self.connect() as conn:
+            conn.graph()
+            return True
         return False
 
-    def connect(self):  # noqa: ANN201 - the command line's Connection
+    def connect(self):
         """A command-line connection to the graph (the environment names its directory)."""
         os.environ["XDG_RUNTIME_DIR"] = self.env["XDG_RUNTIME_DIR"]
         return connect(self.name)
@@ -283,7 +282,7 @@ def connections(seconds: float = 30.0, crowd: int = 2000, idle: int = 500) -> No
                 with graph.connect() as conn:
                     conn.graph()
                 latencies.append(time.monotonic() - began)
-            except Exception as exc:  # noqa: BLE001 - counted and shown
+            except Exception as exc:
                 failures.append(str(exc))
             peak_fds = max(peak_fds, fds(graph.pid))
             probes += 1
@@ -307,8 +306,10 @@ def connections(seconds: float = 30.0, crowd: int = 2000, idle: int = 500) -> No
         )
         if failures:
             print(f"  failures: {Counter(failures).most_common(3)}")
-        print(f"`actors node list` processes during the storm (with Python's start): "
-              f"{[f'{t:.2f} s (exit {c})' for t, c in cli]}")
+        print(
+            f"`actors node list` processes during the storm (with Python's start): "
+            f"{[f'{t:.2f} s (exit {c})' for t, c in cli]}"
+        )
         print(f"graph descriptors: baseline {baseline}, peak {peak_fds}, after {fds(graph.pid)}")
         print(f"graph still running: {graph.proc.poll() is None}")
 
@@ -325,7 +326,9 @@ def stalled(seconds: float = 60.0, readers: int = 5) -> None:
                     procs.append(
                         subprocess.Popen(
                             [sys.executable, "-m", "actors", "topic", "echo", "/scan"],
-                            env=graph.env, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                            env=graph.env,
+                            stdout=subprocess.PIPE,
+                            stderr=subprocess.DEVNULL,
                         )
                     )
                 time.sleep(5)  # connected and stalled

@@ -57,18 +57,36 @@ def run(quick: bool = False) -> list[Result]:
     results = [
         Result(demo, "actors", "s", demo_samples, False, note="includes the talker's first 0.5 s period"),
         Result(demo, "actors, less the first period", "s", [s - TALKER_PERIOD for s in demo_samples], False),
-        Result(pubsub, "actors", "s", repeat(lambda: first_message("graphs/pubsub.toml"), reps, warmup=False), False,
-               baselines={"python": "python -c (floor)", **ros.baselines()}),
-        Result(pubsub, "python -c (floor)", "s",
-               repeat(lambda: time_to_line(["-c", f"print('{MARKER}')"], MARKER), reps, warmup=False), False),
+        Result(
+            pubsub,
+            "actors",
+            "s",
+            repeat(lambda: first_message("graphs/pubsub.toml"), reps, warmup=False),
+            False,
+            baselines={"python": "python -c (floor)", **ros.baselines()},
+        ),
+        Result(
+            pubsub,
+            "python -c (floor)",
+            "s",
+            repeat(lambda: time_to_line(["-c", f"print('{MARKER}')"], MARKER), reps, warmup=False),
+            False,
+        ),
     ]
     results += ros.first_message(pubsub, reps)
     for count in (100, 1_000):
         scenario = f"e. spawn {count:,} nodes"
         executors = ros_executors(count, quick)
         results.append(
-            Result(scenario, "actors", "s", repeat(lambda: spawn_time(count), reps), False,
-                   note=ros_note(count, quick), baselines=ros.baselines(executors))
+            Result(
+                scenario,
+                "actors",
+                "s",
+                repeat(lambda: spawn_time(count), reps),
+                False,
+                note=ros_note(count, quick),
+                baselines=ros.baselines(executors),
+            )
         )
         results += rclpy_nodes(scenario, count, executors, "spawn", "s")
     return results

@@ -22,7 +22,9 @@ class Target:
     measure: Callable[[Lookup], tuple[bool, str] | None]
 
 
-def _ratio(scenario: str, case: str, base_scenario: str, base_case: str, at_least: float) -> Callable[[Lookup], tuple[bool, str] | None]:
+def _ratio(
+    scenario: str, case: str, base_scenario: str, base_case: str, at_least: float
+) -> Callable[[Lookup], tuple[bool, str] | None]:
     def measure(get: Lookup) -> tuple[bool, str] | None:
         result, base = get(scenario, case), get(base_scenario, base_case)
         if result is None or base is None or not result.samples or not base.samples:
@@ -100,51 +102,109 @@ SCALE = "10,000 nodes"
 ZENOH = "k. zenoh (2 processes)"
 TARGETS = (
     # Issue 16: against our own limits (the bare asyncio floor, the physics core, a direct call).
-    Target("a", "one-way ≥ 0.7× the direct-call floor",
-           _ratio("a. one-way", "actors", "a. one-way", "direct call (floor)", 0.7)),
-    Target("b", "fan-out 1→10 ≥ 0.6× its direct-call floor",
-           _ratio("b. fan-out 1→10", "actors", "b. fan-out 1→10", "direct call (floor)", 0.6)),
-    Target("c", "round trip with a timeout ≤ 1.3× the bare future's (sequential, 100 callers)",
-           _all(_cost(SEQ, TIMEOUT, "future+Queue", 1.3), _cost(CONC, TIMEOUT, "future+Queue", 1.3))),
-    Target("c", "round trip without a timeout ≤ 1.0× the bare future's (sequential, 100 callers)",
-           _all(_cost(SEQ, "actors", "future+Queue", 1.0), _cost(CONC, "actors", "future+Queue", 1.0))),
-    Target("g", "nodes' real-time factor ≥ 0.6× the bare core (1 and 20 robots)",
-           _all(_ratio("g. sim RTF, 1 robot", "nodes", "g. sim RTF, 1 robot", "core (floor)", 0.6),
-                _ratio("g. sim RTF, 20 robots", "nodes", "g. sim RTF, 20 robots", "core (floor)", 0.6))),
-    Target("h", "100 topics at once ≥ 2× the bare queues",
-           _ratio("h. 100 topics at once", "actors", "h. 100 topics at once", "asyncio.Queue", 2)),
-    Target("h", "1,000 topics (and nodes) within 2× of 100 topics' cost per message",
-           _ratio("h. 1,000 topics at once", "actors", "h. 100 topics at once", "actors", 0.5)),
+    Target(
+        "a",
+        "one-way ≥ 0.7× the direct-call floor",
+        _ratio("a. one-way", "actors", "a. one-way", "direct call (floor)", 0.7),
+    ),
+    Target(
+        "b",
+        "fan-out 1→10 ≥ 0.6× its direct-call floor",
+        _ratio("b. fan-out 1→10", "actors", "b. fan-out 1→10", "direct call (floor)", 0.6),
+    ),
+    Target(
+        "c",
+        "round trip with a timeout ≤ 1.3× the bare future's (sequential, 100 callers)",
+        _all(_cost(SEQ, TIMEOUT, "future+Queue", 1.3), _cost(CONC, TIMEOUT, "future+Queue", 1.3)),
+    ),
+    Target(
+        "c",
+        "round trip without a timeout ≤ 1.0× the bare future's (sequential, 100 callers)",
+        _all(_cost(SEQ, "actors", "future+Queue", 1.0), _cost(CONC, "actors", "future+Queue", 1.0)),
+    ),
+    Target(
+        "g",
+        "nodes' real-time factor ≥ 0.6× the bare core (1 and 20 robots)",
+        _all(
+            _ratio("g. sim RTF, 1 robot", "nodes", "g. sim RTF, 1 robot", "core (floor)", 0.6),
+            _ratio("g. sim RTF, 20 robots", "nodes", "g. sim RTF, 20 robots", "core (floor)", 0.6),
+        ),
+    ),
+    Target(
+        "h",
+        "100 topics at once ≥ 2× the bare queues",
+        _ratio("h. 100 topics at once", "actors", "h. 100 topics at once", "asyncio.Queue", 2),
+    ),
+    Target(
+        "h",
+        "1,000 topics (and nodes) within 2× of 100 topics' cost per message",
+        _ratio("h. 1,000 topics at once", "actors", "h. 100 topics at once", "actors", 0.5),
+    ),
     Target("f", "≤ 8 KiB per idle node, flat from 100 to 10,000", _memory),
     Target("j", "spawn ≤ 60 µs per node at 10,000 nodes", _at_most(f"j. spawn, {SCALE}", "actors", 60, "µs/node")),
-    Target("j", "a 10 Hz timer tick ≤ 8 µs at 10,000 nodes",
-           _at_most(f"j. 10 Hz timer tick, {SCALE}", "actors", 8, "µs CPU")),
+    Target(
+        "j",
+        "a 10 Hz timer tick ≤ 8 µs at 10,000 nodes",
+        _at_most(f"j. 10 Hz timer tick, {SCALE}", "actors", 8, "µs CPU"),
+    ),
     Target("j", "graceful stop of 10,000 nodes ≤ 0.5 s", _at_most(f"j. graceful stop, {SCALE}", "actors", 0.5, "s")),
     # Issue 13's: across two processes on loopback, actors over Zenoh against rclpy over Fast DDS.
-    Target("k", "cross-process one-way ≥ 2× rclpy's (Fast DDS)",
-           _ratio(ZENOH, "one-way: actors (Zenoh)", ZENOH, "one-way: rclpy (Fast DDS)", 2)),
-    Target("k", "cross-process round trip ≤ rclpy's (Fast DDS)",
-           _ratio(ZENOH, "round trip: actors (Zenoh)", ZENOH, "round trip: rclpy (Fast DDS)", 1)),
+    Target(
+        "k",
+        "cross-process one-way ≥ 2× rclpy's (Fast DDS)",
+        _ratio(ZENOH, "one-way: actors (Zenoh)", ZENOH, "one-way: rclpy (Fast DDS)", 2),
+    ),
+    Target(
+        "k",
+        "cross-process round trip ≤ rclpy's (Fast DDS)",
+        _ratio(ZENOH, "round trip: actors (Zenoh)", ZENOH, "round trip: rclpy (Fast DDS)", 1),
+    ),
     # Issue 7's, kept.
     Target("a", "one-way ≥ 1.5× the bare queue", _ratio("a. one-way", "actors", "a. one-way", "asyncio.Queue", 1.5)),
-    Target("a", "one-way ≥ 20× rclpy EventsExecutor",
-           _ratio("a. one-way", "actors", "a. one-way", "rclpy EventsExecutor", 20)),
-    Target("b", "fan-out 1→10 ≥ 2× the bare queue's one-way rate",
-           _ratio("b. fan-out 1→10", "actors", "a. one-way", "asyncio.Queue", 2)),
-    Target("c", "round trip ≤ 2× the bare future's (sequential, 100 callers)",
-           _all(_cost(SEQ, "actors", "future+Queue", 2.0), _cost(CONC, "actors", "future+Queue", 2.0))),
-    Target("c", "round trip ≤ 1/5 of rclpy EventsExecutor's (sequential, 100 callers)",
-           _all(_ratio(SEQ, "actors", SEQ, "rclpy EventsExecutor", 5),
-                _ratio(CONC, "actors", CONC, "rclpy EventsExecutor", 5))),
-    Target("d", "1 kHz timer p99 lateness ≤ 1 ms (idle machine), asyncio's default loop",
-           _at_most("d. timer 1 kHz p99", "actors", 1000, "µs")),
-    Target("d", "the same on a select() loop (microsecond waits)",
-           _at_most("d. timer 1 kHz p99", "actors, select() loop", 1000, "µs")),
-    Target("e", "graph.toml to first message ≤ 0.5 s (less the talker's 0.5 s first period)",
-           _at_most("e. first message, graph.toml", "actors, less the first period", 0.5, "s")),
+    Target(
+        "a",
+        "one-way ≥ 20× rclpy EventsExecutor",
+        _ratio("a. one-way", "actors", "a. one-way", "rclpy EventsExecutor", 20),
+    ),
+    Target(
+        "b",
+        "fan-out 1→10 ≥ 2× the bare queue's one-way rate",
+        _ratio("b. fan-out 1→10", "actors", "a. one-way", "asyncio.Queue", 2),
+    ),
+    Target(
+        "c",
+        "round trip ≤ 2× the bare future's (sequential, 100 callers)",
+        _all(_cost(SEQ, "actors", "future+Queue", 2.0), _cost(CONC, "actors", "future+Queue", 2.0)),
+    ),
+    Target(
+        "c",
+        "round trip ≤ 1/5 of rclpy EventsExecutor's (sequential, 100 callers)",
+        _all(
+            _ratio(SEQ, "actors", SEQ, "rclpy EventsExecutor", 5),
+            _ratio(CONC, "actors", CONC, "rclpy EventsExecutor", 5),
+        ),
+    ),
+    Target(
+        "d",
+        "1 kHz timer p99 lateness ≤ 1 ms (idle machine), asyncio's default loop",
+        _at_most("d. timer 1 kHz p99", "actors", 1000, "µs"),
+    ),
+    Target(
+        "d",
+        "the same on a select() loop (microsecond waits)",
+        _at_most("d. timer 1 kHz p99", "actors, select() loop", 1000, "µs"),
+    ),
+    Target(
+        "e",
+        "graph.toml to first message ≤ 0.5 s (less the talker's 0.5 s first period)",
+        _at_most("e. first message, graph.toml", "actors, less the first period", 0.5, "s"),
+    ),
     Target("e", "1,000 nodes spawned ≤ 1 s", _at_most("e. spawn 1,000 nodes", "actors", 1.0, "s")),
-    Target("i", "CDR encode and decode ≥ rclpy's serialize/deserialize (Twist, LaserScan, Odometry, Image)",
-           _cdr("rclpy", 1)),
+    Target(
+        "i",
+        "CDR encode and decode ≥ rclpy's serialize/deserialize (Twist, LaserScan, Odometry, Image)",
+        _cdr("rclpy", 1),
+    ),
     Target("i", "CDR encode and decode ≥ 2× rosbags' serializer (the same four)", _cdr("rosbags", 2)),
 )
 

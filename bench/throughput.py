@@ -189,8 +189,13 @@ def on_uvloop(scenario: str, count: int, reps: int) -> list[Result]:
         {"actors": lambda: actors_rate(count, 1, loop=loop), "queue": lambda: queue_rate(count, 1, loop=loop)}, reps
     )
     return [
-        Result(scenario, "actors, uvloop", "deliveries/s", samples["actors"],
-               baselines={"asyncio's loop": "actors", "queue": "asyncio.Queue, uvloop"}),
+        Result(
+            scenario,
+            "actors, uvloop",
+            "deliveries/s",
+            samples["actors"],
+            baselines={"asyncio's loop": "actors", "queue": "asyncio.Queue, uvloop"},
+        ),
         Result(scenario, "asyncio.Queue, uvloop", "deliveries/s", samples["queue"]),
     ]
 

@@ -106,7 +106,9 @@ def run(quick: bool = False) -> list[Result]:
     metrics = (("p50", "µs late"), ("p99", "µs late"), ("CPU", "% of a core"), ("skipped", "% of ticks"))
     for i, (what, unit) in enumerate(metrics):
         for case, runs in samples.items():
-            floor = {"floor": case.replace("actors", "asyncio call_at") + " (floor)"} if case.startswith("actors") else {}
+            floor = (
+                {"floor": case.replace("actors", "asyncio call_at") + " (floor)"} if case.startswith("actors") else {}
+            )
             results.append(Result(f"d. timer 1 kHz {what}", case, unit, [r[i] for r in runs], False, baselines=floor))
     return results
 

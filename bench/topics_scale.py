@@ -25,7 +25,9 @@ def run(quick: bool = False) -> list[Result]:
     results = []
     for topics in TOPICS:
         scenario = f"h. {topics:,} topic{'s' if topics > 1 else ''} at once"
-        samples = side_by_side({"actors": lambda: actors_rate(n, 1, topics), "queue": lambda: queue_rate(n, 1, topics)}, 5)
+        samples = side_by_side(
+            {"actors": lambda: actors_rate(n, 1, topics), "queue": lambda: queue_rate(n, 1, topics)}, 5
+        )
         results.append(
             Result(scenario, "actors", "deliveries/s", samples["actors"], baselines={"queue": "asyncio.Queue"})
         )

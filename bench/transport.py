@@ -59,7 +59,9 @@ def _pair(sink: str, source: str, args: dict[str, Any], env: dict[str, str], res
         assert first.stdout is not None
         if first.stdout.readline().strip() != "ready":
             raise RuntimeError(f"{sink} did not start")
-        second = subprocess.Popen([*command, source, json.dumps(args)], cwd=ROOT, env=env, stdout=subprocess.PIPE, text=True)
+        second = subprocess.Popen(
+            [*command, source, json.dumps(args)], cwd=ROOT, env=env, stdout=subprocess.PIPE, text=True
+        )
         reader = first if result_from == "sink" else second
         out, _ = reader.communicate(timeout=300)
         lines = out.strip().splitlines()
@@ -83,7 +85,11 @@ MEASURES: dict[str, tuple[str, str, str, str, bool]] = {
 
 def run(quick: bool = False) -> list[Result]:
     """The three measurements, actors over Zenoh beside rclpy over Fast DDS."""
-    counts = {"one-way": 20_000 if quick else 100_000, "round trip": 500 if quick else 2_000, "latency p50": 500 if quick else 2_000}
+    counts = {
+        "one-way": 20_000 if quick else 100_000,
+        "round trip": 500 if quick else 2_000,
+        "latency p50": 500 if quick else 2_000,
+    }
     reps = 2 if quick else 5
     results: list[Result] = []
     zenoh_missing = importlib.util.find_spec("zenoh") is None
@@ -102,14 +108,16 @@ def run(quick: bool = False) -> list[Result]:
             continue
         try:
             ros_runs = repeat(lambda: _pair(f"ros_{sink}", f"ros_{source}", args, ros.ros_env(), result_from), reps)
-        except Exception as exc:  # noqa: BLE001 - say so and go on
+        except Exception as exc:
             results.append(Result(SCENARIO, ros_case, unit, [], higher, note=f"failed: {exc}"))
             continue
         results.append(_result(ros_case, unit, ros_runs, higher, args["n"]))
     return results
 
 
-def _result(case: str, unit: str, runs: list[Any], higher: bool, n: int, baselines: dict[str, str] | None = None) -> Result:
+def _result(
+    case: str, unit: str, runs: list[Any], higher: bool, n: int, baselines: dict[str, str] | None = None
+) -> Result:
     """A row from the children's answers: a figure each, or [rate, received] from a sink."""
     if runs and isinstance(runs[0], list):
         lost = [n - received for _, received in runs]
@@ -163,7 +171,7 @@ def _actors(role: str, args: dict[str, Any]) -> Any:
                 for _ in range(0, n, BATCH):
                     for _ in range(BATCH):
                         pub.publish(msg)
-                    await anyio.sleep(0)
+                    await anyio.lowlevel.checkpoint()
                 await anyio.sleep_forever()  # the sink reports; the parent ends this process
             if role == "server":
                 node.create_service(SetBool, "set_bool", handle)

@@ -5,11 +5,12 @@ from __future__ import annotations
 import logging
 
 import anyio
+import anyio.lowlevel
 import pytest
 
 from actors import Node, Runtime
-from actors.ros.actions import ActionCall, CancelResponse, GoalResponse, ServerGoalHandle, status_name, wire_names
 from actors.errors import ActionError, ServiceError
+from actors.ros.actions import ActionCall, CancelResponse, GoalResponse, ServerGoalHandle, status_name, wire_names
 from interfaces.action_msgs.msg import GoalStatus, GoalStatusArray
 from interfaces.builtin_interfaces.msg import Time
 from interfaces.example_interfaces.action import Fibonacci
@@ -93,7 +94,7 @@ async def test_feedback_arrives_in_order_then_the_result():
         response = await handle.get_result()
         assert rt.clock.monotonic() - start_time == pytest.approx(4.0)
         assert (response.status, response.result.sequence) == (SUCCEEDED, [0, 1, 1, 2, 3, 5])
-        await anyio.sleep(0)
+        await anyio.lowlevel.checkpoint()
         assert node.feedback == [[0, 1, 1], [0, 1, 1, 2], [0, 1, 1, 2, 3], [0, 1, 1, 2, 3, 5]]
         assert handle.status == SUCCEEDED and handle.done
 

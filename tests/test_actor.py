@@ -5,6 +5,7 @@ from __future__ import annotations
 import asyncio
 
 import anyio
+import anyio.lowlevel
 import pytest
 
 from actors import Node, Runtime
@@ -60,7 +61,12 @@ async def test_an_async_callback_holds_back_its_node_but_not_the_others():
         assert rt.node("slow")._core.actor.awaiting
         await anyio.sleep(3)
     # The slow node's second message waits for its first callback; the fast node never waits.
-    assert [e for e in events if e.startswith("slow")] == ["slow starts 1", "slow ends 1", "slow starts 2", "slow ends 2"]
+    assert [e for e in events if e.startswith("slow")] == [
+        "slow starts 1",
+        "slow ends 1",
+        "slow starts 2",
+        "slow ends 2",
+    ]
     assert events.index("fast 2") < events.index("slow ends 1")
 
 
@@ -90,7 +96,7 @@ async def test_a_node_that_keeps_itself_busy_does_not_starve_the_others():
         rt.spawn(Other)
         other = rt.spawn(Idle).create_publisher(Int64, "other", 10)
         echo.pub.publish(Int64(data=0))
-        await anyio.sleep(0)
+        await anyio.lowlevel.checkpoint()
         other.publish(Int64(data=0))
         await anyio.sleep(1)
     # One message per round for the echo node: the other node's message waits a round or two, not 100.
@@ -188,7 +194,9 @@ async def test_run_one_on_an_idle_actor_hands_an_async_callback_to_a_task_and_a_
     release = loop.create_future()
     in_context(actor.run_one, Awaiting(notes, release), scheduler, loop.time())
     assert actor.awaiting and actor._queued and notes == ["async starts"]
-    in_context(actor.run_one, Noting("while it awaits", notes), scheduler, loop.time())  # waits behind the async callback
+    in_context(
+        actor.run_one, Noting("while it awaits", notes), scheduler, loop.time()
+    )  # waits behind the async callback
     release.set_result(None)
     for _ in range(3):
         await asyncio.sleep(0)

@@ -11,18 +11,26 @@ import tracemalloc
 from pathlib import Path
 
 import pytest
+from goldens.ros import padding_positions, same_wire
+from goldens.values import DrawPick, message, shipped_messages
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from actors import codec
+from actors.errors import CdrError, MessageValidationError
 from actors.messages import cdr
 from actors.messages import generate as idl_gen
-from actors.errors import CdrError, MessageValidationError
-from goldens.ros import padding_positions, same_wire
-from goldens.values import DrawPick, message, shipped_messages
 from interfaces.geometry_msgs.msg import Twist, Vector3
 from interfaces.sensor_msgs.msg import Imu, LaserScan
-from interfaces.std_msgs.msg import Bool, Empty, Float64MultiArray, Header, MultiArrayDimension, MultiArrayLayout, String
+from interfaces.std_msgs.msg import (
+    Bool,
+    Empty,
+    Float64MultiArray,
+    Header,
+    MultiArrayDimension,
+    MultiArrayLayout,
+    String,
+)
 from interfaces.unique_identifier_msgs.msg import UUID
 
 GOLDENS = json.loads((Path(__file__).parent / "goldens" / "cdr.json").read_text())
@@ -172,8 +180,15 @@ def test_big_endian_input():
     twist = b"\x00\x00\x00\x00" + struct.pack(">6d", 1, 2, 3, 4, 5, 6)
     assert cdr.decode(twist, Twist) == Twist(linear=Vector3(x=1, y=2, z=3), angular=Vector3(x=4, y=5, z=6))
     scan = (
-        b"\x00\x00\x00\x00" + struct.pack(">iI", 7, 8) + struct.pack(">I", 1) + b"\0" + b"\0" * 3
-        + struct.pack(">7f", *[0.5] * 7) + struct.pack(">I", 2) + struct.pack(">2f", 1.5, 2.5) + struct.pack(">I", 0)
+        b"\x00\x00\x00\x00"
+        + struct.pack(">iI", 7, 8)
+        + struct.pack(">I", 1)
+        + b"\0"
+        + b"\0" * 3
+        + struct.pack(">7f", *[0.5] * 7)
+        + struct.pack(">I", 2)
+        + struct.pack(">2f", 1.5, 2.5)
+        + struct.pack(">I", 0)
     )
     decoded = cdr.decode(scan, LaserScan)
     assert decoded.header.stamp.sec == 7 and decoded.ranges == [1.5, 2.5] and decoded.scan_time == 0.5
@@ -240,7 +255,9 @@ def test_every_shape_round_trips(shapes, data):
 
 def test_bounds_are_checked_both_ways(shapes):
     shape, inner = shapes
-    with pytest.raises(CdrError, match=r"cdr_shapes_pkg/msg/Shapes: expected at most 4 characters, got 5 - at `\$.s_bounded`"):
+    with pytest.raises(
+        CdrError, match=r"cdr_shapes_pkg/msg/Shapes: expected at most 4 characters, got 5 - at `\$.s_bounded`"
+    ):
         cdr.encode(shape(s_bounded="abcde"))
     with pytest.raises(CdrError, match=r"at most 2 items, got 3 - at `\$.inners`"):
         cdr.encode(shape(inners=[inner()] * 3))
@@ -257,12 +274,18 @@ def test_bounds_are_checked_both_ways(shapes):
 @pytest.mark.parametrize(
     ("msg", "message"),
     [
-        (codec.get_type("std_msgs/msg/Int8")(data=300), r"std_msgs/msg/Int8: 300 is out of range for int8 \[-128, 127\] - at `\$.data`"),
+        (
+            codec.get_type("std_msgs/msg/Int8")(data=300),
+            r"std_msgs/msg/Int8: 300 is out of range for int8 \[-128, 127\] - at `\$.data`",
+        ),
         (Imu(orientation_covariance=[0.0] * 8), r"expected exactly 9 items, got 8 - at `\$.orientation_covariance`"),
         (UUID(uuid=b"short"), r"expected exactly 16 items, got 5 - at `\$.uuid`"),
         (Header(frame_id=3), r"expected str, got int - at `\$.frame_id`"),
         (Twist(linear=Header()), r"expected geometry_msgs/msg/Vector3, got Header - at `\$.linear`"),
-        (Float64MultiArray(layout=MultiArrayLayout(dim=[MultiArrayDimension(size=-1)])), r"at `\$.layout.dim\[0\].size`"),
+        (
+            Float64MultiArray(layout=MultiArrayLayout(dim=[MultiArrayDimension(size=-1)])),
+            r"at `\$.layout.dim\[0\].size`",
+        ),
     ],
 )
 def test_encode_names_the_bad_field(msg, message):
@@ -283,8 +306,14 @@ def test_cdr_error_is_a_validation_error():
 
 
 def test_truncation_names_the_field():
-    data = cdr.encode(Float64MultiArray(layout=MultiArrayLayout(dim=[MultiArrayDimension(label="x"), MultiArrayDimension(label="yzwvutsr")])))
-    with pytest.raises(CdrError, match=r"^std_msgs/msg/Float64MultiArray: a string of 9 bytes, 6 left - at `\$.layout.dim\[1\].label`$"):
+    data = cdr.encode(
+        Float64MultiArray(
+            layout=MultiArrayLayout(dim=[MultiArrayDimension(label="x"), MultiArrayDimension(label="yzwvutsr")])
+        )
+    )
+    with pytest.raises(
+        CdrError, match=r"^std_msgs/msg/Float64MultiArray: a string of 9 bytes, 6 left - at `\$.layout.dim\[1\].label`$"
+    ):
         cdr.decode(data[:34], Float64MultiArray)
     with pytest.raises(CdrError, match=r"2 items cannot fit in 22 bytes - at `\$.layout.dim`$"):
         cdr.decode(data[:30], Float64MultiArray)
@@ -327,8 +356,14 @@ def test_every_truncation_is_a_cdr_error(entry):
             cdr.decode(data[:end], type(msg))
 
 
-FUZZED = ["std_msgs/msg/String", "sensor_msgs/msg/LaserScan", "std_msgs/msg/Float64MultiArray",
-          "rcl_interfaces/msg/ParameterEvent", "nav_msgs/msg/Path", "action_msgs/msg/GoalStatusArray"]
+FUZZED = [
+    "std_msgs/msg/String",
+    "sensor_msgs/msg/LaserScan",
+    "std_msgs/msg/Float64MultiArray",
+    "rcl_interfaces/msg/ParameterEvent",
+    "nav_msgs/msg/Path",
+    "action_msgs/msg/GoalStatusArray",
+]
 
 
 @pytest.mark.parametrize("name", FUZZED)
@@ -399,9 +434,8 @@ def test_msgs_types(tmp_path_factory):
 @settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(data=st.data())
 def test_test_msgs_match_live_rclpy(test_msgs_types, data):
-    from rclpy.serialization import serialize_message
-
     from goldens.ros import to_rclpy
+    from rclpy.serialization import serialize_message
 
     name = data.draw(st.sampled_from(test_msgs_types))
     msg = message(codec.get_type(name), DrawPick(data))

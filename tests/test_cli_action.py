@@ -7,7 +7,6 @@ import re
 from collections.abc import Iterator
 
 import pytest
-
 from test_cli_live import GraphProcess, actors, ok
 
 GRAPH = """
@@ -66,7 +65,9 @@ def test_action_type_and_find(graph):
 
 
 def test_send_goal_prints_feedback_then_the_result_as_ros2_does(graph):
-    out = ok(graph, "action", "send_goal", "/fibonacci", "example_interfaces/action/Fibonacci", "{order: 3}", "--feedback")
+    out = ok(
+        graph, "action", "send_goal", "/fibonacci", "example_interfaces/action/Fibonacci", "{order: 3}", "--feedback"
+    )
     lines = out.split("\n")
     assert lines[:5] == [
         "Waiting for an action server to become available...",
@@ -84,14 +85,19 @@ def test_send_goal_prints_feedback_then_the_result_as_ros2_does(graph):
         "Goal finished with status: SUCCEEDED\n"
     )
     quiet = ok(graph, "action", "send_goal", "fibonacci", "example_interfaces/action/Fibonacci", "order: 1")
-    assert "Feedback" not in quiet and quiet.endswith("Result:\n    sequence:\n- 0\n- 1\n\nGoal finished with status: SUCCEEDED\n")
+    assert "Feedback" not in quiet and quiet.endswith(
+        "Result:\n    sequence:\n- 0\n- 1\n\nGoal finished with status: SUCCEEDED\n"
+    )
 
 
 @pytest.mark.parametrize(
     ("args", "error"),
     [
         (("/nothing", "example_interfaces/action/Fibonacci"), "unknown action /nothing (no server runs it)"),
-        (("/fibonacci", "example_interfaces/srv/AddTwoInts"), "example_interfaces/srv/AddTwoInts is not an action type"),
+        (
+            ("/fibonacci", "example_interfaces/srv/AddTwoInts"),
+            "example_interfaces/srv/AddTwoInts is not an action type",
+        ),
         (("/fibonacci", "example_interfaces/action/Fibonacci", "{order: x}"), "Fibonacci_Goal"),
         (("/fibonacci", "nope_msgs/action/Nope"), "unknown interface type 'nope_msgs/action/Nope'"),
     ],
@@ -141,9 +147,22 @@ def test_ctrl_c_cancels_the_goal(graph):
 
     from conftest import ROOT, python_env
 
-    command = [sys.executable, "-m", "actors", "action", "send_goal", "/fibonacci",
-               "example_interfaces/action/Fibonacci", "{order: 40}", "--feedback", "--graph", graph.name]
-    proc = subprocess.Popen(command, cwd=ROOT, env=python_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    command = [
+        sys.executable,
+        "-m",
+        "actors",
+        "action",
+        "send_goal",
+        "/fibonacci",
+        "example_interfaces/action/Fibonacci",
+        "{order: 40}",
+        "--feedback",
+        "--graph",
+        graph.name,
+    ]
+    proc = subprocess.Popen(
+        command, cwd=ROOT, env=python_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+    )
     try:
         assert proc.stdout is not None
         lines = []

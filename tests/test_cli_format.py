@@ -6,10 +6,10 @@ import pytest
 
 from actors.cli._format import field, ros_repr, yaml_text
 from actors.cli.graph import to_dot
-from actors.ops.control import GraphSnapshot
 from actors.errors import ControlError
-from actors.system.introspection import EndpointInfo, TopicInfo
+from actors.ops.control import GraphSnapshot
 from actors.ros.qos import QoSSnapshot
+from actors.system.introspection import EndpointInfo, TopicInfo
 from interfaces.geometry_msgs.msg import Twist
 from interfaces.std_msgs.msg import String
 
@@ -69,10 +69,7 @@ def test_the_dot_graph_leaves_out_rosout_and_hidden_endpoints_unless_asked():
         "}\n"
     )
     everything = to_dot(graph, everything=True)
-    assert (
-        '"t:/chatter" -> "n:/_actors_cli_1";' in everything
-        and '"n:/_demo" -> "t:/rosout";' in everything
-    )
+    assert '"t:/chatter" -> "n:/_actors_cli_1";' in everything and '"n:/_demo" -> "t:/rosout";' in everything
 
 
 def test_no_arr_and_no_str_print_ros2s_summaries_at_every_depth():

@@ -29,7 +29,10 @@ def test_show_service_prints_request_separator_response(capsys):
 
 def test_show_action_prints_goal_result_feedback(capsys):
     code, out, _ = run(capsys, "show", "example_interfaces/action/Fibonacci")
-    assert (code, out) == (0, "# Goal\nint32 order\n---\n# Result\nint32[] sequence\n---\n# Feedback\nint32[] sequence\n")
+    assert (code, out) == (
+        0,
+        "# Goal\nint32 order\n---\n# Result\nint32[] sequence\n---\n# Feedback\nint32[] sequence\n",
+    )
 
 
 def test_show_an_actions_wire_type(capsys):
@@ -108,9 +111,7 @@ def test_generate_and_show_a_user_root(tmp_path, capsys, monkeypatch):
         del sys.modules[name]
 
 
-@pytest.mark.parametrize(
-    ("text", "line"), [("int8 a\nfloat64 [] b\n", 2), ("uint8 x 999\n", 1)]
-)
+@pytest.mark.parametrize(("text", "line"), [("int8 a\nfloat64 [] b\n", 2), ("uint8 x 999\n", 1)])
 def test_generate_malformed_line_reports_file_and_line(tmp_path, capsys, text, line):
     source = tmp_path / "bad_root/pkg/msg/Bad.msg"
     source.parent.mkdir(parents=True)
@@ -124,7 +125,11 @@ def test_python_dash_m_actors_interface_show(run_module):
     result = run_module("actors", "interface", "show", "tutorial_interfaces/msg/Sphere")
     assert result.returncode == 0, result.stderr
     assert result.stdout.splitlines() == [
-        "geometry_msgs/Point center", "\tfloat64 x", "\tfloat64 y", "\tfloat64 z", "float64 radius"
+        "geometry_msgs/Point center",
+        "\tfloat64 x",
+        "\tfloat64 y",
+        "\tfloat64 z",
+        "float64 radius",
     ]
     missing = run_module("actors", "interface", "show", "std_msgs/msg/Nope")
     assert missing.returncode == 2 and missing.stderr.count("\n") == 1
@@ -165,9 +170,7 @@ def test_packages_and_package_list_what_each_defines(capsys):
         {name.split("/")[0] for name in codec.list_types() if "/action/" in name}
     )
     assert "std_srvs" not in run(capsys, "packages", "--only-msgs")[1].splitlines()
-    assert run(capsys, "package", "std_srvs")[1] == (
-        "std_srvs/srv/Empty\nstd_srvs/srv/SetBool\nstd_srvs/srv/Trigger\n"
-    )
+    assert run(capsys, "package", "std_srvs")[1] == ("std_srvs/srv/Empty\nstd_srvs/srv/SetBool\nstd_srvs/srv/Trigger\n")
     lines = run(capsys, "package", "example_interfaces")[1].splitlines()
     kinds = [line.split("/")[1] for line in lines]
     assert kinds == sorted(kinds, key=["msg", "srv", "action"].index) and "action" in kinds

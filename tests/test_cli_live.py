@@ -18,7 +18,6 @@ from pathlib import Path
 
 import pytest
 import yaml
-
 from conftest import ROOT, python_env
 
 
@@ -53,9 +52,7 @@ class GraphProcess:
         """The first line from index ``after`` on containing ``text``; fails after ``timeout`` s."""
 
         def found() -> str | None:
-            return next(
-                (line for line in self.lines[after:] if text in line or line == "<exited>"), None
-            )
+            return next((line for line in self.lines[after:] if text in line or line == "<exited>"), None)
 
         with self._changed:
             line = self._changed.wait_for(found, timeout)
@@ -83,9 +80,7 @@ def graph(tmp_path_factory: pytest.TempPathFactory) -> Iterator[GraphProcess]:
         running.stop()
 
 
-def actors(
-    graph: GraphProcess, *args: str, timeout: float = 30
-) -> subprocess.CompletedProcess[str]:
+def actors(graph: GraphProcess, *args: str, timeout: float = 30) -> subprocess.CompletedProcess[str]:
     """Run ``python -m actors ARGS --graph NAME``."""
     return subprocess.run(
         [sys.executable, "-m", "actors", *args, "--graph", graph.name],
@@ -132,18 +127,15 @@ COURSE_NODES = {
 
 def test_node_list_shows_every_node_and_no_hidden_one(graph):
     names = ok(graph, "node", "list").split()
-    assert COURSE_NODES <= set(names)
+    assert set(names) >= COURSE_NODES
     assert names == sorted(names) and not [n for n in names if n.rsplit("/", 1)[1].startswith("_")]
 
 
 def test_node_info_prints_ros2s_sections(graph):
     out = ok(graph, "node", "info", "/minimal_publisher")
-    assert out.startswith(
-        "/minimal_publisher\n  Subscribers:\n\n  Publishers:\n    /topic: std_msgs/msg/String\n"
-    )
+    assert out.startswith("/minimal_publisher\n  Subscribers:\n\n  Publishers:\n    /topic: std_msgs/msg/String\n")
     assert (
-        "  Service Servers:\n"
-        "    /minimal_publisher/describe_parameters: rcl_interfaces/srv/DescribeParameters\n" in out
+        "  Service Servers:\n    /minimal_publisher/describe_parameters: rcl_interfaces/srv/DescribeParameters\n" in out
     )
     assert out.endswith("  Service Clients:\n\n  Action Servers:\n\n  Action Clients:\n\n")
 
@@ -173,9 +165,7 @@ def test_topic_hz_reports_about_two_hertz(graph):
     out = ok(graph, "topic", "hz", "/topic", "--count", "2")
     rates = [float(r) for r in re.findall(r"^average rate: (\d+\.\d{3})$", out, re.MULTILINE)]
     assert len(rates) == 2 and 1.5 <= rates[-1] <= 2.5, out
-    assert re.search(
-        r"^\tmin: 0\.\d{3}s max: 0\.\d{3}s std dev: \d\.\d{5}s window: \d+$", out, re.MULTILINE
-    )
+    assert re.search(r"^\tmin: 0\.\d{3}s max: 0\.\d{3}s std dev: \d\.\d{5}s window: \d+$", out, re.MULTILINE)
 
 
 def test_topic_type_and_find(graph):
@@ -221,17 +211,12 @@ def test_topic_bw_counts_the_scans_cdr_bytes(graph):
 def test_topic_pub_once_and_times(graph):
     out = ok(graph, "topic", "pub", "/kill", "std_msgs/msg/Bool", "data: true", "--once")
     assert out == "publisher: beginning loop\npublishing #1: std_msgs.msg.Bool(data=True)\n\n"
-    out = ok(
-        graph, "topic", "pub", "/cli_test", "std_msgs/msg/Int64", "{data: 7}", "-r", "50", "-t", "3"
-    )
+    out = ok(graph, "topic", "pub", "/cli_test", "std_msgs/msg/Int64", "{data: 7}", "-r", "50", "-t", "3")
     assert re.findall(r"publishing #(\d): std_msgs\.msg\.Int64\(data=7\)", out) == ["1", "2", "3"]
 
 
 def test_service_list_type_and_call(graph):
-    assert (
-        "/add_two_ints [example_interfaces/srv/AddTwoInts]"
-        in ok(graph, "service", "list", "-t").splitlines()
-    )
+    assert "/add_two_ints [example_interfaces/srv/AddTwoInts]" in ok(graph, "service", "list", "-t").splitlines()
     assert ok(graph, "service", "type", "/add_two_ints") == "example_interfaces/srv/AddTwoInts\n"
     out = ok(
         graph,
@@ -253,10 +238,7 @@ def test_service_list_type_and_call(graph):
 
 def test_param_set_reaches_the_node_and_get_list_dump_read_it(graph):
     mark = len(graph.lines)
-    assert (
-        ok(graph, "param", "set", "/minimal_param_node", "my_parameter", "earth")
-        == "Set parameter successful\n"
-    )
+    assert ok(graph, "param", "set", "/minimal_param_node", "my_parameter", "earth") == "Set parameter successful\n"
     graph.wait_for("[minimal_param_node]: Hello earth!", after=mark)
     assert ok(graph, "param", "get", "/minimal_param_node", "my_parameter") in (
         "String value is: world\n",
@@ -276,9 +258,7 @@ def test_a_refused_param_set_says_why_and_exits_1(graph):
     result = actors(graph, "param", "set", "/minimal_param_node", "my_parameter", "3")
     assert (result.returncode, result.stdout) == (1, "")
     # On stderr, as ros2 param set prints it.
-    assert (
-        result.stderr == "Setting parameter failed: wrong type: expected STRING, got INTEGER (3)\n"
-    )
+    assert result.stderr == "Setting parameter failed: wrong type: expected STRING, got INTEGER (3)\n"
 
 
 def test_doctor_passes_the_demo_with_warnings_only(graph):
@@ -306,10 +286,7 @@ def test_graph_writes_a_dot_file(graph, tmp_path):
     assert ok(graph, "graph", "--output", str(target)) == f"wrote {target}\n"
     dot = target.read_text()
     assert dot.startswith(f'digraph "{graph.name}" {{\n')
-    assert (
-        '"n:/minimal_publisher" -> "t:/topic";' in dot
-        and '"t:/topic" -> "n:/minimal_subscriber";' in dot
-    )
+    assert '"n:/minimal_publisher" -> "t:/topic";' in dot and '"t:/topic" -> "n:/minimal_subscriber";' in dot
     assert "/rosout" not in dot
 
 
@@ -336,8 +313,7 @@ def test_graph_writes_a_dot_file(graph, tmp_path):
         (("service", "call", "/nothing", "std_srvs/srv/Trigger"), "unknown service /nothing"),
         (
             ("service", "call", "/add_two_ints", "std_srvs/srv/Trigger"),
-            "service /add_two_ints has type example_interfaces/srv/AddTwoInts, "
-            "not std_srvs/srv/Trigger",
+            "service /add_two_ints has type example_interfaces/srv/AddTwoInts, not std_srvs/srv/Trigger",
         ),
         (
             ("topic", "pub", "/x", "nope_msgs/msg/Nope"),
@@ -372,9 +348,7 @@ def test_graph_writes_a_dot_file(graph, tmp_path):
 def test_user_errors_exit_2_with_one_line(graph, args, error):
     result = actors(graph, *args)
     assert result.returncode == 2, result
-    assert len(result.stderr.splitlines()) == 1 and result.stderr.startswith(f"actors: {error}"), (
-        result.stderr
-    )
+    assert len(result.stderr.splitlines()) == 1 and result.stderr.startswith(f"actors: {error}"), result.stderr
     assert "Traceback" not in result.stdout + result.stderr
 
 
@@ -402,8 +376,7 @@ def test_with_no_running_graph_every_verb_says_so_in_one_line(tmp_path):
         )
         assert result.returncode == 2
         assert result.stderr == (
-            "actors: no running actors graph found "
-            "(start one with: python -m actors.run graph.toml)\n"
+            "actors: no running actors graph found (start one with: python -m actors.run graph.toml)\n"
         )
 
 
@@ -412,8 +385,7 @@ def turtlebot(tmp_path_factory: pytest.TempPathFactory) -> Iterator[GraphProcess
     path = tmp_path_factory.mktemp("turtlebot") / f"cli_turtlebot_{os.getpid()}.toml"
     # The robot graph prints nothing while it drives; a talker tells when it runs.
     path.write_text(
-        (ROOT / "graphs" / "turtlebot.toml").read_text()
-        + '\n[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n'
+        (ROOT / "graphs" / "turtlebot.toml").read_text() + '\n[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n'
     )
     running = GraphProcess(path)
     try:

@@ -86,9 +86,7 @@ async def test_describe_prints_type_description_and_constraints(endpoints, capsy
         )
 
 
-async def test_delete_undeclares_a_dynamically_typed_parameter_and_refuses_a_static_one(
-    endpoints, capsys
-):
+async def test_delete_undeclares_a_dynamically_typed_parameter_and_refuses_a_static_one(endpoints, capsys):
     async with tuned() as rt:
         assert await actors(capsys, "param", "delete", "/tuned", "scratch") == (
             0,
@@ -119,9 +117,7 @@ async def test_load_sets_what_the_file_gives_the_node_each_on_its_own(endpoints,
         code, out, err = await actors(capsys, "param", "load", "/tuned", str(params))
         assert code == 1  # mode is read-only
         assert out == (
-            "Set parameter speed successful\n"
-            "Set parameter laps successful\n"
-            "Set parameter pid.kp successful\n"
+            "Set parameter speed successful\nSet parameter laps successful\nSet parameter pid.kp successful\n"
         )
         assert err == "Set parameter mode failed: parameter 'mode' is read-only\n"
         node = rt.node("tuned")

@@ -8,16 +8,13 @@ import sys
 from pathlib import Path
 
 import pytest
-
 from conftest import python_env
 
 
 def run(cwd: Path, *args: str) -> subprocess.CompletedProcess[str]:
     """``python ARGS`` in ``cwd`` as a user would run it: the installed actors, not the checkout's path."""
     env = {**python_env(), "PYTHONPATH": ""}
-    return subprocess.run(
-        [sys.executable, *args], cwd=cwd, env=env, capture_output=True, text=True, timeout=120
-    )
+    return subprocess.run([sys.executable, *args], cwd=cwd, env=env, capture_output=True, text=True, timeout=120)
 
 
 def test_a_created_package_runs_its_node_and_passes_its_test(tmp_path):

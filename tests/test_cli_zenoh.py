@@ -8,7 +8,6 @@ import sys
 
 import anyio
 import pytest
-
 from conftest import ROOT
 from zenoh_procs import free_port, raw_config, spawned, zenoh_env
 
@@ -104,13 +103,17 @@ async def test_topics_services_and_node_info_of_other_processes():
                 assert "/topic [std_msgs/msg/String]" in out.splitlines(), err
                 code, out, err = await actors(port, "topic", "echo", "/topic", "--once")
                 assert code == 0 and out.startswith("data: 'Hello World: "), err
-                code, out, err = await actors(port, "service", "call", "/add_two_ints", "example_interfaces/srv/AddTwoInts", "{a: 2, b: 3}")
+                code, out, err = await actors(
+                    port, "service", "call", "/add_two_ints", "example_interfaces/srv/AddTwoInts", "{a: 2, b: 3}"
+                )
                 assert code == 0 and "sum=5" in out, err
                 code, out, err = await actors(port, "node", "info", "/minimal_publisher")
                 assert code == 0 and "    /topic: std_msgs/msg/String" in out.splitlines(), err
                 async with spawned("-m", "actors.run", "graphs/listener.toml", env=env) as listener:
                     await listener.wait_for("I heard")
-                    code, out, err = await actors(port, "topic", "pub", "/topic", "std_msgs/msg/String", "data: from the command line", "--once")
+                    code, out, err = await actors(
+                        port, "topic", "pub", "/topic", "std_msgs/msg/String", "data: from the command line", "--once"
+                    )
                     assert code == 0, err
                     await listener.wait_for('I heard: "from the command line"')
 

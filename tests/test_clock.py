@@ -15,8 +15,8 @@ import pytest
 
 from actors import Node, Runtime
 from actors.core.loops import VirtualTimeLoop
-from actors.ros.time import Clock, ClockType, Duration, Infinite, Rate, ROSClock, Time
 from actors.errors import VirtualTimeDeadlock
+from actors.ros.time import Clock, ClockType, Duration, Infinite, Rate, ROSClock, Time
 
 
 class Idle(Node):

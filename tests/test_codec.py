@@ -10,8 +10,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from actors import codec
-from actors.messages import idl
 from actors.errors import MessageValidationError, UnknownInterfaceError
+from actors.messages import idl
 from interfaces.builtin_interfaces.msg import Time
 from interfaces.example_interfaces.action import Fibonacci
 from interfaces.example_interfaces.srv import AddTwoInts
@@ -32,7 +32,9 @@ def message_types() -> list[type]:
         elif "/action/" in name:
             impl = cls.Impl
             found += [cls.Goal, cls.Result, cls.Feedback, impl.FeedbackMessage]
-            found += [part for srv in (impl.SendGoalService, impl.GetResultService) for part in (srv.Request, srv.Response)]
+            found += [
+                part for srv in (impl.SendGoalService, impl.GetResultService) for part in (srv.Request, srv.Response)
+            ]
         else:
             found.append(cls)
     return found
@@ -115,14 +117,27 @@ def test_round_trip_keeps_defaults_and_nesting():
     [
         (UInt8, {"data": 300}, "field 'data' of std_msgs/msg/UInt8: expected an integer <= 255, got the integer 300"),
         (UInt8, {"data": -1}, "field 'data' of std_msgs/msg/UInt8: expected an integer >= 0, got the integer -1"),
-        (Time, {"nanosec": 2**32}, "field 'nanosec' of builtin_interfaces/msg/Time: expected an integer <= 4294967295, "
-                                   "got the integer 4294967296"),
-        (Imu, {"orientation_covariance": [0.0] * 8},
-         "field 'orientation_covariance' of sensor_msgs/msg/Imu: expected at least 9 items, got 8"),
-        (ParameterDescriptor, {"integer_range": [{}, {}]},
-         "field 'integer_range' of rcl_interfaces/msg/ParameterDescriptor: expected at most 1 item, got 2"),
-        (PoseStamped, {"header": {"stamp": {"sec": "x"}}},
-         "field 'header.stamp.sec' of geometry_msgs/msg/PoseStamped: expected an integer, got the string 'x'"),
+        (
+            Time,
+            {"nanosec": 2**32},
+            "field 'nanosec' of builtin_interfaces/msg/Time: expected an integer <= 4294967295, "
+            "got the integer 4294967296",
+        ),
+        (
+            Imu,
+            {"orientation_covariance": [0.0] * 8},
+            "field 'orientation_covariance' of sensor_msgs/msg/Imu: expected at least 9 items, got 8",
+        ),
+        (
+            ParameterDescriptor,
+            {"integer_range": [{}, {}]},
+            "field 'integer_range' of rcl_interfaces/msg/ParameterDescriptor: expected at most 1 item, got 2",
+        ),
+        (
+            PoseStamped,
+            {"header": {"stamp": {"sec": "x"}}},
+            "field 'header.stamp.sec' of geometry_msgs/msg/PoseStamped: expected an integer, got the string 'x'",
+        ),
         (PoseStamped, {"heder": {}}, "geometry_msgs/msg/PoseStamped has no field 'heder' (did you mean 'header'?)"),
     ],
 )
@@ -202,7 +217,11 @@ def test_list_types_lists_messages_services_and_actions():
     assert names == sorted(names)
     assert {"std_msgs/msg/String", "geometry_msgs/msg/Twist", "rcl_interfaces/msg/Log"} <= set(names)
     assert {"example_interfaces/srv/AddTwoInts", "rcl_interfaces/srv/ListParameters"} <= set(names)
-    assert {"example_interfaces/action/Fibonacci", "action_msgs/srv/CancelGoal", "unique_identifier_msgs/msg/UUID"} <= set(names)
+    assert {
+        "example_interfaces/action/Fibonacci",
+        "action_msgs/srv/CancelGoal",
+        "unique_identifier_msgs/msg/UUID",
+    } <= set(names)
     assert not any(name.endswith(("_Request", "_Response", "_Goal", "_FeedbackMessage")) for name in names)
 
 
@@ -271,8 +290,11 @@ def test_the_issues_example_reads_as_promised():
 
 
 def test_convert_reports_bad_bytes_by_path():
-    with pytest.raises(MessageValidationError, match=r"^field 'byte_array_value' of rcl_interfaces/msg/ParameterValue: "
-                       r"expected bytes \(a list of integers from 0 to 255\), got a list$"):
+    with pytest.raises(
+        MessageValidationError,
+        match=r"^field 'byte_array_value' of rcl_interfaces/msg/ParameterValue: "
+        r"expected bytes \(a list of integers from 0 to 255\), got a list$",
+    ):
         codec.convert({"byte_array_value": [1, 256]}, ParameterValue)
 
 
@@ -316,11 +338,21 @@ def test_definition_text_is_what_rosbag2_writes():
     rule = "\n" + "=" * 80 + "\nMSG: "
     expected = (
         PoseStamped.__ros_definition__
-        + rule + "geometry_msgs/Pose\n" + Pose.__ros_definition__
-        + rule + "geometry_msgs/Point\n" + Point.__ros_definition__
-        + rule + "geometry_msgs/Quaternion\n" + Quaternion.__ros_definition__
-        + rule + "std_msgs/Header\n" + Header.__ros_definition__
-        + rule + "builtin_interfaces/Time\n" + Time.__ros_definition__
+        + rule
+        + "geometry_msgs/Pose\n"
+        + Pose.__ros_definition__
+        + rule
+        + "geometry_msgs/Point\n"
+        + Point.__ros_definition__
+        + rule
+        + "geometry_msgs/Quaternion\n"
+        + Quaternion.__ros_definition__
+        + rule
+        + "std_msgs/Header\n"
+        + Header.__ros_definition__
+        + rule
+        + "builtin_interfaces/Time\n"
+        + Time.__ros_definition__
     )
     assert codec.definition_text(PoseStamped) == expected
     odometry = codec.definition_text("nav_msgs/msg/Odometry")

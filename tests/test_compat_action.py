@@ -123,7 +123,9 @@ def test_a_goal_runs_to_its_result_with_feedback_messages_while_spun(rclpy_sessi
     node, action = client
     assert action.wait_for_server(timeout_sec=1.0)
     heard: list[tuple[float, Any]] = []
-    sent = action.send_goal_async(Fibonacci.Goal(order=4), feedback_callback=lambda m: heard.append((now(rclpy_session), m)))
+    sent = action.send_goal_async(
+        Fibonacci.Goal(order=4), feedback_callback=lambda m: heard.append((now(rclpy_session), m))
+    )
     rclpy_session.sleep(0.5)
     assert not sent.done()  # the answer waits for the client's node to be spun, as in rclpy
     goal = spun(node, sent)
@@ -135,7 +137,9 @@ def test_a_goal_runs_to_its_result_with_feedback_messages_while_spun(rclpy_sessi
     # rclpy's feedback callback gets the whole FeedbackMessage: the goal's id and the feedback.
     assert all(type(m) is Fibonacci.Impl.FeedbackMessage and m.goal_id == goal.goal_id for _, m in heard)
     assert [(t, m.feedback.sequence) for t, m in heard] == [
-        (0.5, [0, 1, 1]), (pytest.approx(1.0), [0, 1, 1, 2]), (pytest.approx(2.0), [0, 1, 1, 2, 3])
+        (0.5, [0, 1, 1]),
+        (pytest.approx(1.0), [0, 1, 1, 2]),
+        (pytest.approx(2.0), [0, 1, 1, 2, 3]),
     ]  # what came while nobody spun the client waited for the spin, then one message a second
     assert [what for what, _ in server.calls] == ["goal"]
 

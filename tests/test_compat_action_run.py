@@ -4,7 +4,6 @@ programs in one runtime on the virtual clock, with what they log (scripts/fibona
 from __future__ import annotations
 
 import pytest
-
 from conftest import ROOT
 from test_compat_launcher import actors_run, messages
 
@@ -39,16 +38,24 @@ def test_feedback_in_order_then_the_result_each_line_at_its_virtual_second():
     ]
     assert len(lines) == 9
     # What one node says because of the other comes after it.
-    for cause, effect in [("order 3 accepted", "the server took it"), ("next: 1", "so far: [0, 1, 1]"),
-                          ("next: 2", "so far: [0, 1, 1, 2]"), ("done: [0, 1, 1, 2]", "succeeded")]:
+    for cause, effect in [
+        ("order 3 accepted", "the server took it"),
+        ("next: 1", "so far: [0, 1, 1]"),
+        ("next: 2", "so far: [0, 1, 1, 2]"),
+        ("done: [0, 1, 1, 2]", "succeeded"),
+    ]:
         assert next(i for i, line in enumerate(lines) if cause in line) < next(
-            i for i, line in enumerate(lines) if effect in line)
+            i for i, line in enumerate(lines) if effect in line
+        )
 
 
 def test_the_client_cancels_an_executing_goal():
     done = pair("", "6", "cancel")
     assert messages(done, "fibonacci_client")[-4:] == [
-        "so far: [0, 1, 1, 2, 3]", "asking to cancel", "the server is canceling", "canceled: [0, 1, 1, 2, 3]"
+        "so far: [0, 1, 1, 2, 3]",
+        "asking to cancel",
+        "the server is canceling",
+        "canceled: [0, 1, 1, 2, 3]",
     ]
     assert "[INFO] [3.000000000] [fibonacci_server]: canceled at 3" in done.stderr.splitlines()
 
@@ -62,7 +69,10 @@ def test_a_goal_the_server_refuses():
 def test_spin_until_future_complete_in_main():
     done = pair("", "2", "blocking")
     assert messages(done, "fibonacci_client") == [
-        "looking for the server", "the server took it", "so far: [0, 1, 1]", "succeeded: [0, 1, 1]"
+        "looking for the server",
+        "the server took it",
+        "so far: [0, 1, 1]",
+        "succeeded: [0, 1, 1]",
     ]
 
 
@@ -83,15 +93,25 @@ def test_asyncio_tasks_send_two_goals_at_once_and_a_reentrant_server_runs_them_s
     assert client[2] == "[INFO] [2.150000000] [fibonacci_client]: third: succeeded with 3 numbers"
 
 
-@pytest.mark.parametrize(("policy", "outcomes", "log"), [
-    ("queue", ["succeeded with 3 numbers", "succeeded with 3 numbers"], "1 goal(s) waiting"),
-    ("latest", ["aborted with 3 numbers", "succeeded with 4 numbers"], "a newer goal came: aborting the running one"),
-])
+@pytest.mark.parametrize(
+    ("policy", "outcomes", "log"),
+    [
+        ("queue", ["succeeded with 3 numbers", "succeeded with 3 numbers"], "1 goal(s) waiting"),
+        (
+            "latest",
+            ["aborted with 3 numbers", "succeeded with 4 numbers"],
+            "a newer goal came: aborting the running one",
+        ),
+    ],
+)
 def test_a_server_that_queues_goals_or_keeps_only_the_latest(policy, outcomes, log):
     done = pair(policy, "3" if policy == "latest" else "2", "asyncio")
     assert log in messages(done, "fibonacci_server")
-    ends = [m.split(": ", 1)[1] for m in messages(done, "fibonacci_client") if m.startswith(("first:", "second:"))
-            and "took it" not in m]
+    ends = [
+        m.split(": ", 1)[1]
+        for m in messages(done, "fibonacci_client")
+        if m.startswith(("first:", "second:")) and "took it" not in m
+    ]
     assert sorted(ends) == sorted(outcomes)
 
 
@@ -104,10 +124,13 @@ def test_each_script_sees_its_own_command_line_and_a_failing_partner_fails_the_r
     assert messages(done, "fibonacci_client")[-1] == "succeeded: [0, 1]"  # the client read its own "1"
 
 
-@pytest.mark.parametrize(("partner", "problem"), [
-    ("nowhere.py", "error: nowhere.py: no such script"),
-    ("'unclosed", "error: --with: No closing quotation"),
-])
+@pytest.mark.parametrize(
+    ("partner", "problem"),
+    [
+        ("nowhere.py", "error: nowhere.py: no such script"),
+        ("'unclosed", "error: --with: No closing quotation"),
+    ],
+)
 def test_a_bad_partner_is_one_line_and_exit_2(partner, problem):
     done = actors_run("--clock", "virtual", "--with", partner, CLIENT)
     assert (done.returncode, done.stderr.strip()) == (2, problem)

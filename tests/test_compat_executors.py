@@ -37,6 +37,7 @@ from interfaces.std_msgs.msg import Int64, String
 def session(rclpy_session):
     return rclpy_session
 
+
 def now(session: Session) -> float:
     return session.loop.time()
 
@@ -587,10 +588,23 @@ def test_matched_events_follow_a_script_creating_and_destroying_endpoints(sessio
 
     watcher = rclpy.create_node("watcher")
     seen: list[tuple[str, int, int]] = []
-    watcher.create_publisher(String, "out", 10, event_callbacks=PublisherEventCallbacks(
-        matched=lambda info: seen.append(("subs", info.current_count, info.current_count_change))))
-    watcher.create_subscription(String, "in", lambda msg: None, 10, event_callbacks=SubscriptionEventCallbacks(
-        matched=lambda info: seen.append(("pubs", info.current_count, info.current_count_change))))
+    watcher.create_publisher(
+        String,
+        "out",
+        10,
+        event_callbacks=PublisherEventCallbacks(
+            matched=lambda info: seen.append(("subs", info.current_count, info.current_count_change))
+        ),
+    )
+    watcher.create_subscription(
+        String,
+        "in",
+        lambda msg: None,
+        10,
+        event_callbacks=SubscriptionEventCallbacks(
+            matched=lambda info: seen.append(("pubs", info.current_count, info.current_count_change))
+        ),
+    )
     other = rclpy.create_node("other")
     executor = SingleThreadedExecutor()
     executor.add_node(watcher)
@@ -638,8 +652,9 @@ def test_a_script_nodes_logger_service(session):
     executor.add_node(served)
     executor.add_node(asker)
     try:
-        future = client.call_async(SetLoggerLevels.Request(levels=[
-            LoggerLevel(name="levels_served", level=int(LoggingSeverity.ERROR))]))
+        future = client.call_async(
+            SetLoggerLevels.Request(levels=[LoggerLevel(name="levels_served", level=int(LoggingSeverity.ERROR))])
+        )
         executor.spin_until_future_complete(future, timeout_sec=1.0)  # the service answers while spun
         assert future.result().results[0].successful
         assert served.get_logger().get_effective_level() == LoggingSeverity.ERROR

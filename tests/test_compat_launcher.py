@@ -9,7 +9,6 @@ import sys
 import weakref
 
 import pytest
-
 from conftest import ROOT, TESTS, python_env
 
 SCRIPTS = ROOT / "scripts"
@@ -19,7 +18,11 @@ TEST_SCRIPTS = TESTS / "rclpy_scripts"
 def actors_run(*args: str, timeout: float = 60) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
         [sys.executable, "-m", "actors", "run", *args],
-        cwd=ROOT, env=python_env(), capture_output=True, text=True, timeout=timeout,
+        cwd=ROOT,
+        env=python_env(),
+        capture_output=True,
+        text=True,
+        timeout=timeout,
     )
 
 
@@ -31,34 +34,42 @@ def test_a_publisher_on_the_virtual_clock_logs_on_stderr_with_virtual_stamps():
     done = actors_run("--clock", "virtual", "--duration", "1.1", script("talker.py"))
     assert done.returncode == 0, done.stderr
     assert done.stdout == ""
-    assert done.stderr.splitlines() == [
-        f'[INFO] [{0.25 * (i + 1):.9f}] [talker]: sent count {i}' for i in range(4)
-    ]
+    assert done.stderr.splitlines() == [f"[INFO] [{0.25 * (i + 1):.9f}] [talker]: sent count {i}" for i in range(4)]
 
 
 def test_a_subscriber_beside_a_graph_hears_its_talker():
-    done = actors_run("--graph", str(SCRIPTS / "with_talker.toml"), "--clock", "virtual", "--duration", "1.6",
-                      script("listener.py"))
+    done = actors_run(
+        "--graph", str(SCRIPTS / "with_talker.toml"), "--clock", "virtual", "--duration", "1.6", script("listener.py")
+    )
     assert done.returncode == 0, done.stderr
     heard = [line for line in done.stderr.splitlines() if "[listener]" in line]
-    assert heard == [
-        f'[INFO] [{0.5 * (i + 1):.9f}] [listener]: got Hello World: {i}' for i in range(3)
-    ]
+    assert heard == [f"[INFO] [{0.5 * (i + 1):.9f}] [listener]: got Hello World: {i}" for i in range(3)]
 
 
 def test_a_client_waits_for_a_late_service_then_uses_its_arguments():
-    done = actors_run("--graph", str(SCRIPTS / "with_server.toml"), "--clock", "virtual", script("add_two_ints_client.py"),
-                      "2", "3")
+    done = actors_run(
+        "--graph", str(SCRIPTS / "with_server.toml"), "--clock", "virtual", script("add_two_ints_client.py"), "2", "3"
+    )
     assert done.returncode == 0, done.stderr
     lines = done.stderr.splitlines()
     # wait_for_service(timeout_sec=1.0) really waits: one line per virtual second until the server is up.
-    assert lines[:2] == ["[INFO] [1.000000000] [ask_adder]: no adder yet", "[INFO] [2.000000000] [ask_adder]: no adder yet"]
+    assert lines[:2] == [
+        "[INFO] [1.000000000] [ask_adder]: no adder yet",
+        "[INFO] [2.000000000] [ask_adder]: no adder yet",
+    ]
     assert lines[-1] == "[INFO] [2.500000000] [ask_adder]: 2 + 3 = 5"
 
 
 def test_a_service_answers_a_graph_client():
-    done = actors_run("--graph", str(SCRIPTS / "with_client.toml"), "--clock", "virtual", "--duration", "1",
-                      script("add_two_ints_server.py"))
+    done = actors_run(
+        "--graph",
+        str(SCRIPTS / "with_client.toml"),
+        "--clock",
+        "virtual",
+        "--duration",
+        "1",
+        script("add_two_ints_server.py"),
+    )
     assert done.returncode == 0, done.stderr
     assert "[adder]: adding 20 and 22" in done.stderr
     assert "[minimal_client_async]: Result of add_two_ints: for 20 + 22 = 42" in done.stderr
@@ -107,7 +118,11 @@ def test_ctrl_c_stops_a_spinning_script_gracefully():
     # talker.py does not catch KeyboardInterrupt: the launcher still exits 0, without a traceback.
     proc = subprocess.Popen(
         [sys.executable, "-m", "actors", "run", script("talker.py")],
-        cwd=ROOT, env=python_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        cwd=ROOT,
+        env=python_env(),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
     )
     assert proc.stderr is not None
     first = proc.stderr.readline()  # the first message: the script is spinning
@@ -121,8 +136,18 @@ def test_ctrl_c_stops_a_spinning_script_gracefully():
 def test_ros_arguments_give_parameters_names_and_log_levels(tmp_path):
     params = tmp_path / "params.yaml"
     params.write_text("/**:\n  ros__parameters: {speed: 0.5}\n/robot/tuned:\n  ros__parameters: {label: from_file}\n")
-    done = actors_run(script("params.py"), "--ros-args", "-r", "__ns:=/robot", "--params-file", str(params),
-                      "-p", "speed:=2.5", "--log-level", "debug")
+    done = actors_run(
+        script("params.py"),
+        "--ros-args",
+        "-r",
+        "__ns:=/robot",
+        "--params-file",
+        str(params),
+        "-p",
+        "speed:=2.5",
+        "--log-level",
+        "debug",
+    )
     assert done.returncode == 0, done.stderr
     assert done.stdout.splitlines() == ["/robot/tuned speed=2.5 label=from_file"]
     assert "[DEBUG]" in done.stderr and "[robot.tuned]: debug is on" in done.stderr
@@ -152,16 +177,18 @@ def test_publishing_from_a_closure_or_a_sleep_loop(style):
 
 
 def test_a_service_spun_once_at_a_time_from_a_module_level_node():
-    done = actors_run("--graph", str(SCRIPTS / "with_client.toml"), "--clock", "virtual", "--duration", "1",
-                      script("service_loop.py"))
+    done = actors_run(
+        "--graph", str(SCRIPTS / "with_client.toml"), "--clock", "virtual", "--duration", "1", script("service_loop.py")
+    )
     assert done.returncode == 0, done.stderr
     assert messages(done, "loop_server") == ["sum of 20 and 22"]
 
 
 @pytest.mark.parametrize("style", ["until", "poll", "coroutine"])
 def test_three_ways_a_client_waits_for_its_answer(style):
-    done = actors_run("--graph", str(SCRIPTS / "with_server.toml"), "--clock", "virtual",
-                      script("client_styles.py"), style)
+    done = actors_run(
+        "--graph", str(SCRIPTS / "with_server.toml"), "--clock", "virtual", script("client_styles.py"), style
+    )
     assert done.returncode == 0, done.stderr
     # The server comes up at 2.5 s; the coroutine's timer asks at the next half second after it.
     assert messages(done, f"client_{style}") == ["waiting for add_two_ints"] * 2 + ["41 + 1 = 42"]
@@ -186,10 +213,12 @@ def test_a_callback_group_of_the_scripts_own_throttles_a_timer():
 
 def test_an_executor_subclass_of_the_scripts_own(tmp_path):
     graph = tmp_path / "alarm.toml"
-    graph.write_text('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nname = "alarm_talker"\n'
-                     'remap = { topic = "alarm" }\n')
-    done = actors_run("--graph", str(graph), "--clock", "virtual", "--duration", "1.1",
-                      script("executors_demo.py"), "priority")
+    graph.write_text(
+        '[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nname = "alarm_talker"\nremap = { topic = "alarm" }\n'
+    )
+    done = actors_run(
+        "--graph", str(graph), "--clock", "virtual", "--duration", "1.1", script("executors_demo.py"), "priority"
+    )
     assert done.returncode == 0, done.stderr
     assert messages(done, "alarm") == ["ALARM Hello World: 0", "ALARM Hello World: 1"]
     assert messages(done, "hearer") == ["heard tick 0", "heard tick 1", "heard tick 2"]
@@ -200,7 +229,11 @@ def test_sigterm_stops_a_script_gracefully():
     # listener's spin_once raises ExternalShutdownException, which it catches.
     proc = subprocess.Popen(
         [sys.executable, "-m", "actors", "run", "--graph", str(SCRIPTS / "with_talker.toml"), script("listener.py")],
-        cwd=ROOT, env=python_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        cwd=ROOT,
+        env=python_env(),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
     )
     assert proc.stderr is not None
     while "[listener]: got" not in proc.stderr.readline():
@@ -215,7 +248,11 @@ def test_a_guard_condition_whose_callback_shuts_rclpy_down():
     done = actors_run("--clock", "virtual", script("guard.py"))
     assert done.returncode == 0, done.stderr
     assert messages(done, "guarded") == [
-        "spinning once", "timer: triggered", "spinning once", "guard: shut down", "done"
+        "spinning once",
+        "timer: triggered",
+        "spinning once",
+        "guard: shut down",
+        "done",
     ]
 
 
@@ -223,9 +260,20 @@ def test_qos_and_argparse_beside_ros_arguments():
     talker = actors_run("--clock", "virtual", script("qos_pair.py"), "talker", "-n", "3")
     assert talker.returncode == 0, talker.stderr
     assert messages(talker, "qos_talker") == ["best effort talker", "sent msg 0", "sent msg 1", "sent msg 2"]
-    listener = actors_run("--graph", str(SCRIPTS / "with_talker.toml"), "--clock", "virtual",
-                          script("qos_pair.py"), "listener", "--reliable", "-n", "2", "--ros-args",
-                          "-r", "__node:=ear")
+    listener = actors_run(
+        "--graph",
+        str(SCRIPTS / "with_talker.toml"),
+        "--clock",
+        "virtual",
+        script("qos_pair.py"),
+        "listener",
+        "--reliable",
+        "-n",
+        "2",
+        "--ros-args",
+        "-r",
+        "__node:=ear",
+    )
     assert listener.returncode == 0, listener.stderr
     assert messages(listener, "ear") == ["reliable listener", "got Hello World: 0", "got Hello World: 1"]
 

@@ -8,14 +8,26 @@ import sys
 import textwrap
 
 import pytest
-
-from actors.compat import install, installed, overlaid, uninstall
 from conftest import ROOT, python_env
 
+from actors.compat import install, installed, overlaid, uninstall
+
 RCLPY_MODULES = [
-    "rclpy", "rclpy.node", "rclpy.qos", "rclpy.executors", "rclpy.callback_groups", "rclpy.time",
-    "rclpy.duration", "rclpy.clock", "rclpy.parameter", "rclpy.logging", "rclpy.task",
-    "rclpy.exceptions", "rclpy.utilities", "rclpy.wait_for_message", "rclpy.signals",
+    "rclpy",
+    "rclpy.node",
+    "rclpy.qos",
+    "rclpy.executors",
+    "rclpy.callback_groups",
+    "rclpy.time",
+    "rclpy.duration",
+    "rclpy.clock",
+    "rclpy.parameter",
+    "rclpy.logging",
+    "rclpy.task",
+    "rclpy.exceptions",
+    "rclpy.utilities",
+    "rclpy.wait_for_message",
+    "rclpy.signals",
 ]
 
 
@@ -95,9 +107,14 @@ REAL_RCLPY = textwrap.dedent(
 
 def test_a_real_rclpy_keeps_working_outside_the_overlay(tmp_path):
     pytest.importorskip("rclpy")
-    env = {**python_env(), "ROS_LOG_DIR": str(tmp_path), "RMW_IMPLEMENTATION": "rmw_fastrtps_cpp",
-           "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}
-    done = subprocess.run([sys.executable, "-c", REAL_RCLPY], cwd=ROOT, env=env, capture_output=True,
-                          text=True, timeout=60)
+    env = {
+        **python_env(),
+        "ROS_LOG_DIR": str(tmp_path),
+        "RMW_IMPLEMENTATION": "rmw_fastrtps_cpp",
+        "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST",
+    }
+    done = subprocess.run(
+        [sys.executable, "-c", REAL_RCLPY], cwd=ROOT, env=env, capture_output=True, text=True, timeout=60
+    )
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "rclpy.node"

@@ -30,10 +30,12 @@ other:
 def session(rclpy_session):
     return rclpy_session
 
+
 class Blackboard(NativeNode):
     def __init__(self) -> None:
-        super().__init__("blackboard", allow_undeclared_parameters=True,
-                         automatically_declare_parameters_from_overrides=True)
+        super().__init__(
+            "blackboard", allow_undeclared_parameters=True, automatically_declare_parameters_from_overrides=True
+        )
 
 
 CASES = [
@@ -54,10 +56,13 @@ def test_parameter_dict_from_yaml_file(tmp_path):
     path = tmp_path / "p.yaml"
     path.write_text(NESTED)
     assert _names(parameter_dict_from_yaml_file(path, target_nodes=["blackboard"])) == {
-        "int_parameter": 3, "nested.text": "hi"
+        "int_parameter": 3,
+        "nested.text": "hi",
     }
     assert _names(parameter_dict_from_yaml_file(path, True, ["/blackboard"])) == {
-        "shared": 1, "int_parameter": 3, "nested.text": "hi"
+        "shared": 1,
+        "int_parameter": 3,
+        "nested.text": "hi",
     }
     assert _names(parameter_dict_from_yaml_file(path, target_nodes=["/robot/driver"])) == {"radius": 0.5}
     # As Kilted's rclpy: no target node reads no node; a node the file lacks is skipped.
@@ -82,8 +87,9 @@ def test_parameter_dict_from_yaml_file_as_rclpy_reads_it(tmp_path):
         "        out.append({k: parameter_value_to_python(v.value) for k, v in found.items()})\n"
         "    except RuntimeError as exc:\n        out.append(str(exc))\nprint(json.dumps(out))\n"
     )
-    done = subprocess.run([sys.executable, "-c", probe, str(path), json.dumps(CASES)], capture_output=True,
-                          text=True, timeout=60)
+    done = subprocess.run(
+        [sys.executable, "-c", probe, str(path), json.dumps(CASES)], capture_output=True, text=True, timeout=60
+    )
     assert done.returncode == 0, done.stderr
     expected = json.loads(done.stdout)
     ours = []
@@ -95,8 +101,10 @@ def test_parameter_dict_from_yaml_file_as_rclpy_reads_it(tmp_path):
     assert ours == expected
 
 
-@pytest.mark.parametrize(("text", "value"), [("2", 2), ("2.5", 2.5), ("true", True), ("[1, 2]", [1, 2]),
-                                             ("hello", "hello"), ("a: [", "a: [")])
+@pytest.mark.parametrize(
+    ("text", "value"),
+    [("2", 2), ("2.5", 2.5), ("true", True), ("[1, 2]", [1, 2]), ("hello", "hello"), ("a: [", "a: [")],
+)
 def test_get_parameter_value_reads_yaml(text, value):
     assert parameter_value_to_python(get_parameter_value(text)) == value
 
@@ -112,8 +120,9 @@ def test_async_parameter_client_with_rclpy_futures(session, tmp_path):
         return future.result()
 
     done: list[Any] = []
-    result = finish(client.set_parameters([Parameter("int_parameter", Parameter.Type.INTEGER, 10)],
-                                          callback=done.append))
+    result = finish(
+        client.set_parameters([Parameter("int_parameter", Parameter.Type.INTEGER, 10)], callback=done.append)
+    )
     assert [r.successful for r in result.results] == [True]
     rclpy.spin_once(node, timeout_sec=0)  # the done callback is a task of the node's executor, as in rclpy
     assert len(done) == 1

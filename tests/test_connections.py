@@ -163,7 +163,6 @@ async def test_a_descriptor_select_cannot_watch_is_refused_not_registered(name, 
         await client.stream.aclose()
 
 
-
 async def test_a_burst_queued_before_the_graph_looks_is_held_to_the_limit(name):
     # Six clients connect before the listener wakes: it takes them in one batch, and those whose
     # tasks have not started yet must count against the limit as much as the open ones.

@@ -14,6 +14,7 @@ from anyio.streams.buffered import BufferedByteReceiveStream
 
 from actors import DurabilityPolicy, Node, QoSProfile, Runtime
 from actors.cli._client import connect
+from actors.errors import ControlError
 from actors.ops.control import (
     MAX_FRAME,
     ControlEndpoint,
@@ -29,7 +30,6 @@ from actors.ops.control import (
     endpoint_dir,
     frame,
 )
-from actors.errors import ControlError
 from interfaces.std_msgs.msg import String
 
 
@@ -152,9 +152,10 @@ async def test_a_bad_request_gets_an_error_reply_and_the_connection_stays_open(n
 
 
 async def test_a_graph_name_in_use_moves_on_and_a_stale_socket_is_replaced(name):
-    async with Runtime(name=name, attach=[ControlEndpoint()]) as first, Runtime(
-        name=name, attach=[ControlEndpoint()]
-    ) as second:
+    async with (
+        Runtime(name=name, attach=[ControlEndpoint()]) as first,
+        Runtime(name=name, attach=[ControlEndpoint()]) as second,
+    ):
         assert server(first).path.name == f"{name}.sock"
         assert server(second).path.name == f"{name}-2.sock"
     stale = endpoint_dir() / f"{name}.sock"
@@ -207,9 +208,7 @@ async def test_the_client_finds_the_graph_and_sessions_clean_up_after_themselves
                 assert sample is not None and sample.msg["data"].startswith("hello ")
                 graph = conn.graph()
             topics = {t.name: t for t in graph.topics}
-            return [p.node for p in topics["/kill"].publishers], [
-                s.node for s in topics["/chatter"].subscriptions
-            ]
+            return [p.node for p in topics["/kill"].publishers], [s.node for s in topics["/chatter"].subscriptions]
 
         publishers, subscribers = await anyio.to_thread.run_sync(publish_and_look)
         assert publishers == ["/_actors_cli_1"] and subscribers == ["/_actors_cli_1"]

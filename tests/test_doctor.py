@@ -152,9 +152,7 @@ async def test_a_node_that_crashed_and_restarted_fails_node_health():
                 Fragile.crashed = True
                 raise RuntimeError("boom")
 
-    async with Runtime(
-        name="doctor_crash", supervisor=SupervisorPolicy(backoff=0)
-    ) as rt:
+    async with Runtime(name="doctor_crash", supervisor=SupervisorPolicy(backoff=0)) as rt:
         rt.spawn(Fragile)
         await anyio.sleep(1)
         report = checks(diagnose(rt))

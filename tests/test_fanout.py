@@ -21,10 +21,10 @@ from actors import (
     Runtime,
     SupervisorPolicy,
 )
-from actors.ros import topics
 from actors.core.loops import VirtualTimeLoop
 from actors.errors import MessageRefused
 from actors.recording.tap import TapSet
+from actors.ros import topics
 from actors.ros.topics import Publisher
 from interfaces.std_msgs.msg import Int64
 
@@ -425,8 +425,11 @@ class Varied(Node):
 
 GRAPH_OPS = st.lists(
     st.one_of(
-        st.tuples(st.just("sub"), st.sampled_from([1, 2, 3, None]),
-                  st.sampled_from(["plain", "plain", "refuse", "crash", "async", "echo"])),
+        st.tuples(
+            st.just("sub"),
+            st.sampled_from([1, 2, 3, None]),
+            st.sampled_from(["plain", "plain", "refuse", "crash", "async", "echo"]),
+        ),
         st.tuples(st.just("pub"), st.sampled_from([0.0, 0.0, 0.08]), st.booleans()),  # lifespan, latched
         st.tuples(st.just("publish"), st.integers(0, 3), st.sampled_from([1, 2, 3, 5, 12])),
         st.tuples(st.just("settle"), st.integers(1, 3), st.none()),

@@ -5,9 +5,9 @@ from __future__ import annotations
 import re
 
 import pytest
+from conftest import ROOT
 
 from actors.testing import run_node, run_script
-from conftest import ROOT
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.geometry_msgs.msg import Twist
 from interfaces.std_msgs.msg import Bool
@@ -43,8 +43,7 @@ def test_the_readme_example_fails_a_student_who_ignores_kill():
 
 
 def test_a_node_class_instead_of_a_script():
-    with run_node(f"{SCRIPTS / 'constant_control.py'}:ConstantControl",
-                  graph="graphs/turtlebot_world.toml") as run:
+    with run_node(f"{SCRIPTS / 'constant_control.py'}:ConstantControl", graph="graphs/turtlebot_world.toml") as run:
         commands = run.record("/cmd_vel", Twist)
         run.wait(1.0)
         run.publish("/kill", Bool(data=True))
@@ -83,9 +82,8 @@ def test_a_script_whose_helper_thread_parks_outside_rclpy_is_graded():
 
 
 def test_what_the_student_raises_fails_the_test():
-    with pytest.raises(ZeroDivisionError):
-        with run_script(TEST_SCRIPTS / "broken.py") as run:
-            run.wait(1.0)
+    with pytest.raises(ZeroDivisionError), run_script(TEST_SCRIPTS / "broken.py") as run:
+        run.wait(1.0)
     assert run.exit_code == 1
 
 
@@ -99,9 +97,8 @@ def test_recording_a_topic_nobody_uses_needs_its_type():
 
 
 def test_set_parameters_callbacks_of_a_students_node():
-    from interfaces.rcl_interfaces.srv import SetParameters
-
     from actors.ros.parameter_store import Parameter
+    from interfaces.rcl_interfaces.srv import SetParameters
 
     def request(**values: float) -> SetParameters.Request:
         return SetParameters.Request(parameters=[Parameter(k, value=v).to_parameter_msg() for k, v in values.items()])

@@ -53,11 +53,13 @@ restart = "permanent"
     ("text", "expected"),
     [
         ('[runtime]\nclok = "wall"\n', "runtime.clok: unknown key (did you mean 'clock'?)"),
-        ("[supervisor]\nintensity = \"three\"\n", "supervisor.intensity: expected an integer, got the string 'three'"),
+        ('[supervisor]\nintensity = "three"\n', "supervisor.intensity: expected an integer, got the string 'three'"),
         ('[runtime]\nclock = "sundial"\n', "runtime.clock: 'sundial' is not one of "),
-        ('[supervisor]\nstrategy = "one_for_al"\n',
-         "supervisor.strategy: 'one_for_al' is not one of one_for_one, one_for_all, rest_for_one "
-         "(did you mean 'one_for_all'?)"),
+        (
+            '[supervisor]\nstrategy = "one_for_al"\n',
+            "supervisor.strategy: 'one_for_al' is not one of one_for_one, one_for_all, rest_for_one "
+            "(did you mean 'one_for_all'?)",
+        ),
         ("[runtime]\nduration = -1\n", "runtime.duration: expected a number >= 0"),
         ('[[nodes]]\nname = "x"\n', "nodes[0].use: missing required key"),
         ('[[nodes]]\nuse = "nodes.nope:Missing"\n', "nodes[0].use: cannot import 'nodes.nope'"),
@@ -65,9 +67,14 @@ restart = "permanent"
         ('[[nodes]]\nuse = "nodes.talker"\n', "nodes[0].use: expected 'module:Class'"),
         ('[[nodes]]\nuse = "actors:Runtime"\n', "nodes[0].use: 'actors:Runtime' is not a subclass"),
         ('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nname = "bad name"\n', "nodes[0].name: invalid node name"),
-        ('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nrestart = "always"\n',
-         "nodes[0].restart: 'always' is not one of permanent, transient, temporary"),
-        ('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nparms = {}\n', "nodes[0].parms: unknown key (did you mean 'params'?)"),
+        (
+            '[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nrestart = "always"\n',
+            "nodes[0].restart: 'always' is not one of permanent, transient, temporary",
+        ),
+        (
+            '[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nparms = {}\n',
+            "nodes[0].parms: unknown key (did you mean 'params'?)",
+        ),
         ("[runtime\n", "TOML syntax error"),
     ],
 )
@@ -131,7 +138,9 @@ def test_params_file_mistakes_name_the_key(tmp_path, yaml, name, expected):
     if yaml is not None:
         (tmp_path / "params.yaml").write_text(yaml)
     name_line = f"name = {name}\n" if name else ""
-    path = write(tmp_path, f'[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n{name_line}params_file = "params.yaml"\n')
+    path = write(
+        tmp_path, f'[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n{name_line}params_file = "params.yaml"\n'
+    )
     with pytest.raises(GraphFileError) as info:
         load_graph(path)
     assert str(info.value).startswith(f"{path}: nodes[0].params_file: ")

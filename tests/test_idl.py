@@ -9,9 +9,9 @@ from pathlib import Path
 import pytest
 
 from actors import codec
-from actors.messages import idl
-from actors.messages import generate as idl_gen
 from actors.errors import IdlError, InterfaceError, MessageValidationError
+from actors.messages import generate as idl_gen
+from actors.messages import idl
 
 THING = """\
 # A user's message: every kind of field.

@@ -10,7 +10,6 @@ import anyio
 import pytest
 
 from actors import Node, Runtime
-from actors.ros.time import ClockType, ROSClock, Time
 from actors.ros.log import (
     LoggingSeverity,
     RosFormatter,
@@ -21,6 +20,7 @@ from actors.ros.log import (
     get_logging_severity_from_string,
     set_logger_level,
 )
+from actors.ros.time import ClockType, ROSClock, Time
 from interfaces.rcl_interfaces.msg import Log
 
 
@@ -263,14 +263,19 @@ async def test_the_logger_service_reads_and_sets_levels_remotely(console):
             asker = rt.spawn(LevelsAsker)
             await anyio.sleep(1.5)  # the tick at 1.0 logs nothing: debug is off
             before = await asker.get.call(GetLoggerLevels.Request(names=[name]))
-            answer = await asker.set.call(SetLoggerLevels.Request(levels=[
-                LoggerLevel(name=name, level=LoggerLevel.LOG_LEVEL_DEBUG), LoggerLevel(name=name, level=15)]))
+            answer = await asker.set.call(
+                SetLoggerLevels.Request(
+                    levels=[LoggerLevel(name=name, level=LoggerLevel.LOG_LEVEL_DEBUG), LoggerLevel(name=name, level=15)]
+                )
+            )
             after = await asker.get.call(GetLoggerLevels.Request(names=[name, "nobody"]))
             await anyio.sleep(1)  # the tick at 2.0 logs its detail
             served = {name for name, _ in reader.get_service_names_and_types()}
         assert [(entry.name, entry.level) for entry in before.levels] == [(name, 0)]  # never set: unset
         assert [(r.successful, r.reason) for r in answer.results] == [
-            (True, ""), (False, "Failed reason: Invalid logger level.")]  # the bad level left DEBUG in place
+            (True, ""),
+            (False, "Failed reason: Invalid logger level."),
+        ]  # the bad level left DEBUG in place
         assert [(entry.name, entry.level) for entry in after.levels] == [(name, 10), ("nobody", 0)]
         assert [(m.name, m.msg) for m in reader.logs if m.name == name] == [(name, "detail")]
         assert "/robot2/served/set_logger_levels" in served and "/asker/get_logger_levels" not in served  # opt-in

@@ -5,8 +5,8 @@ from __future__ import annotations
 import pytest
 
 from actors import DurabilityPolicy, Node, QoSProfile, Runtime
-from actors.ros.endpoint_info import TopicEndpointInfo, TopicEndpointTypeEnum
 from actors.errors import InvalidServiceNameException, InvalidTopicNameException
+from actors.ros.endpoint_info import TopicEndpointInfo, TopicEndpointTypeEnum
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.std_msgs.msg import String
 
@@ -16,7 +16,9 @@ pytestmark = pytest.mark.virtual_time
 class Talker(Node):
     def __init__(self) -> None:
         super().__init__("talker")
-        self.pub = self.create_publisher(String, "chatter", QoSProfile(depth=7, durability=DurabilityPolicy.TRANSIENT_LOCAL))
+        self.pub = self.create_publisher(
+            String, "chatter", QoSProfile(depth=7, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        )
         self.create_service(AddTwoInts, "add", lambda request, response: response)
 
 
@@ -81,13 +83,18 @@ async def test_names_and_types_by_node():
         talker = rt.spawn(Talker, namespace="robot")
         rt.spawn(Listener)
         assert talker.get_publisher_names_and_types_by_node("talker", "/robot") == [
-            ("/robot/chatter", ["std_msgs/msg/String"])]
+            ("/robot/chatter", ["std_msgs/msg/String"])
+        ]
         assert talker.get_subscriber_names_and_types_by_node("listener", "/") == [
-            ("/chatter", ["std_msgs/msg/String"]), ("/listener/private", ["std_msgs/msg/String"])]
+            ("/chatter", ["std_msgs/msg/String"]),
+            ("/listener/private", ["std_msgs/msg/String"]),
+        ]
         assert talker.get_client_names_and_types_by_node("listener", "") == [
-            ("/robot/add", ["example_interfaces/srv/AddTwoInts"])]
+            ("/robot/add", ["example_interfaces/srv/AddTwoInts"])
+        ]
         assert ("/robot/add", ["example_interfaces/srv/AddTwoInts"]) in talker.get_service_names_and_types_by_node(
-            "talker", "/robot")
+            "talker", "/robot"
+        )
         with pytest.raises(LookupError):
             talker.get_publisher_names_and_types_by_node("ghost", "/")
 

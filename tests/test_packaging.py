@@ -15,7 +15,6 @@ import tomllib
 from pathlib import Path
 
 import pytest
-
 from conftest import ROOT
 
 SETUPTOOLS = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]
@@ -26,7 +25,7 @@ def installed_name(folder: Path) -> str:
     dotted = ".".join(folder.relative_to(ROOT).parts)
     for name, source in SETUPTOOLS["package-dir"].items():
         if dotted == source or dotted.startswith(source + "."):
-            return name + dotted[len(source):]
+            return name + dotted[len(source) :]
     return dotted
 
 
@@ -44,12 +43,16 @@ def installed(tmp_path_factory) -> Path:
     tmp = tmp_path_factory.mktemp("install")
     source = tmp / "source"
     shutil.copytree(
-        ROOT, source, ignore=shutil.ignore_patterns(".git", ".venv*", "build", "dist", "*.egg-info", "__pycache__", ".*cache")
+        ROOT,
+        source,
+        ignore=shutil.ignore_patterns(".git", ".venv*", "build", "dist", "*.egg-info", "__pycache__", ".*cache"),
     )
     target = tmp / "site"
     done = subprocess.run(
         [sys.executable, "-m", "pip", "install", "-q", "--no-deps", "--target", str(target), str(source)],
-        capture_output=True, text=True, timeout=300,
+        capture_output=True,
+        text=True,
+        timeout=300,
     )
     assert done.returncode == 0, done.stderr
     return target
@@ -74,11 +77,19 @@ def test_installed_shipped_graphs_and_a_users_own_graph_each_run_their_own_code(
     def run(*args: str) -> subprocess.CompletedProcess[str]:
         return subprocess.run(
             [sys.executable, "-m", "actors.run", *args, "--clock", "virtual", "--duration", "3"],
-            cwd=student, env=env, capture_output=True, text=True, timeout=60,
+            cwd=student,
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=60,
         )
 
     where = subprocess.run(
-        [sys.executable, "-c", "import actors; print(actors.__file__)"], cwd=student, env=env, capture_output=True, text=True
+        [sys.executable, "-c", "import actors; print(actors.__file__)"],
+        cwd=student,
+        env=env,
+        capture_output=True,
+        text=True,
     )
     assert Path(where.stdout.strip()).is_relative_to(installed)  # this copy, not the repository's editable one
 

@@ -17,8 +17,11 @@ class Blackboard(Node):
     """Like demo_nodes_cpp's parameter_blackboard: takes any parameter."""
 
     def __init__(self) -> None:
-        super().__init__("parameter_blackboard", allow_undeclared_parameters=True,
-                         automatically_declare_parameters_from_overrides=True)
+        super().__init__(
+            "parameter_blackboard",
+            allow_undeclared_parameters=True,
+            automatically_declare_parameters_from_overrides=True,
+        )
         self.declare_parameter("fixed", 1, ParameterDescriptor(read_only=True))
 
 
@@ -41,11 +44,13 @@ async def test_set_list_get_describe_and_delete():
         assert await client.wait_for_services(timeout_sec=1.0)
         client.on_parameter_event(asker.events.append)
 
-        set_response = await client.set_parameters([
-            Parameter("int_parameter", Parameter.Type.INTEGER, 10),
-            Parameter("string_parameter", Parameter.Type.STRING, "Fee Fi Fo Fum").to_parameter_msg(),
-            Parameter("fixed", value=2),
-        ])
+        set_response = await client.set_parameters(
+            [
+                Parameter("int_parameter", Parameter.Type.INTEGER, 10),
+                Parameter("string_parameter", Parameter.Type.STRING, "Fee Fi Fo Fum").to_parameter_msg(),
+                Parameter("fixed", value=2),
+            ]
+        )
         assert [r.successful for r in set_response.results] == [True, True, False]
         listed = await client.list_parameters(["int_parameter", "string_parameter"], 10)
         assert listed.result.names == ["int_parameter", "string_parameter"]
@@ -55,14 +60,18 @@ async def test_set_list_get_describe_and_delete():
         assert list(types.types) == [ParameterType.STRING]  # uint8[]: bytes
         described = await client.describe_parameters(["fixed"])
         assert described.descriptors[0].read_only
-        atomic = await client.set_parameters_atomically([Parameter("int_parameter", value=11), Parameter("fixed", value=3)])
+        atomic = await client.set_parameters_atomically(
+            [Parameter("int_parameter", value=11), Parameter("fixed", value=3)]
+        )
         assert not atomic.result.successful
         deleted = await client.delete_parameters(["string_parameter", "fixed"])
         assert [r.successful for r in deleted.results] == [True, False]
         assert not rt.node("parameter_blackboard").has_parameter("string_parameter")
         await anyio.sleep(0.1)
         assert [p.name for e in asker.events for p in e.changed_parameters + e.new_parameters] == [
-            "int_parameter", "string_parameter"]
+            "int_parameter",
+            "string_parameter",
+        ]
 
 
 async def test_a_callback_runs_in_the_clients_node_with_the_done_future():

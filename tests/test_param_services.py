@@ -6,11 +6,11 @@ from typing import Any
 
 import anyio
 import pytest
+from test_params import Bare, Tuned
 
 from actors import Node, Runtime
 from actors.errors import ServiceError
 from actors.ros.parameter_store import ParameterType, value_from_msg, value_to_msg
-from interfaces.std_msgs.msg import Int64
 from interfaces.rcl_interfaces.msg import Parameter as ParameterMsg
 from interfaces.rcl_interfaces.srv import (
     DescribeParameters,
@@ -20,7 +20,7 @@ from interfaces.rcl_interfaces.srv import (
     SetParameters,
     SetParametersAtomically,
 )
-from test_params import Bare, Tuned
+from interfaces.std_msgs.msg import Int64
 
 pytestmark = pytest.mark.virtual_time
 
@@ -35,35 +35,56 @@ async def test_the_parameter_services():
         asker = rt.spawn(Asker)
         core = asker._core
         listed = await core.create_client(ListParameters, "/tuned/list_parameters").call(
-            ListParameters.Request(), timeout=1)
+            ListParameters.Request(), timeout=1
+        )
         # Declaration order, as rclpy answers: use_sim_time first (the node's own), then the class's.
         assert listed.result.names == ["use_sim_time", "speed", "count", "model", "names", "flag"]
         got = await core.create_client(GetParameters, "/tuned/get_parameters").call(
-            GetParameters.Request(names=["speed", "names", "ghost"]), timeout=1)
+            GetParameters.Request(names=["speed", "names", "ghost"]), timeout=1
+        )
         assert [value_from_msg(v) for v in got.values] == [0.5, ["a", "b"], None]
         types = await core.create_client(GetParameterTypes, "/tuned/get_parameter_types").call(
-            GetParameterTypes.Request(names=["speed", "ghost"]), timeout=1)
+            GetParameterTypes.Request(names=["speed", "ghost"]), timeout=1
+        )
         assert list(types.types) == [ParameterType.DOUBLE, ParameterType.NOT_SET]  # uint8[]: bytes
         setter = core.create_client(SetParameters, "/tuned/set_parameters")
-        response = await setter.call(SetParameters.Request(parameters=[
-            ParameterMsg(name="speed", value=value_to_msg(0.25)),
-            ParameterMsg(name="model", value=value_to_msg("x")),
-            ParameterMsg(name="ghost", value=value_to_msg(1))]), timeout=1)
+        response = await setter.call(
+            SetParameters.Request(
+                parameters=[
+                    ParameterMsg(name="speed", value=value_to_msg(0.25)),
+                    ParameterMsg(name="model", value=value_to_msg("x")),
+                    ParameterMsg(name="ghost", value=value_to_msg(1)),
+                ]
+            ),
+            timeout=1,
+        )
         assert [r.successful for r in response.results] == [True, False, False]
         assert "not declared" in response.results[2].reason  # an answer, not an exception
         atomic = await core.create_client(SetParametersAtomically, "/tuned/set_parameters_atomically").call(
-            SetParametersAtomically.Request(parameters=[
-                ParameterMsg(name="count", value=value_to_msg(5)),
-                ParameterMsg(name="count", value=value_to_msg(70))]), timeout=1)
+            SetParametersAtomically.Request(
+                parameters=[
+                    ParameterMsg(name="count", value=value_to_msg(5)),
+                    ParameterMsg(name="count", value=value_to_msg(70)),
+                ]
+            ),
+            timeout=1,
+        )
         assert not atomic.result.successful and rt.node("tuned").get_parameter("count").value == 3
         described = await core.create_client(DescribeParameters, "/tuned/describe_parameters").call(
-            DescribeParameters.Request(names=["count"]), timeout=1)
+            DescribeParameters.Request(names=["count"]), timeout=1
+        )
         assert described.descriptors[0].integer_range[0].to_value == 10
         assert rt.node("tuned").get_parameter("speed").value == 0.25
 
 
-KINDS = ["describe_parameters", "get_parameters", "get_parameter_types", "list_parameters", "set_parameters",
-         "set_parameters_atomically"]
+KINDS = [
+    "describe_parameters",
+    "get_parameters",
+    "get_parameter_types",
+    "list_parameters",
+    "set_parameters",
+    "set_parameters_atomically",
+]
 
 
 def listed(rt: Runtime, node: str) -> list[tuple[str, str, str]]:
@@ -91,9 +112,12 @@ async def test_parameter_services_are_listed_before_anything_builds_them():
         asker = rt.spawn(Asker)
         assert not [n for n in rt.services.servers if n.startswith("/tuned/")]  # none built yet
         types = {
-            "describe_parameters": "DescribeParameters", "get_parameters": "GetParameters",
-            "get_parameter_types": "GetParameterTypes", "list_parameters": "ListParameters",
-            "set_parameters": "SetParameters", "set_parameters_atomically": "SetParametersAtomically",
+            "describe_parameters": "DescribeParameters",
+            "get_parameters": "GetParameters",
+            "get_parameter_types": "GetParameterTypes",
+            "list_parameters": "ListParameters",
+            "set_parameters": "SetParameters",
+            "set_parameters_atomically": "SetParametersAtomically",
         }
         expected = [(f"/tuned/{k}", f"rcl_interfaces/srv/{types[k]}", "/tuned") for k in sorted(KINDS)]
         assert listed(rt, "/tuned") == expected

@@ -35,10 +35,16 @@ pytestmark = pytest.mark.virtual_time
 class Tuned(Node):
     def __init__(self) -> None:
         super().__init__("tuned")
-        self.declare_parameter("speed", 0.5, ParameterDescriptor(
-            description="m/s", floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0)]))
-        self.declare_parameter("count", 3, ParameterDescriptor(
-            integer_range=[IntegerRange(from_value=0, to_value=10, step=1)]))
+        self.declare_parameter(
+            "speed",
+            0.5,
+            ParameterDescriptor(
+                description="m/s", floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0)]
+            ),
+        )
+        self.declare_parameter(
+            "count", 3, ParameterDescriptor(integer_range=[IntegerRange(from_value=0, to_value=10, step=1)])
+        )
         self.declare_parameter("model", "burger", ParameterDescriptor(read_only=True))
         self.declare_parameter("names", ["a", "b"])
         self.declare_parameter("flag", False)
@@ -86,9 +92,15 @@ async def test_declared_values_and_types():
 
 
 def test_the_exceptions_are_rclpys_under_parameter_error():
-    for error in (ParameterNotDeclaredException, ParameterAlreadyDeclaredException, InvalidParameterException,
-                  InvalidParameterTypeException, InvalidParameterValueException, ParameterImmutableException,
-                  ParameterUninitializedException):
+    for error in (
+        ParameterNotDeclaredException,
+        ParameterAlreadyDeclaredException,
+        InvalidParameterException,
+        InvalidParameterTypeException,
+        InvalidParameterValueException,
+        ParameterImmutableException,
+        ParameterUninitializedException,
+    ):
         assert issubclass(error, ParameterError)
     assert ParameterException is ParameterError
 
@@ -143,8 +155,14 @@ async def test_each_accepted_change_appears_once_on_parameter_events():
     async with Runtime() as rt:
         log = rt.spawn(EventLog)
         node = rt.spawn(Tuned)
-        results = node.set_parameters([Parameter("speed", value=0.75), Parameter("count", value=7),
-                                       Parameter("count", value=4), Parameter("speed", value=1)])
+        results = node.set_parameters(
+            [
+                Parameter("speed", value=0.75),
+                Parameter("count", value=7),
+                Parameter("count", value=4),
+                Parameter("speed", value=1),
+            ]
+        )
         assert [r.successful for r in results] == [True, False, True, True]
         assert node.get_parameter("speed").value == 1.0  # an int widens to a double
         await anyio.sleep(0.1)
@@ -167,7 +185,8 @@ async def test_a_node_whose_parameters_nobody_used_yet_has_use_sim_time_and_does
         assert node.get_parameter("use_sim_time").value is False
         other = rt.spawn(Bare, name="other")
         got = await log._core.create_client(GetParameters, "/other/get_parameters").call(
-            GetParameters.Request(names=["use_sim_time"]), timeout=1)
+            GetParameters.Request(names=["use_sim_time"]), timeout=1
+        )
         assert [value_from_msg(v) for v in got.values] == [False]  # its services read the store made now
         assert other.has_parameter("use_sim_time")
 
@@ -240,14 +259,19 @@ async def test_a_name_alone_declares_a_dynamically_typed_parameter():
 
 
 async def test_ranges_apply_to_numbers_only():
-    ranged = ParameterDescriptor(integer_range=[IntegerRange(from_value=0, to_value=1)],
-                                 floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0)])
+    ranged = ParameterDescriptor(
+        integer_range=[IntegerRange(from_value=0, to_value=1)],
+        floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0)],
+    )
     async with Runtime() as rt:
         node = rt.spawn(Bare)
         assert node.declare_parameter("label", "far out of any range", ranged).value == "far out of any range"
         assert node.set_parameters([Parameter("label", value="still fine")])[0].successful
-        node.declare_parameter("ratio", 0.5, ParameterDescriptor(
-            floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0, step=0.25)]))
+        node.declare_parameter(
+            "ratio",
+            0.5,
+            ParameterDescriptor(floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0, step=0.25)]),
+        )
         assert node.set_parameters([Parameter("ratio", value=1.0 + 1e-9)])[0].successful  # a bound, within tolerance
         (off_step,) = node.set_parameters([Parameter("ratio", value=0.3)])
         assert not off_step.successful and "step of 0.25" in off_step.reason
@@ -352,10 +376,17 @@ async def test_reading_by_prefix_describing_and_listing():
         node.declare_parameter("armrest", True)
         by_prefix = node.get_parameters_by_prefix("arm")
         assert {k: p.value for k, p in by_prefix.items()} == {"speed": 0.5, "joint.limit": 2, "name": "left"}
-        assert set(node.get_parameters_by_prefix("")) == {"arm.speed", "arm.joint.limit", "arm.name", "armrest",
-                                                          "use_sim_time"}
+        assert set(node.get_parameters_by_prefix("")) == {
+            "arm.speed",
+            "arm.joint.limit",
+            "arm.name",
+            "armrest",
+            "use_sim_time",
+        }
         assert [d.type for d in node.describe_parameters(["arm.speed", "armrest"])] == [
-            ParameterType.DOUBLE, ParameterType.BOOL]
+            ParameterType.DOUBLE,
+            ParameterType.BOOL,
+        ]
         with pytest.raises(ParameterNotDeclaredException):
             node.describe_parameters(["arm.speed", "nope"])
         assert node.get_parameter_types(["arm.name", "armrest"]) == [ParameterType.STRING, ParameterType.BOOL]
@@ -392,8 +423,11 @@ async def test_set_descriptor_keeps_a_fitting_value_or_takes_the_alternative():
 async def test_automatically_declare_parameters_from_overrides():
     class Blackboard(Node):
         def __init__(self) -> None:
-            super().__init__("blackboard", parameter_overrides=[Parameter("mine", value="constructor")],
-                             automatically_declare_parameters_from_overrides=True)
+            super().__init__(
+                "blackboard",
+                parameter_overrides=[Parameter("mine", value="constructor")],
+                automatically_declare_parameters_from_overrides=True,
+            )
 
     async with Runtime() as rt:
         node = rt.spawn(Blackboard, params={"from_graph": 3, "use_sim_time": True})
@@ -421,9 +455,6 @@ async def test_every_node_has_use_sim_time():
         assert given.get_parameter("use_sim_time").value is True
         with pytest.raises(InvalidParameterTypeException, match="use_sim_time"):
             rt.spawn(Bare, name="wrong", params={"use_sim_time": "yes"})
-
-
-
 
 
 async def test_param_talker_says_hello_to_the_override_first(caplog):

@@ -5,7 +5,6 @@ from __future__ import annotations
 import msgspec
 import pytest
 
-from actors.ros.time import Duration, Infinite
 from actors.errors import InvalidQoSProfileException
 from actors.ros.qos import (
     DurabilityPolicy,
@@ -36,6 +35,7 @@ from actors.ros.qos import (
     qos_profile_system_default,
     qos_profile_unknown,
 )
+from actors.ros.time import Duration, Infinite
 
 
 def test_a_profile_needs_a_history_or_a_depth():
@@ -61,8 +61,12 @@ def test_a_profile_is_mutable_and_keeps_enum_members():
     profile.durability = QoSDurabilityPolicy.TRANSIENT_LOCAL
     profile.deadline = Duration(seconds=2)
     profile.depth = 8
-    assert profile == QoSProfile(depth=8, reliability=ReliabilityPolicy.BEST_EFFORT,
-                                 durability=DurabilityPolicy.TRANSIENT_LOCAL, deadline=Duration(seconds=2))
+    assert profile == QoSProfile(
+        depth=8,
+        reliability=ReliabilityPolicy.BEST_EFFORT,
+        durability=DurabilityPolicy.TRANSIENT_LOCAL,
+        deadline=Duration(seconds=2),
+    )
     assert profile != QoSProfile(depth=8)
     with pytest.raises(TypeError):
         hash(profile)
@@ -104,16 +108,33 @@ PRESETS = {
 @pytest.mark.parametrize("key", list(PRESETS))
 def test_every_preset_has_rclpys_values(key):
     profile, expected = PRESETS[key]
-    values = (profile.history, profile.depth, profile.reliability, profile.durability, profile.lifespan.nanoseconds,
-              profile.deadline.nanoseconds, profile.liveliness, profile.liveliness_lease_duration.nanoseconds)
+    values = (
+        profile.history,
+        profile.depth,
+        profile.reliability,
+        profile.durability,
+        profile.lifespan.nanoseconds,
+        profile.deadline.nanoseconds,
+        profile.liveliness,
+        profile.liveliness_lease_duration.nanoseconds,
+    )
     assert tuple(int(v) for v in values) == expected
     assert QoSPresetProfiles.get_from_short_key(key) == profile  # equal presets are one member, as in rclpy
 
 
 def test_the_preset_names():
     assert QoSPresetProfiles.short_keys() == [
-        "unknown", "default", "system_default", "sensor_data", "services_default", "parameters",
-        "parameter_events", "action_status_default", "best_available", "rosout_default"]
+        "unknown",
+        "default",
+        "system_default",
+        "sensor_data",
+        "services_default",
+        "parameters",
+        "parameter_events",
+        "action_status_default",
+        "best_available",
+        "rosout_default",
+    ]
     assert QoSPresetProfiles.SENSOR_DATA.value.depth == 5
 
 
@@ -130,30 +151,70 @@ R, D, L = ReliabilityPolicy, DurabilityPolicy, LivelinessPolicy
     [
         ({}, {}, "OK", ""),
         ({"reliability": R.BEST_EFFORT}, {}, "ERROR", "ERROR: Best effort publisher and reliable subscription;"),
-        ({"durability": D.VOLATILE}, {"durability": D.TRANSIENT_LOCAL}, "ERROR",
-         "ERROR: Volatile publisher and transient local subscription;"),
-        ({"deadline": Duration(seconds=2)}, {"deadline": Duration(seconds=1)}, "ERROR",
-         "ERROR: Subscription deadline is less than publisher deadline;"),
+        (
+            {"durability": D.VOLATILE},
+            {"durability": D.TRANSIENT_LOCAL},
+            "ERROR",
+            "ERROR: Volatile publisher and transient local subscription;",
+        ),
+        (
+            {"deadline": Duration(seconds=2)},
+            {"deadline": Duration(seconds=1)},
+            "ERROR",
+            "ERROR: Subscription deadline is less than publisher deadline;",
+        ),
         ({}, {"deadline": Duration(seconds=1)}, "ERROR", "ERROR: Subscription has a deadline, but publisher does not;"),
         ({"deadline": Duration(seconds=1)}, {}, "OK", ""),
-        ({"liveliness": L.AUTOMATIC}, {"liveliness": L.MANUAL_BY_TOPIC}, "ERROR",
-         "ERROR: Publisher's liveliness is automatic and subscription's is manual by topic;"),
-        ({"liveliness_lease_duration": Duration(seconds=2)}, {"liveliness_lease_duration": Duration(seconds=1)},
-         "ERROR", "ERROR: Subscription liveliness lease duration is less than publisher;"),
-        ({"reliability": R.BEST_EFFORT, "durability": D.VOLATILE}, {"durability": D.TRANSIENT_LOCAL}, "ERROR",
-         "ERROR: Best effort publisher and reliable subscription;"
-         "ERROR: Volatile publisher and transient local subscription;"),
-        ({"liveliness": L.SYSTEM_DEFAULT}, {"liveliness": L.SYSTEM_DEFAULT}, "WARNING",
-         "WARNING: Publisher liveliness is system_default and subscription liveliness is system_default;"),
-        ({"reliability": R.SYSTEM_DEFAULT}, {}, "WARNING", "WARNING: Reliable subscription, but publisher is system_default;"),
-        ({"durability": D.SYSTEM_DEFAULT}, {"durability": D.SYSTEM_DEFAULT}, "WARNING",
-         "WARNING: Publisher durabilty is system_default and subscription durability is system_default;"),
-        ({"liveliness": L.SYSTEM_DEFAULT}, {"liveliness": L.MANUAL_BY_TOPIC}, "WARNING",
-         "WARNING: Subscription's liveliness is manual by topic, but publisher's is system_default;"),
-        ({"reliability": R.BEST_EFFORT, "durability": D.SYSTEM_DEFAULT},
-         {"reliability": R.SYSTEM_DEFAULT, "durability": D.TRANSIENT_LOCAL}, "WARNING",
-         "WARNING: Best effort publisher, but subscription is system_default;"
-         "WARNING: Transient local subscription, but publisher is system_default;"),
+        (
+            {"liveliness": L.AUTOMATIC},
+            {"liveliness": L.MANUAL_BY_TOPIC},
+            "ERROR",
+            "ERROR: Publisher's liveliness is automatic and subscription's is manual by topic;",
+        ),
+        (
+            {"liveliness_lease_duration": Duration(seconds=2)},
+            {"liveliness_lease_duration": Duration(seconds=1)},
+            "ERROR",
+            "ERROR: Subscription liveliness lease duration is less than publisher;",
+        ),
+        (
+            {"reliability": R.BEST_EFFORT, "durability": D.VOLATILE},
+            {"durability": D.TRANSIENT_LOCAL},
+            "ERROR",
+            "ERROR: Best effort publisher and reliable subscription;"
+            "ERROR: Volatile publisher and transient local subscription;",
+        ),
+        (
+            {"liveliness": L.SYSTEM_DEFAULT},
+            {"liveliness": L.SYSTEM_DEFAULT},
+            "WARNING",
+            "WARNING: Publisher liveliness is system_default and subscription liveliness is system_default;",
+        ),
+        (
+            {"reliability": R.SYSTEM_DEFAULT},
+            {},
+            "WARNING",
+            "WARNING: Reliable subscription, but publisher is system_default;",
+        ),
+        (
+            {"durability": D.SYSTEM_DEFAULT},
+            {"durability": D.SYSTEM_DEFAULT},
+            "WARNING",
+            "WARNING: Publisher durabilty is system_default and subscription durability is system_default;",
+        ),
+        (
+            {"liveliness": L.SYSTEM_DEFAULT},
+            {"liveliness": L.MANUAL_BY_TOPIC},
+            "WARNING",
+            "WARNING: Subscription's liveliness is manual by topic, but publisher's is system_default;",
+        ),
+        (
+            {"reliability": R.BEST_EFFORT, "durability": D.SYSTEM_DEFAULT},
+            {"reliability": R.SYSTEM_DEFAULT, "durability": D.TRANSIENT_LOCAL},
+            "WARNING",
+            "WARNING: Best effort publisher, but subscription is system_default;"
+            "WARNING: Transient local subscription, but publisher is system_default;",
+        ),
         ({"reliability": R.UNKNOWN}, {}, "WARNING", "WARNING: Reliable subscription, but publisher is unknown;"),
         ({"reliability": R.BEST_AVAILABLE}, {}, "OK", ""),
         ({"liveliness": L.MANUAL_BY_TOPIC}, {"liveliness": L.AUTOMATIC}, "OK", ""),
@@ -172,7 +233,12 @@ def test_two_default_profiles_only_warn():
 def test_a_snapshot_resolves_system_defaults_and_is_shared():
     snapshot = as_qos(qos_profile_system_default)
     assert (snapshot.history, snapshot.depth, snapshot.reliability, snapshot.durability, snapshot.liveliness) == (
-        HistoryPolicy.KEEP_LAST, 10, ReliabilityPolicy.RELIABLE, DurabilityPolicy.VOLATILE, LivelinessPolicy.AUTOMATIC)
+        HistoryPolicy.KEEP_LAST,
+        10,
+        ReliabilityPolicy.RELIABLE,
+        DurabilityPolicy.VOLATILE,
+        LivelinessPolicy.AUTOMATIC,
+    )
     assert as_qos(qos_profile_default) is as_qos(10)  # equal QoS, one object
     best = as_qos(qos_profile_best_available)
     assert (best.deadline_ns, best.liveliness_lease_duration_ns, best.liveliness) == (0, 0, LivelinessPolicy.AUTOMATIC)
@@ -183,9 +249,14 @@ def test_a_snapshot_resolves_system_defaults_and_is_shared():
 
 
 def test_a_snapshot_is_frozen_encodes_and_turns_back_into_a_profile():
-    original = QoSProfile(depth=3, durability=DurabilityPolicy.TRANSIENT_LOCAL, deadline=Duration(seconds=1.5),
-                          lifespan=Infinite, liveliness=LivelinessPolicy.MANUAL_BY_TOPIC,
-                          liveliness_lease_duration=Duration(seconds=2))
+    original = QoSProfile(
+        depth=3,
+        durability=DurabilityPolicy.TRANSIENT_LOCAL,
+        deadline=Duration(seconds=1.5),
+        lifespan=Infinite,
+        liveliness=LivelinessPolicy.MANUAL_BY_TOPIC,
+        liveliness_lease_duration=Duration(seconds=2),
+    )
     snapshot = as_qos(original)
     with pytest.raises(AttributeError):
         snapshot.depth = 4  # type: ignore[misc]
@@ -197,10 +268,12 @@ def test_a_snapshot_is_frozen_encodes_and_turns_back_into_a_profile():
 
 def test_why_a_pair_does_not_connect():
     assert qos_incompatibility(as_qos(10), as_qos(10)) is None
-    assert qos_incompatibility(as_qos(profile(deadline=Duration(seconds=2))),
-                               as_qos(profile(deadline=Duration(seconds=1)))) == (
-        "publisher offers a deadline of 2 s, subscription requests 1 s")
+    assert qos_incompatibility(
+        as_qos(profile(deadline=Duration(seconds=2))), as_qos(profile(deadline=Duration(seconds=1)))
+    ) == ("publisher offers a deadline of 2 s, subscription requests 1 s")
     assert qos_incompatibility(as_qos(profile()), as_qos(profile(liveliness=L.MANUAL_BY_TOPIC))) == (
-        "publisher offers AUTOMATIC liveliness, subscription requests MANUAL_BY_TOPIC")
+        "publisher offers AUTOMATIC liveliness, subscription requests MANUAL_BY_TOPIC"
+    )
     assert qos_incompatibility(as_qos(profile()), as_qos(profile(liveliness_lease_duration=Duration(seconds=1)))) == (
-        "publisher offers a liveliness lease of none, subscription requests 1 s")
+        "publisher offers a liveliness lease of none, subscription requests 1 s"
+    )

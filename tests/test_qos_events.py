@@ -9,7 +9,6 @@ import msgspec
 import pytest
 
 from actors import Node, Runtime
-from actors.ros.time import Duration
 from actors.ros.qos import (
     DurabilityPolicy,
     LivelinessPolicy,
@@ -26,6 +25,7 @@ from actors.ros.qos_events import (
     QoSRequestedDeadlineMissedInfo,
     SubscriptionEventCallbacks,
 )
+from actors.ros.time import Duration
 from actors.ros.topics import Publisher
 from interfaces.std_msgs.msg import String
 
@@ -46,8 +46,13 @@ class Talker(Node):
 
 
 class Listener(Node):
-    def __init__(self, qos: QoSProfile, events: SubscriptionEventCallbacks | None = None, name: str = "listener",
-                 work: float = 0.0) -> None:
+    def __init__(
+        self,
+        qos: QoSProfile,
+        events: SubscriptionEventCallbacks | None = None,
+        name: str = "listener",
+        work: float = 0.0,
+    ) -> None:
         super().__init__(name)
         self.heard: list[str] = []
         self.work = work
@@ -135,11 +140,13 @@ async def test_manual_liveliness_is_lost_and_regained():
         await anyio.sleep(1.0)
         assert [(i.total_count, i.total_count_change) for i in lost] == [(1, 1)]
         assert changes[-1] == QoSLivelinessChangedInfo(
-            alive_count=0, not_alive_count=1, alive_count_change=-1, not_alive_count_change=1)
+            alive_count=0, not_alive_count=1, alive_count_change=-1, not_alive_count_change=1
+        )
         talker.pub.assert_liveliness()  # alive again without publishing
         await anyio.sleep(0.01)
         assert changes[-1] == QoSLivelinessChangedInfo(
-            alive_count=1, not_alive_count=0, alive_count_change=1, not_alive_count_change=-1)
+            alive_count=1, not_alive_count=0, alive_count_change=1, not_alive_count_change=-1
+        )
         talker.destroy_publisher(talker.pub)
         await anyio.sleep(0.01)
         assert changes[-1].alive_count == 0 and changes[-1].alive_count_change == -1
@@ -157,10 +164,16 @@ async def test_automatic_liveliness_is_never_lost():
 async def test_incompatible_qos_events_name_the_policy_and_nothing_is_delivered():
     offered, requested = [], []
     async with Runtime() as rt:
-        listener = rt.spawn(Listener, depth10(durability=DurabilityPolicy.TRANSIENT_LOCAL),
-                            SubscriptionEventCallbacks(incompatible_qos=requested.append))
-        rt.spawn(Talker, depth10(durability=DurabilityPolicy.VOLATILE),
-                 events=PublisherEventCallbacks(incompatible_qos=offered.append))
+        listener = rt.spawn(
+            Listener,
+            depth10(durability=DurabilityPolicy.TRANSIENT_LOCAL),
+            SubscriptionEventCallbacks(incompatible_qos=requested.append),
+        )
+        rt.spawn(
+            Talker,
+            depth10(durability=DurabilityPolicy.VOLATILE),
+            events=PublisherEventCallbacks(incompatible_qos=offered.append),
+        )
         await anyio.sleep(1.2)
     assert listener.heard == []
     for events in (offered, requested):
@@ -204,7 +217,11 @@ async def test_matched_events_count_connections():
         talker.destroy_publisher(talker.pub)
         await anyio.sleep(0.1)
     assert (pub_matched[-1].current_count, pub_matched[-1].current_count_change) == (1, -1)
-    assert (sub_matched[-1].total_count, sub_matched[-1].current_count, sub_matched[-1].current_count_change) == (1, 0, -1)
+    assert (sub_matched[-1].total_count, sub_matched[-1].current_count, sub_matched[-1].current_count_change) == (
+        1,
+        0,
+        -1,
+    )
 
 
 async def test_best_available_takes_what_the_publishers_offer():
@@ -215,9 +232,13 @@ async def test_best_available_takes_what_the_publishers_offer():
         await anyio.sleep(0.6)
         assert listener.heard == ["0"]  # it asked for BEST_EFFORT, as the sensor-data talker offers
         assert (listener.sub.qos.reliability, listener.sub.qos.durability) == (
-            ReliabilityPolicy.BEST_EFFORT, DurabilityPolicy.VOLATILE)
+            ReliabilityPolicy.BEST_EFFORT,
+            DurabilityPolicy.VOLATILE,
+        )
         assert (latched.pub.qos.reliability, latched.pub.qos.durability) == (
-            ReliabilityPolicy.RELIABLE, DurabilityPolicy.TRANSIENT_LOCAL)
+            ReliabilityPolicy.RELIABLE,
+            DurabilityPolicy.TRANSIENT_LOCAL,
+        )
 
 
 async def test_the_graph_view_shows_the_qos_and_encodes():

@@ -37,11 +37,11 @@ from typing import NamedTuple
 
 import anyio
 import pytest
+from conftest import ROOT, python_env
 
 from actors import Node, Runtime
 from actors.errors import ActorsError
 from actors.ros.names import is_hidden
-from conftest import ROOT, python_env
 
 README = ROOT / "README.md"
 FENCE = re.compile(r"^```(?P<lang>[a-z]*)\n(?P<body>.*?)^```$", re.MULTILINE | re.DOTALL)
@@ -114,9 +114,7 @@ def private_endpoints(tmp_path_factory, monkeypatch) -> dict[str, str]:
 
 def python(*args: str, env: dict[str, str], cwd: Path = ROOT) -> subprocess.CompletedProcess[str]:
     """``python ARGS`` to its end (bounded), output captured."""
-    return subprocess.run(
-        [sys.executable, *args], cwd=cwd, env=env, capture_output=True, text=True, timeout=120
-    )
+    return subprocess.run([sys.executable, *args], cwd=cwd, env=env, capture_output=True, text=True, timeout=120)
 
 
 def start(words: list[str], env: dict[str, str], cwd: Path = ROOT) -> subprocess.Popen[str]:
@@ -244,9 +242,7 @@ def test_the_graph_file_example_runs(private_endpoints, tmp_path):
     (example,) = blocks("toml")
     graph = tmp_path / "example.toml"
     graph.write_text(example)
-    result = python(
-        "-m", "actors.run", str(graph), "--clock", "virtual", "--duration", "2", env=private_endpoints
-    )
+    result = python("-m", "actors.run", str(graph), "--clock", "virtual", "--duration", "2", env=private_endpoints)
     assert result.returncode == 0, result.stderr
     assert "[talker]: Publishing" in result.stdout
 

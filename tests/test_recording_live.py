@@ -14,10 +14,10 @@ from typing import Any
 
 import anyio
 import pytest
+from conftest import ROOT, protobuf_class, python_env
 
 from actors import Node, Runtime, codec
 from actors.recording.live import FoxgloveView, SceneHost
-from conftest import ROOT, protobuf_class, python_env
 from interfaces.nav_msgs.msg import Odometry
 from interfaces.std_srvs.srv import SetBool
 from interfaces.tf2_msgs.msg import TFMessage
@@ -84,7 +84,9 @@ class FoxgloveClient:
         await self._send_subscribe(channel["id"], subscription)
 
     async def _send_subscribe(self, channel: int, subscription: int) -> None:
-        await self.ws.send(json.dumps({"op": "subscribe", "subscriptions": [{"id": subscription, "channelId": channel}]}))
+        await self.ws.send(
+            json.dumps({"op": "subscribe", "subscriptions": [{"id": subscription, "channelId": channel}]})
+        )
 
     async def message(self, subscription: int) -> tuple[int, bytes]:
         """The next message on ``subscription``: its log time and payload."""
@@ -108,7 +110,10 @@ def serving_turtlebot(clock: str) -> Any:
     until = ["--duration", "1e6"] if clock == "virtual" else []
     proc = subprocess.Popen(
         [sys.executable, "-m", "actors.run", "graphs/turtlebot.toml", "--clock", clock, *until, "--foxglove", "0"],
-        cwd=ROOT, env=python_env(), stdout=subprocess.PIPE, text=True,
+        cwd=ROOT,
+        env=python_env(),
+        stdout=subprocess.PIPE,
+        text=True,
     )
     try:
         assert proc.stdout is not None
@@ -140,7 +145,9 @@ def test_foxglove_client_receives_odom_from_the_running_turtlebot_graph(clock):
                 client = FoxgloveClient(ws)
                 odom = await client.wait_for("channels", "/odom")
                 assert (odom["encoding"], odom["schemaName"], odom["schemaEncoding"]) == (
-                    "cdr", "nav_msgs/msg/Odometry", "ros2msg"
+                    "cdr",
+                    "nav_msgs/msg/Odometry",
+                    "ros2msg",
                 )
                 assert odom["schema"] == codec.definition_text(Odometry)
                 await client.subscribe("/odom", 7)
@@ -189,7 +196,9 @@ def test_foxglove_client_sees_the_turtlebot_world_as_a_3d_scene_tied_to_tf():
     assert proc.returncode == 0
     scene = channels["/scene"]
     assert (scene["encoding"], scene["schemaName"], scene["schemaEncoding"]) == (
-        "protobuf", "foxglove.SceneUpdate", "protobuf"
+        "protobuf",
+        "foxglove.SceneUpdate",
+        "protobuf",
     )
     assert channels["/tf"]["schemaName"] == channels["/tf_static"]["schemaName"] == "tf2_msgs/msg/TFMessage"
     # The scene's frame is the root of the robot's tree: world -> odom -> base_footprint (on /tf).

@@ -8,15 +8,15 @@ from pathlib import Path
 
 import anyio
 import pytest
+from conftest import ROOT, python_env
 
 from actors import Node, Runtime, VirtualTimeLoop, codec
-from actors.ops.control import ControlEndpoint
 from actors.errors import BagError
+from actors.ops.control import ControlEndpoint
 from actors.recording import Recorder
 from actors.recording.expect import BagExpectation, differences
 from actors.recording.player import play
 from actors.recording.reader import Bag
-from conftest import ROOT, python_env
 from interfaces.geometry_msgs.msg import Twist
 from interfaces.nav_msgs.msg import Odometry
 from interfaces.sensor_msgs.msg import LaserScan
@@ -54,8 +54,12 @@ def _odoms(path: Path) -> list[tuple[int, bytes]]:
 def actors_cli(*args: str) -> subprocess.CompletedProcess[str]:
     # ros2 bag info prints dates in local time: UTC here, so that they read the same everywhere.
     return subprocess.run(
-        [sys.executable, "-m", "actors", *args], cwd=ROOT, env={**python_env(), "TZ": "UTC"},
-        capture_output=True, text=True, timeout=60,
+        [sys.executable, "-m", "actors", *args],
+        cwd=ROOT,
+        env={**python_env(), "TZ": "UTC"},
+        capture_output=True,
+        text=True,
+        timeout=60,
     )
 
 
@@ -148,7 +152,10 @@ def test_not_an_mcap_file(tmp_path):
     junk = tmp_path / "junk.mcap"
     junk.write_text("hello")
     done = actors_cli("bag", "info", str(junk))
-    assert done.returncode == 2 and done.stderr == f"actors: {junk}: byte 0: not an MCAP file (no MCAP magic at the start)\n"
+    assert (
+        done.returncode == 2
+        and done.stderr == f"actors: {junk}: byte 0: not an MCAP file (no MCAP magic at the start)\n"
+    )
     assert actors_cli("bag", "info", str(tmp_path / "missing.mcap")).returncode == 2
 
 
@@ -161,7 +168,9 @@ class OdomListener(Node):
     def __init__(self) -> None:
         super().__init__("odom_listener")
         self.heard: list[tuple[int, Odometry]] = []
-        self.create_subscription(Odometry, "odom", lambda m: self.heard.append((self.get_clock().now().nanoseconds, m)), 1000)
+        self.create_subscription(
+            Odometry, "odom", lambda m: self.heard.append((self.get_clock().now().nanoseconds, m)), 1000
+        )
 
 
 @pytest.mark.virtual_time
@@ -187,9 +196,21 @@ async def test_actors_bag_play_into_a_running_graph(bag):
         scans = rt.spawn(ScanCounter)
         start = rt.clock.now_ns()
         done = await anyio.run_process(
-            [sys.executable, "-m", "actors", "bag", "play", str(bag), "--graph", "bag_play_target",
-             "--remap", "/scan:=/scan_played"],
-            cwd=ROOT, env=python_env(), check=False,
+            [
+                sys.executable,
+                "-m",
+                "actors",
+                "bag",
+                "play",
+                str(bag),
+                "--graph",
+                "bag_play_target",
+                "--remap",
+                "/scan:=/scan_played",
+            ],
+            cwd=ROOT,
+            env=python_env(),
+            check=False,
         )
         assert done.returncode == 0, done.stderr.decode()
         elapsed = rt.clock.now_ns() - start
@@ -220,7 +241,9 @@ def test_unknown_types_are_listed_and_skipped(tmp_path):
     writer = BagWriter(path)
     odd = writer.add_topic("/odd", "no_such_msgs/msg/Thing", definition="int32 x\n", type_hash="")
     twist = writer.add_topic(
-        "/cmd_vel", "geometry_msgs/msg/Twist", definition=codec.definition_text(Twist),
+        "/cmd_vel",
+        "geometry_msgs/msg/Twist",
+        definition=codec.definition_text(Twist),
         type_hash=codec.type_hash(Twist),
     )
     writer.write(odd, 1, b"\x00\x01\x00\x00\x07\x00\x00\x00")
@@ -319,7 +342,8 @@ async def test_actors_bag_record_against_a_running_graph(tmp_path):
         counting = rt.spawn(Counting)
         async with await anyio.open_process(
             [sys.executable, "-m", "actors", "bag", "record", "-o", str(out), "/count", "--graph", "bag_record_source"],
-            cwd=ROOT, env=python_env(),
+            cwd=ROOT,
+            env=python_env(),
         ) as process:
             try:
                 with anyio.fail_after(20):

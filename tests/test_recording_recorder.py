@@ -8,11 +8,11 @@ from pathlib import Path
 
 import anyio
 import pytest
+from conftest import ROOT, python_env
 
 from actors import Node, Runtime, VirtualTimeLoop, codec
 from actors.ops.doctor import diagnose
 from actors.recording import Recorder
-from conftest import ROOT, python_env
 from interfaces.std_msgs.msg import String
 
 mcap_reader = pytest.importorskip("mcap.reader")
@@ -24,9 +24,23 @@ def turtlebot_bag(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """The acceptance command's bag: 30 s of the TurtleBot graph on the virtual clock."""
     path = tmp_path_factory.mktemp("bag") / "run.mcap"
     done = subprocess.run(
-        [sys.executable, "-m", "actors.run", "graphs/turtlebot.toml", "--clock", "virtual",
-         "--duration", "30", "--record", str(path)],
-        cwd=ROOT, env=python_env(), capture_output=True, text=True, timeout=120,
+        [
+            sys.executable,
+            "-m",
+            "actors.run",
+            "graphs/turtlebot.toml",
+            "--clock",
+            "virtual",
+            "--duration",
+            "30",
+            "--record",
+            str(path),
+        ],
+        cwd=ROOT,
+        env=python_env(),
+        capture_output=True,
+        text=True,
+        timeout=120,
     )
     assert done.returncode == 0, done.stderr
     return path
@@ -76,7 +90,9 @@ def test_mcap_library_validates_summary_statistics_and_schemas(turtlebot_bag):
         assert qos.startswith("- history: keep_last\n  depth: ") or (channel.topic == "/kill" and qos == "")
     # Every record again, from the start, with every chunk's CRC checked.
     with open(turtlebot_bag, "rb") as f:
-        assert sum(1 for r in StreamReader(f, validate_crcs=True).records if type(r).__name__ == "Message") == len(messages)
+        assert sum(1 for r in StreamReader(f, validate_crcs=True).records if type(r).__name__ == "Message") == len(
+            messages
+        )
 
 
 def test_odom_payloads_decode_with_rclpy(turtlebot_bag):
@@ -92,7 +108,8 @@ def test_odom_payloads_decode_with_rclpy(turtlebot_bag):
         ours = codec.decode_cdr(record.data, "nav_msgs/msg/Odometry")
         assert theirs.header.stamp.sec * 10**9 + theirs.header.stamp.nanosec == record.log_time
         assert (theirs.pose.pose.position.x, theirs.twist.twist.linear.x) == (
-            ours.pose.pose.position.x, ours.twist.twist.linear.x
+            ours.pose.pose.position.x,
+            ours.twist.twist.linear.x,
         )
         assert list(theirs.pose.covariance) == list(ours.pose.covariance)
 
@@ -142,7 +159,10 @@ async def test_topics_that_appear_later_are_recorded_from_their_first_message(tm
         rt.spawn(Burst, 5)
         await anyio.sleep(2)
     with open(path, "rb") as f:
-        got = [(m.log_time, codec.decode_cdr(m.data, String).data) for _, c, m in mcap_reader.make_reader(f).iter_messages(topics=["/burst"])]
+        got = [
+            (m.log_time, codec.decode_cdr(m.data, String).data)
+            for _, c, m in mcap_reader.make_reader(f).iter_messages(topics=["/burst"])
+        ]
     assert got == [(3_500_000_000, f"m{i}") for i in range(5)]
 
 
@@ -186,7 +206,9 @@ async def test_topic_selection_and_exclusion(tmp_path):
 def test_an_existing_output_is_a_one_line_error(run_module, tmp_path):
     taken = tmp_path / "run.mcap"
     taken.write_bytes(b"keep me")
-    done = run_module("actors.run", "graphs/pubsub.toml", "--clock", "virtual", "--duration", "1", "--record", str(taken))
+    done = run_module(
+        "actors.run", "graphs/pubsub.toml", "--clock", "virtual", "--duration", "1", "--record", str(taken)
+    )
     assert done.returncode == 2 and done.stderr.count("\n") == 1 and "already exists" in done.stderr
     assert taken.read_bytes() == b"keep me"
 
@@ -209,7 +231,9 @@ def test_a_disk_that_fills_up_leaves_a_valid_bag_and_the_graph_running(tmp_path)
         "          backend_options={'loop_factory': VirtualTimeLoop})\n"
         "print('graph ran to its end')\n"
     )
-    done = subprocess.run([sys.executable, "-c", script], cwd=ROOT, env=python_env(), capture_output=True, text=True, timeout=120)
+    done = subprocess.run(
+        [sys.executable, "-c", script], cwd=ROOT, env=python_env(), capture_output=True, text=True, timeout=120
+    )
     assert done.returncode == 0 and "graph ran to its end" in done.stdout, done.stderr
     assert "recording to" in done.stderr and "stopped" in done.stderr
     assert path.stat().st_size <= 60_000
@@ -249,8 +273,11 @@ async def test_graph_events_tell_listeners_of_endpoints_coming_and_going():
         await rt.stop("minimal_subscriber")
         await anyio.sleep(1)
     on_topic = [e for e in events if e[1] == "/topic"]
-    assert on_topic[:3] == [("added", "/topic", "Publisher"), ("added", "/topic", "Subscription"),
-                            ("removed", "/topic", "Subscription")]
+    assert on_topic[:3] == [
+        ("added", "/topic", "Publisher"),
+        ("added", "/topic", "Subscription"),
+        ("removed", "/topic", "Subscription"),
+    ]
 
 
 class ShortLived(Node):
@@ -258,8 +285,8 @@ class ShortLived(Node):
 
     def __init__(self) -> None:
         super().__init__("short_lived")
-        from actors.ros.time import Duration
         from actors.ros.qos import DurabilityPolicy, QoSProfile
+        from actors.ros.time import Duration
 
         qos = QoSProfile(depth=5, lifespan=Duration(seconds=0.1), durability=DurabilityPolicy.TRANSIENT_LOCAL)
         self.pub = self.create_publisher(String, "short", qos)

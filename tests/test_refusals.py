@@ -5,6 +5,7 @@ from __future__ import annotations
 import logging
 
 import anyio
+import anyio.lowlevel
 import pytest
 
 from actors import MessageRefused, Node, Runtime
@@ -31,8 +32,7 @@ def test_new_publishers_beyond_the_burst_wait_for_the_rate_limit_and_are_then_su
     assert refusals.add("/n", "/late", "bad", now=LOG_PERIOD / 2) is None  # not earned yet
     line = refusals.add("/n", "/later", "bad", now=LOG_PERIOD)
     assert line == (
-        f"refused a message on /n from /later: bad (dropped; {LOG_BURST + 5} so far; "
-        "4 other refusal(s) not logged)"
+        f"refused a message on /n from /later: bad (dropped; {LOG_BURST + 5} so far; 4 other refusal(s) not logged)"
     )
     # A pair the limit kept quiet is news when it comes back.
     assert refusals.add("/n", "/p5", "bad", now=3 * LOG_PERIOD) is not None
@@ -44,9 +44,7 @@ class Positive(Node):
     def __init__(self, asynchronous: bool = False) -> None:
         super().__init__("positive")
         self.kept: list[int] = []
-        self.sub = self.create_subscription(
-            Int64, "/numbers", self.on_async if asynchronous else self.on_number, 100
-        )
+        self.sub = self.create_subscription(Int64, "/numbers", self.on_async if asynchronous else self.on_number, 100)
 
     def on_number(self, msg: Int64) -> None:
         if msg.data <= 0:
@@ -54,7 +52,7 @@ class Positive(Node):
         self.kept.append(msg.data)
 
     async def on_async(self, msg: Int64) -> None:
-        await anyio.sleep(0)
+        await anyio.lowlevel.checkpoint()
         self.on_number(msg)
 
 

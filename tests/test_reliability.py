@@ -33,6 +33,7 @@ from pathlib import Path
 import anyio
 import pytest
 from anyio.streams.buffered import BufferedByteReceiveStream
+from conftest import ROOT, python_env
 
 import actors.cli._client
 import actors.run
@@ -40,9 +41,17 @@ from actors import Runtime
 from actors.cli._client import Connection, connect
 from actors.errors import ControlError
 from actors.ops._connections import ConnectionLimits
-from actors.ops.control import ControlEndpoint, Diagnose, GetGraph, Publish, Subscribe, decode_reply, endpoint_dir, frame
+from actors.ops.control import (
+    ControlEndpoint,
+    Diagnose,
+    GetGraph,
+    Publish,
+    Subscribe,
+    decode_reply,
+    endpoint_dir,
+    frame,
+)
 from actors.ops.doctor import Check, Report
-from conftest import ROOT, python_env
 from nodes.constant_control import ConstantControl
 from world.robot import TurtleBot
 from world.sim import World
@@ -73,7 +82,9 @@ async def test_1_a_thousand_nan_commands_from_the_command_line_are_refused_and_c
             for i in range(1000):  # one connection each, as 1,000 `actors topic pub --once` would
                 with connect(name) as conn:
                     value = (math.nan, math.inf, -math.inf)[i % 3]
-                    conn.request(Publish(topic="/cmd_vel", type="geometry_msgs/msg/Twist", msg={"linear": {"x": value}}))
+                    conn.request(
+                        Publish(topic="/cmd_vel", type="geometry_msgs/msg/Twist", msg={"linear": {"x": value}})
+                    )
             with connect(name) as conn:
                 return conn.request(Diagnose(), Report)
 
@@ -148,8 +159,13 @@ def talker_graph(tmp_path: Path, preexec_fn: Callable[[], None] | None = None) -
     graph = tmp_path / f"fds{os.getpid()}.toml"
     graph.write_text('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n')
     proc = subprocess.Popen(
-        [sys.executable, "-m", "actors.run", str(graph)], cwd=ROOT, env=python_env(),
-        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, preexec_fn=preexec_fn,
+        [sys.executable, "-m", "actors.run", str(graph)],
+        cwd=ROOT,
+        env=python_env(),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        preexec_fn=preexec_fn,
     )
     try:
         assert "Publishing" in proc.stdout.readline()  # up and running
@@ -193,7 +209,9 @@ def descriptors_for_2600() -> Iterator[None]:
 
 
 @pytest.mark.skipif(not Path("/proc").is_dir(), reason="counts the graph's descriptors in /proc")
-def test_2_two_thousand_connections_at_once_and_500_idle_ones_the_command_line_still_gets_in(tmp_path, descriptors_for_2600):
+def test_2_two_thousand_connections_at_once_and_500_idle_ones_the_command_line_still_gets_in(
+    tmp_path, descriptors_for_2600
+):
     with talker_graph(tmp_path) as proc:
         name = f"fds{os.getpid()}"
         path = endpoint_dir() / f"{name}.sock"
@@ -234,7 +252,9 @@ def test_2_two_thousand_connections_at_once_and_500_idle_ones_the_command_line_s
         check = control_endpoint_check(name)
         assert check.passed  # the limit at work is a warning: nothing ran out
         assert any(
-            w.endswith(("connection(s) refused at the limit of 256 open at once", "idle connection(s) closed to let others in"))
+            w.endswith(
+                ("connection(s) refused at the limit of 256 open at once", "idle connection(s) closed to let others in")
+            )
             for w in check.warnings
         )
 
@@ -349,7 +369,9 @@ async def test_4_malformed_requests_are_answered_and_logged_once_per_connection_
             errors = [
                 await ask(first, {"op": "publsh", "topic": "/x"}),
                 await ask(first, Publish(topic="/chatter", type="std_msgs/msg/Bool", msg={"data": "maybe"})),
-                await ask(first, Publish(topic="/chatter", type="std_msgs/msg/UInt8", msg={"data": 2**64 - 1})),  # /chatter is free again
+                await ask(
+                    first, Publish(topic="/chatter", type="std_msgs/msg/UInt8", msg={"data": 2**64 - 1})
+                ),  # /chatter is free again
                 await ask(first, Subscribe(topic="/rosout", depth=2**63)),
                 await ask(first, {"op": "call", "service": "/s", "type": "t", "timeout": float("nan")}),
             ]
@@ -381,25 +403,54 @@ TALKER = "[[nodes]]\nuse = 'nodes.talker:MinimalPublisher'\n"
     [
         (b"\xff\xfe[runtime]\n", "not UTF-8 text (byte 0 is 0xff); TOML files are UTF-8"),
         (DEEP.encode(), "values nested too deeply to read"),
-        (b"[runtime]\nduration = inf\n" + TALKER.encode(), "runtime.duration: expected a number <= 1000000000.0, got the number inf"),
-        (b"[runtime]\nduration = 1e308\n" + TALKER.encode(),
-         "runtime.duration: expected a number <= 1000000000.0, got the number 1e+308"),
+        (
+            b"[runtime]\nduration = inf\n" + TALKER.encode(),
+            "runtime.duration: expected a number <= 1000000000.0, got the number inf",
+        ),
+        (
+            b"[runtime]\nduration = 1e308\n" + TALKER.encode(),
+            "runtime.duration: expected a number <= 1000000000.0, got the number 1e+308",
+        ),
         (b"", 'no nodes: a graph needs at least one [[nodes]] table with use = "module:Class"'),
-        (b"[supervisor]\nintensity = 99999999999999999999\n" + TALKER.encode(),
-         "supervisor.intensity: expected an integer <= 1000000, got the integer 99999999999999999999"),
-        (b"[supervisor]\nbackoff = 3.0\nmax_backoff = 1.0\n" + TALKER.encode(),
-         "supervisor: max_backoff (1) must be at least backoff (3)"),
-        (TALKER.encode() + b"name = 'a'\n[[nodes]]\nuse = 'nodes.listener:MinimalSubscriber'\nname = 'a'\ndelay = 1.0\n",
-         "nodes[1].name: a node named /a is already nodes[0]; give one of them another name"),
-        (TALKER.encode() + TALKER.encode(),
-         "nodes[1].use: a node named /minimal_publisher is already nodes[0]; give one of them another name"),
-        (b"[[nodes]]\nuse = 'world.sim:World'\nparams = { dt = 0.0 }\n",
-         "nodes[0] (world.sim:World): parameter 'dt' of /world: 0.0 is out of range [0.0001, 0.1]"),
-        (b"[[nodes]]\nuse = 'world.sim:World'\nparams = { dt = -0.01 }\n",
-         "nodes[0] (world.sim:World): parameter 'dt' of /world: -0.01 is out of range [0.0001, 0.1]"),
+        (
+            b"[supervisor]\nintensity = 99999999999999999999\n" + TALKER.encode(),
+            "supervisor.intensity: expected an integer <= 1000000, got the integer 99999999999999999999",
+        ),
+        (
+            b"[supervisor]\nbackoff = 3.0\nmax_backoff = 1.0\n" + TALKER.encode(),
+            "supervisor: max_backoff (1) must be at least backoff (3)",
+        ),
+        (
+            TALKER.encode()
+            + b"name = 'a'\n[[nodes]]\nuse = 'nodes.listener:MinimalSubscriber'\nname = 'a'\ndelay = 1.0\n",
+            "nodes[1].name: a node named /a is already nodes[0]; give one of them another name",
+        ),
+        (
+            TALKER.encode() + TALKER.encode(),
+            "nodes[1].use: a node named /minimal_publisher is already nodes[0]; give one of them another name",
+        ),
+        (
+            b"[[nodes]]\nuse = 'world.sim:World'\nparams = { dt = 0.0 }\n",
+            "nodes[0] (world.sim:World): parameter 'dt' of /world: 0.0 is out of range [0.0001, 0.1]",
+        ),
+        (
+            b"[[nodes]]\nuse = 'world.sim:World'\nparams = { dt = -0.01 }\n",
+            "nodes[0] (world.sim:World): parameter 'dt' of /world: -0.01 is out of range [0.0001, 0.1]",
+        ),
     ],
-    ids=["not-utf8", "deep", "inf", "1e308", "empty", "int64", "backoff", "duplicate-delayed",
-         "duplicate-default-name", "dt-zero", "dt-negative"],
+    ids=[
+        "not-utf8",
+        "deep",
+        "inf",
+        "1e308",
+        "empty",
+        "int64",
+        "backoff",
+        "duplicate-delayed",
+        "duplicate-default-name",
+        "dt-zero",
+        "dt-negative",
+    ],
 )
 def test_5_6_each_malformed_graph_or_world_case_is_one_line_and_exit_2(tmp_path, capsys, content, problem):
     path = tmp_path / "g.toml"

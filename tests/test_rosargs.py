@@ -11,7 +11,6 @@ import textwrap
 import pytest
 
 from actors.errors import RosArgsError
-from actors.ros.log import DEBUG, WARN
 from actors.launch.rosargs import (
     ParamRule,
     Remap,
@@ -21,6 +20,7 @@ from actors.launch.rosargs import (
     parse,
     remove_ros_args,
 )
+from actors.ros.log import DEBUG, WARN
 
 PARAMS = """\
 /**:
@@ -59,15 +59,41 @@ def test_program_arguments_are_kept_in_order_around_ros_sections():
 
 
 def test_parameter_values_are_yaml():
-    ros, _ = parse(["--ros-args", "-p", "i:=3", "-p", "f:=2.5", "-p", "b:=yes", "-p", "s:='007'",
-                    "-p", "l:=[1, 2]", "--param", "t:=hello world"])
+    ros, _ = parse(
+        [
+            "--ros-args",
+            "-p",
+            "i:=3",
+            "-p",
+            "f:=2.5",
+            "-p",
+            "b:=yes",
+            "-p",
+            "s:='007'",
+            "-p",
+            "l:=[1, 2]",
+            "--param",
+            "t:=hello world",
+        ]
+    )
     values = ros.for_node("n", None).params
     assert values == {"i": 3, "f": 2.5, "b": True, "s": "007", "l": [1, 2], "t": "hello world"}
 
 
 def test_rules_with_a_node_prefix_apply_to_that_node_only():
-    ros, _ = parse(["--ros-args", "-p", "talker:only:=1", "-p", "all:=2",
-                    "-r", "talker:chatter:=tc", "-r", "talker:__node:=speaker"])
+    ros, _ = parse(
+        [
+            "--ros-args",
+            "-p",
+            "talker:only:=1",
+            "-p",
+            "all:=2",
+            "-r",
+            "talker:chatter:=tc",
+            "-r",
+            "talker:__node:=speaker",
+        ]
+    )
     talker = ros.for_node("talker", None)
     other = ros.for_node("listener", None)
     # The parameter rule names the node /talker; renamed to /speaker, it no longer matches (as rcl).
@@ -90,8 +116,20 @@ def test_log_levels():
 
 
 def test_accepted_flags_that_change_nothing_here():
-    ros, rest = parse(["p", "--ros-args", "--disable-rosout-logs", "--enable-stdout-logs",
-                       "-e", "/enclave", "--log-file-name", "x", "--log-config-file", "y"])
+    ros, rest = parse(
+        [
+            "p",
+            "--ros-args",
+            "--disable-rosout-logs",
+            "--enable-stdout-logs",
+            "-e",
+            "/enclave",
+            "--log-file-name",
+            "x",
+            "--log-config-file",
+            "y",
+        ]
+    )
     assert rest == ["p"]
     assert ros.enclave == "/enclave"
 
@@ -121,7 +159,10 @@ def test_params_file_rules_in_file_order(params_file):
     rules = load_params_file(params_file)
     assert [r.node_key for r in rules] == ["/**", "/talker", "/robot1/driver", "/robot1/*"]
     assert parameters_for(params_file, "/talker") == {
-        "everyone": 1, "speed": 0.5, "limits.max": [1.0, 2.5], "limits.name": "fast"
+        "everyone": 1,
+        "speed": 0.5,
+        "limits.max": [1.0, 2.5],
+        "limits.name": "fast",
     }
     assert parameters_for(params_file, "/robot1/driver") == {"everyone": 1, "radius": 0.033, "in_robot1": True}
     assert parameters_for(params_file, "/robot2/talker") == {"everyone": 1}
@@ -198,15 +239,34 @@ RCLPY_PROBE = textwrap.dedent(
 
 def test_same_result_as_rclpy(tmp_path, params_file):
     pytest.importorskip("rclpy")
-    argv = ["prog", "x", "--ros-args", "-p", "g:=5", "-p", "talker:only:=yes", "-r", "chatter:=ch",
-            "-r", "listener:__node:=hearer", "-r", "driver:chatter:=/abs", "--params-file",
-            str(params_file), "--", "y"]
-    env = {**os.environ, "ROS_LOG_DIR": str(tmp_path), "RMW_IMPLEMENTATION": "rmw_fastrtps_cpp",
-           "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}
+    argv = [
+        "prog",
+        "x",
+        "--ros-args",
+        "-p",
+        "g:=5",
+        "-p",
+        "talker:only:=yes",
+        "-r",
+        "chatter:=ch",
+        "-r",
+        "listener:__node:=hearer",
+        "-r",
+        "driver:chatter:=/abs",
+        "--params-file",
+        str(params_file),
+        "--",
+        "y",
+    ]
+    env = {
+        **os.environ,
+        "ROS_LOG_DIR": str(tmp_path),
+        "RMW_IMPLEMENTATION": "rmw_fastrtps_cpp",
+        "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST",
+    }
     probe = tmp_path / "probe.py"
     probe.write_text(RCLPY_PROBE)
-    done = subprocess.run([sys.executable, str(probe), *argv[1:]], capture_output=True, text=True,
-                          env=env, timeout=60)
+    done = subprocess.run([sys.executable, str(probe), *argv[1:]], capture_output=True, text=True, env=env, timeout=60)
     assert done.returncode == 0, done.stderr
     expected = json.loads(done.stdout.splitlines()[-1])
     ros, rest = parse(argv)
@@ -220,7 +280,8 @@ def test_same_result_as_rclpy(tmp_path, params_file):
 
 
 def test_the_first_matching_remap_of_a_name_wins():
-    ros, _ = parse(["--ros-args", "-r", "chatter:=first", "-r", "chatter:=second", "-r", "__node:=a",
-                    "-r", "__node:=b"])
+    ros, _ = parse(
+        ["--ros-args", "-r", "chatter:=first", "-r", "chatter:=second", "-r", "__node:=a", "-r", "__node:=b"]
+    )
     node = ros.for_node("n", None)
     assert (node.name, node.remap) == ("a", {"chatter": "first"})

@@ -10,7 +10,6 @@ import sys
 from collections.abc import Iterator
 
 import pytest
-
 from conftest import ROOT, python_env
 
 
@@ -18,7 +17,7 @@ def test_the_demo_graph_on_virtual_time_hears_every_message_in_order(run_module)
     result = run_module("actors.run", "graph.toml", "--clock", "virtual", "--duration", "10")
     assert result.returncode == 0, result.stderr
     heard = [int(n) for n in re.findall(r'I heard: "Hello World: (\d+)"', result.stdout)]
-    assert heard[: 19] == list(range(19))
+    assert heard[:19] == list(range(19))
     assert "Traceback" not in result.stdout + result.stderr
     # Stamps come from the virtual clock: the first message is published at 0.5 s.
     assert '[INFO] [0.500000000] [minimal_publisher]: Publishing: "Hello World: 0"' in result.stdout
@@ -87,28 +86,22 @@ def assert_only_users_frames(stderr: str, source: str) -> None:
 
 
 @pytest.mark.parametrize("delay", [0.0, 1.0])
-def test_a_constructor_that_raises_at_start_is_one_fatal_line_and_its_frames(
-    run_module, tmp_path, delay
-):
+def test_a_constructor_that_raises_at_start_is_one_fatal_line_and_its_frames(run_module, tmp_path, delay):
     _, result = run_virtual(
         run_module,
         tmp_path,
-        '[[nodes]]\nuse = "graph_nodes:Counter"\n\n'
-        f'[[nodes]]\nuse = "graph_nodes:FailsToStart"\ndelay = {delay}\n',
+        f'[[nodes]]\nuse = "graph_nodes:Counter"\n\n[[nodes]]\nuse = "graph_nodes:FailsToStart"\ndelay = {delay}\n',
     )
     assert result.returncode == 1
     assert result.stderr.splitlines()[0] == (
-        "[FATAL] node /fails_to_start (graph_nodes:FailsToStart) failed to start: "
-        "ValueError: no calibration file"
+        "[FATAL] node /fails_to_start (graph_nodes:FailsToStart) failed to start: ValueError: no calibration file"
     )
     assert result.stderr.count("[FATAL]") == 1
     assert_only_users_frames(result.stderr, "graph_nodes.py")
     assert '    raise ValueError("no calibration file")' in result.stderr.splitlines()
 
 
-def test_a_constructor_that_raises_on_restart_escalates_once_naming_node_class_and_error(
-    run_module, tmp_path
-):
+def test_a_constructor_that_raises_on_restart_escalates_once_naming_node_class_and_error(run_module, tmp_path):
     _, result = run_virtual(
         run_module,
         tmp_path,
@@ -126,9 +119,7 @@ def test_a_constructor_that_raises_on_restart_escalates_once_naming_node_class_a
     assert "caused by" not in result.stderr  # each retry fails on its own, not chained
 
 
-def test_a_delayed_node_with_a_bad_override_is_a_graph_file_error_not_an_exception_group(
-    run_module, tmp_path
-):
+def test_a_delayed_node_with_a_bad_override_is_a_graph_file_error_not_an_exception_group(run_module, tmp_path):
     graph, result = run_virtual(
         run_module,
         tmp_path,

@@ -9,10 +9,11 @@ import sys
 import warnings
 
 import anyio
+import anyio.lowlevel
 import pytest
+from graph_nodes import Counter
 
 from actors import InvalidNameError, Node, Runtime
-from graph_nodes import Counter
 from interfaces.std_msgs.msg import Int64
 
 
@@ -137,8 +138,9 @@ async def test_a_node_built_under_spawning_runs_on_the_actor_it_is_given():
 
     async with Runtime() as rt:
         actor = Actor(rt.loop)
-        child = Child(Collector, name="scripted", namespace=None, params=None, remap=None,
-                      restart=RestartType.TEMPORARY)
+        child = Child(
+            Collector, name="scripted", namespace=None, params=None, remap=None, restart=RestartType.TEMPORARY
+        )
         with spawning(SpawnRequest(rt, child, actor=actor)):
             node = Collector()
         assert node._core.actor is actor and rt.node("scripted") is node
@@ -188,7 +190,7 @@ async def test_a_burst_of_spawns_runs_with_the_collector_paused_until_the_loop_r
         for i in range(3):
             rt.spawn(Spawned, name=f"s{i}")
         assert Spawned.collecting == [False, False, False]
-        await anyio.sleep(0)
+        await anyio.lowlevel.checkpoint()
         assert gc.isenabled() and gc.get_threshold() == collector
 
 
@@ -196,15 +198,15 @@ async def test_the_embedding_codes_own_collector_settings_outlast_a_burst(collec
     async with Runtime() as rt:
         rt.spawn(Spawned, name="a")
         gc.disable()  # after a spawn, in the same loop iteration
-        await anyio.sleep(0)
+        await anyio.lowlevel.checkpoint()
         assert not gc.isenabled() and gc.get_threshold() == collector
         rt.spawn(Spawned, name="b")  # a burst while disabled: left alone
-        await anyio.sleep(0)
+        await anyio.lowlevel.checkpoint()
         assert not gc.isenabled()
         gc.enable()
         rt.spawn(Spawned, name="c")
         gc.set_threshold(5000, 20, 20)  # retuned during the burst: kept
-        await anyio.sleep(0)
+        await anyio.lowlevel.checkpoint()
         assert gc.isenabled() and gc.get_threshold() == (5000, 20, 20)
 
 

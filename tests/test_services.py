@@ -6,12 +6,13 @@ import asyncio
 import logging
 
 import anyio
+import anyio.lowlevel
 import pytest
+from conftest import live_loop_timers
 
 from actors import Node, Runtime, ServiceError, SupervisorPolicy
 from actors.errors import MessageValidationError
 from actors.services import Service
-from conftest import live_loop_timers
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.std_msgs.msg import Int64
 from interfaces.std_srvs.srv import SetBool, Trigger
@@ -111,7 +112,7 @@ async def test_a_call_answered_in_time_cancels_its_timeout_timer():
     async with Runtime() as rt:
         rt.spawn(Adder)
         caller = rt.spawn(Caller)
-        await anyio.sleep(0)
+        await anyio.lowlevel.checkpoint()
         assert (await caller.cli.call(AddTwoInts.Request(a=1, b=2), timeout=3600)).sum == 3
         assert live_loop_timers() == []
         assert rt.clock.monotonic() == 0.0
@@ -202,7 +203,7 @@ async def test_calling_its_own_service_from_a_callback_is_a_clear_error():
         node = rt.spawn(SelfCaller)
         await anyio.sleep(0.5)
         assert rt.clock.monotonic() == 0.5
-        await anyio.sleep(0)
+        await anyio.lowlevel.checkpoint()
         assert isinstance(node.outcome, ServiceError)
         assert "calls its own service /ping" in str(node.outcome)
 
@@ -476,8 +477,11 @@ async def test_fields_that_do_not_fit_fail_the_call_naming_the_field(caplog):
             caller.cli.call_async(AddTwoInts.Request(a=2**63))
         with pytest.raises(MessageValidationError, match=r"^field 'b' of example_interfaces/srv/AddTwoInts_Request: "):
             await caller.cli.call(AddTwoInts.Request(b=1.5))
-        with pytest.raises(ServiceError, match=r"field 'sum' of example_interfaces/srv/AddTwoInts_Response: "
-                                               r"expected an int, got the str '3'"):
+        with pytest.raises(
+            ServiceError,
+            match=r"field 'sum' of example_interfaces/srv/AddTwoInts_Response: "
+            r"expected an int, got the str '3'",
+        ):
             await caller.cli.call(AddTwoInts.Request(a=1, b=2), timeout=1)
 
 
@@ -488,7 +492,7 @@ async def test_calls_with_different_timeouts_each_time_out_at_their_own_deadline
     async with Runtime() as rt:
         rt.spawn(SlowAdder)
         caller = rt.spawn(Caller)
-        await anyio.sleep(0)
+        await anyio.lowlevel.checkpoint()
         timeouts = [10, 0.5, 1.5, 10]  # answered at 1 s; given up at 0.5 s; given up at 1.5 s; answered at 3 s
         outcomes: dict[int, object] = {}
 
@@ -526,7 +530,7 @@ async def test_answered_calls_leave_no_deadlines_behind():
     async with Runtime() as rt:
         rt.spawn(Adder)
         caller = rt.spawn(Caller)
-        await anyio.sleep(0)
+        await anyio.lowlevel.checkpoint()
         # Answered entries are swept out, not kept for their 60 s.
         assert max(await _hundred_callers(rt, caller)) <= 2 * 100 + 64 + 1
         timeouts = rt.services.timeouts(rt.loop)

@@ -7,14 +7,14 @@ import array
 import msgspec
 import numpy as np
 import pytest
+from conftest import generated_package
+from goldens.values import DrawPick, message, shipped_messages
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from actors import codec
 from actors.errors import MessageValidationError
 from actors.messages._copy import ALONE, FLOAT32_MAX, adopter, checker, snapshot, snapshotter
-from conftest import generated_package
-from goldens.values import DrawPick, message, shipped_messages
 from interfaces.geometry_msgs.msg import PoseWithCovariance, Twist, Vector3
 from interfaces.nav_msgs.msg import Odometry
 from interfaces.rcl_interfaces.msg import ParameterValue
@@ -32,7 +32,7 @@ def _shared_mutables(a: object, b: object) -> list[str]:
     found = []
 
     def walk(x: object, y: object, path: str) -> None:
-        if (type(x) is list or isinstance(x, msgspec.Struct) and x.__struct_fields__) and x is y:
+        if (type(x) is list or (isinstance(x, msgspec.Struct) and x.__struct_fields__)) and x is y:
             found.append(path or "the message")
         if isinstance(x, msgspec.Struct):
             for name in x.__struct_fields__:
@@ -117,7 +117,9 @@ def test_a_class_that_is_not_an_interface_type_is_passed_as_it_is():
 def test_what_rclpy_accepts_beyond_the_exact_type_is_delivered_in_the_canonical_type():
     copy = snapshot(Twist(linear=Vector3(x=1, y=np.float32(0.5), z=np.float64(2.0))))
     assert [(v, type(v)) for v in (copy.linear.x, copy.linear.y, copy.linear.z)] == [
-        (1.0, float), (0.5, float), (2.0, float)
+        (1.0, float),
+        (0.5, float),
+        (2.0, float),
     ]
     assert (copy := snapshot(Int64(data=True))).data == 1 and type(copy.data) is int
     assert (same := adopter(Int64)(Int64(data=True))).data == 1 and type(same.data) is int
@@ -238,17 +240,30 @@ def test_only_fields_of_the_message_can_be_trusted(cls, path):
     [
         (Bool(data=1), "field 'data' of std_msgs/msg/Bool: expected a bool, got the int 1"),
         (Int8(data=128), "field 'data' of std_msgs/msg/Int8: 128 is out of range for int8 (-128..127)"),
-        (Twist(linear=Vector3(x=True)), "field 'linear.x' of geometry_msgs/msg/Twist: expected a float, got the bool True"),
+        (
+            Twist(linear=Vector3(x=True)),
+            "field 'linear.x' of geometry_msgs/msg/Twist: expected a float, got the bool True",
+        ),
         (String(data=b"abc"), "field 'data' of std_msgs/msg/String: expected a str, got the bytes b'abc'"),
-        (LaserScan(ranges=[1.0, True]), "field 'ranges[1]' of sensor_msgs/msg/LaserScan: expected a float, got the bool True"),
-        (JointState(name="abc"), "field 'name' of sensor_msgs/msg/JointState: expected a list (string[]), got the str 'abc'"),
+        (
+            LaserScan(ranges=[1.0, True]),
+            "field 'ranges[1]' of sensor_msgs/msg/LaserScan: expected a float, got the bool True",
+        ),
+        (
+            JointState(name="abc"),
+            "field 'name' of sensor_msgs/msg/JointState: expected a list (string[]), got the str 'abc'",
+        ),
         (JointState(name=["a", 2]), "field 'name[1]' of sensor_msgs/msg/JointState: expected a str, got the int 2"),
-        (ParameterValue(byte_array_value=[1, 300]),
-         "field 'byte_array_value' of rcl_interfaces/msg/ParameterValue: expected bytes (byte[]): "
-         "bytes must be in range(0, 256)"),
-        (ParameterValue(integer_array_value=[1, 2**64]),
-         "field 'integer_array_value[1]' of rcl_interfaces/msg/ParameterValue: 18446744073709551616 is out of range "
-         "for int64 (-9223372036854775808..9223372036854775807)"),
+        (
+            ParameterValue(byte_array_value=[1, 300]),
+            "field 'byte_array_value' of rcl_interfaces/msg/ParameterValue: expected bytes (byte[]): "
+            "bytes must be in range(0, 256)",
+        ),
+        (
+            ParameterValue(integer_array_value=[1, 2**64]),
+            "field 'integer_array_value[1]' of rcl_interfaces/msg/ParameterValue: 18446744073709551616 is out of range "
+            "for int64 (-9223372036854775808..9223372036854775807)",
+        ),
     ],
 )
 def test_errors_name_the_type_the_field_and_the_value(msg, error):
@@ -274,8 +289,9 @@ PART = "uint8 id\nstring<=2 tag\n"
 
 @pytest.fixture(scope="module")
 def shapes(tmp_path_factory):
-    generated_package(tmp_path_factory.mktemp("root") / "snapshot_shapes", "snapshot_shapes_pkg",
-                      {"Shapes": SHAPES, "Part": PART})
+    generated_package(
+        tmp_path_factory.mktemp("root") / "snapshot_shapes", "snapshot_shapes_pkg", {"Shapes": SHAPES, "Part": PART}
+    )
     return codec.get_type("snapshot_shapes_pkg/msg/Shapes"), codec.get_type("snapshot_shapes_pkg/msg/Part")
 
 
@@ -286,10 +302,14 @@ def test_bounds_and_sizes_are_checked(shapes):
         (shape(name="abcde"), f"field 'name' of {where}: expected at most 4 characters (string<=4), got 5"),
         (shape(few=[1, 2, 3]), f"field 'few' of {where}: expected at most 2 items (int32[<=2]), got 3"),
         (shape(xyz=[1.0, 2.0]), f"field 'xyz' of {where}: expected 3 items (float32[3]), got 2"),
-        (shape(parts=[part(), Vector3()]),
-         f"field 'parts[1]' of {where}: expected a snapshot_shapes_pkg/msg/Part, got a geometry_msgs/msg/Vector3"),
-        (shape(parts=[part(), part(tag="abc")]),
-         f"field 'parts[1].tag' of {where}: expected at most 2 characters (string<=2), got 3"),
+        (
+            shape(parts=[part(), Vector3()]),
+            f"field 'parts[1]' of {where}: expected a snapshot_shapes_pkg/msg/Part, got a geometry_msgs/msg/Vector3",
+        ),
+        (
+            shape(parts=[part(), part(tag="abc")]),
+            f"field 'parts[1].tag' of {where}: expected at most 2 characters (string<=2), got 3",
+        ),
         (shape(parts=[part(id=-1)]), f"field 'parts[0].id' of {where}: -1 is out of range for uint8 (0..255)"),
     ]
     for msg, error in cases:

@@ -5,10 +5,11 @@ from __future__ import annotations
 import logging
 
 import anyio
+import anyio.lowlevel
 import pytest
+from graph_nodes import Counter, PoisonEveryFifth
 
 from actors import Escalation, Node, Runtime, Strategy, SupervisorPolicy
-from graph_nodes import Counter, PoisonEveryFifth
 from interfaces.std_msgs.msg import Int64
 
 pytestmark = pytest.mark.virtual_time
@@ -236,7 +237,7 @@ async def test_stopping_an_idle_node_runs_none_of_its_queued_callbacks():
     async with Runtime() as rt:
         rt.spawn(Quiet)
         loud = rt.spawn(Loud)
-        await anyio.sleep(0)
+        await anyio.lowlevel.checkpoint()
         loud.pub.publish(Int64(data=1))  # queued, and the node is scheduled to run it
         await rt.stop("quiet")
         await anyio.sleep(1)

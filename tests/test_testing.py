@@ -121,7 +121,9 @@ async def test_marked():
     # The inner session runs in this process with warnings as errors: garbage that earlier tests
     # left (a runtime never closed warns when collected) must be collected before, not in it.
     gc.collect()
-    result = pytester.runpytest("-p", "no:cacheprovider", "-p", "no:hypothesispytest", "-p", "no:asyncio", "-W", "error")
+    result = pytester.runpytest(
+        "-p", "no:cacheprovider", "-p", "no:hypothesispytest", "-p", "no:asyncio", "-W", "error"
+    )
     result.assert_outcomes(errors=1)
     result.stdout.fnmatch_lines(["*the virtual_time mark needs pytest-asyncio 1.4 or newer*"])
 

@@ -10,12 +10,12 @@ from typing import Any
 
 import anyio
 import pytest
+from conftest import live_loop_timers
 
 from actors import Node, Runtime
 from actors.core.loops import VirtualTimeLoop
 from actors.ros.time import Clock, ClockType, Time
 from actors.ros.timers import TimerInfo, _timer_info_parameter
-from conftest import live_loop_timers
 from interfaces.std_msgs.msg import String
 
 pytestmark = pytest.mark.virtual_time
@@ -125,8 +125,11 @@ async def test_timers_due_at_the_same_instant_fire_together_whatever_their_perio
         await anyio.sleep(1.005)
     instants = sorted({t for _, t in fired})
     assert len(instants) == 100  # the slow timer's 20 ticks all fall on fast ones
-    shared = [[name for name, t in fired if t == instant] for instant in instants if instant in
-              {t for name, t in fired if name == "slow"}]
+    shared = [
+        [name for name, t in fired if t == instant]
+        for instant in instants
+        if instant in {t for name, t in fired if name == "slow"}
+    ]
     # Together, in the order their deadlines were armed: the slow one's a period ahead, each time.
     assert shared == [["slow", "fast"]] * 20
 
@@ -432,8 +435,13 @@ async def test_ticks_run_in_the_runtimes_one_context_alone_or_due_together():
         assert var.get() == "unset"
     # At 0.1 the tick is due alone (Actor.run_one); at 0.2 after the tock (armed before its re-arm), in one
     # batch of rounds.
-    assert seen == [("tick", "unset"), ("message", "set at 1"), ("tock", "set at 1"), ("tick", "set at 1"),
-                    ("message", "set at 2")]
+    assert seen == [
+        ("tick", "unset"),
+        ("message", "set at 1"),
+        ("tock", "set at 1"),
+        ("tick", "set at 1"),
+        ("message", "set at 2"),
+    ]
 
 
 class Informed(Node):
@@ -479,7 +487,7 @@ def test_the_timer_info_parameter_is_found_by_its_annotation():
 
     def stringly(info: TimerInfo) -> None: ...
 
-    def real(first: int, info) -> None: ...  # noqa: ANN001
+    def real(first: int, info) -> None: ...
 
     real.__annotations__["info"] = TimerInfo
     # This module has `from __future__ import annotations`: there the annotation is a string.

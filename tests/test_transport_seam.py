@@ -13,7 +13,7 @@ from actors import DurabilityPolicy, Node, QoSProfile, ReliabilityPolicy, Runtim
 from actors.ros.qos import QoSSnapshot
 from actors.transport import Hub, Inlet, Outlet, RemoteEndpoint, RemoteNode, RemoteService, is_proxy
 from interfaces.example_interfaces.srv import AddTwoInts
-from interfaces.std_msgs.msg import Int64, String
+from interfaces.std_msgs.msg import String
 from interfaces.std_srvs.srv import Trigger
 
 pytestmark = pytest.mark.virtual_time
@@ -245,9 +245,19 @@ async def test_the_graph_view_shows_remote_nodes_beside_local_ones():
             name="/far/talker",
             process="abc123",
             endpoints=(
-                RemoteEndpoint(kind="publisher", name="/chatter", type="std_msgs/msg/String", type_hash="RIHS01_x", qos=qos),
-                RemoteEndpoint(kind="publisher", name="/only_there", type="std_msgs/msg/Int64", type_hash="RIHS01_y", qos=qos),
-                RemoteEndpoint(kind="server", name="/far/add", type="example_interfaces/srv/AddTwoInts", type_hash="RIHS01_z", qos=qos),
+                RemoteEndpoint(
+                    kind="publisher", name="/chatter", type="std_msgs/msg/String", type_hash="RIHS01_x", qos=qos
+                ),
+                RemoteEndpoint(
+                    kind="publisher", name="/only_there", type="std_msgs/msg/Int64", type_hash="RIHS01_y", qos=qos
+                ),
+                RemoteEndpoint(
+                    kind="server",
+                    name="/far/add",
+                    type="example_interfaces/srv/AddTwoInts",
+                    type_hash="RIHS01_z",
+                    qos=qos,
+                ),
             ),
         )
     ]

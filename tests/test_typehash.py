@@ -7,11 +7,11 @@ import json
 from pathlib import Path
 
 import pytest
+from goldens.values import shipped_types
 
 from actors import codec
-from actors.messages import typehash
 from actors.errors import UnknownInterfaceError
-from goldens.values import shipped_types
+from actors.messages import typehash
 from interfaces.std_msgs.msg import Empty
 
 GOLDENS = json.loads((Path(__file__).parent / "goldens" / "hashes.json").read_text())["hashes"]
@@ -71,21 +71,32 @@ def test_description_shape():
     names = [d["type_name"] for d in description["referenced_type_descriptions"]]
     assert names == sorted(names) and "service_msgs/msg/ServiceEventInfo" in names
     # An empty message has rosidl's placeholder field.
-    assert typehash.type_description(Empty)["type_description"]["fields"][0]["name"] == "structure_needs_at_least_one_member"
+    assert (
+        typehash.type_description(Empty)["type_description"]["fields"][0]["name"]
+        == "structure_needs_at_least_one_member"
+    )
 
 
 def test_bounded_types_and_arrays_change_the_hash(tmp_path):
     root = tmp_path / "hash_root"
     (root / "hash_pkg" / "msg").mkdir(parents=True)
-    definitions = {"A": "string<=5 s\n", "B": "string s\n", "C": "int32[3] v\n", "D": "int32[<=3] v\n", "E": "int32[] v\n"}
+    definitions = {
+        "A": "string<=5 s\n",
+        "B": "string s\n",
+        "C": "int32[3] v\n",
+        "D": "int32[<=3] v\n",
+        "E": "int32[] v\n",
+    }
     for name, text in definitions.items():
         (root / "hash_pkg" / "msg" / f"{name}.msg").write_text(text)
     from actors.messages import generate as idl_gen
 
     idl_gen.generate([root])
     codec.register_root(root)
-    fields = {n: typehash.type_description(codec.get_type(f"hash_pkg/msg/{n}"))["type_description"]["fields"][0]["type"]
-              for n in definitions}
+    fields = {
+        n: typehash.type_description(codec.get_type(f"hash_pkg/msg/{n}"))["type_description"]["fields"][0]["type"]
+        for n in definitions
+    }
     assert (fields["A"]["type_id"], fields["A"]["string_capacity"]) == (21, 5)
     assert (fields["C"]["type_id"], fields["C"]["capacity"]) == (54, 3)
     assert (fields["D"]["type_id"], fields["D"]["capacity"]) == (102, 3)

@@ -12,11 +12,11 @@ import sys
 from pathlib import Path
 
 import pytest
+from conftest import ROOT
 
 from actors.errors import GraphFileError
 from actors.launch.graph_file import load_graph
 from actors.launch.importing import shipped_graphs
-from conftest import ROOT
 
 WHICH = (
     "import sys; from actors.launch.graph_file import load_graph; "
@@ -122,7 +122,11 @@ def test_a_users_world_py_hiding_the_shipped_world_names_both_paths_and_exits_2(
     graph = graph_file(tmp_path, "world.sim:World")
     done = subprocess.run(
         [sys.executable, "-m", "actors.run", str(graph), "--clock", "virtual", "--duration", "1"],
-        cwd=tmp_path, env=child_env(), capture_output=True, text=True, timeout=60,
+        cwd=tmp_path,
+        env=child_env(),
+        capture_output=True,
+        text=True,
+        timeout=60,
     )
     import actors.world
 

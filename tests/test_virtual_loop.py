@@ -77,7 +77,13 @@ def test_call_soon_runs_in_order_and_what_it_schedules_waits_for_the_next_iterat
             await asyncio.sleep(0)
 
     assert run_both(program) == [
-        "first", "second", "after one iteration", "scheduled by first", "next", "timer due now", "the one after",
+        "first",
+        "second",
+        "after one iteration",
+        "scheduled by first",
+        "next",
+        "timer due now",
+        "the one after",
     ]
 
 
@@ -95,7 +101,12 @@ def test_timers_run_in_deadline_order_then_scheduling_order_at_their_exact_times
         note("slept")
 
     assert run_both(program) == [
-        ("soon", 0.0), ("a", 0.1), ("a again, same deadline", 0.1), ("b", 0.2), ("c", 0.3), ("slept", 1.0),
+        ("soon", 0.0),
+        ("a", 0.1),
+        ("a again, same deadline", 0.1),
+        ("b", 0.2),
+        ("c", 0.3),
+        ("slept", 1.0),
     ]
 
 
@@ -127,8 +138,11 @@ def test_cancelled_handles_never_run_and_the_heap_is_swept():
 
 def test_an_exception_in_a_callback_reaches_the_loops_handler_and_the_loop_goes_on():
     async def program(loop, trace):
-        loop.set_exception_handler(lambda _loop, context: trace.append(
-            (context["message"].split(" ")[0], type(context["exception"]).__name__, loop.time())))
+        loop.set_exception_handler(
+            lambda _loop, context: trace.append(
+                (context["message"].split(" ")[0], type(context["exception"]).__name__, loop.time())
+            )
+        )
 
         def boom():
             raise ValueError("boom")
@@ -140,7 +154,10 @@ def test_an_exception_in_a_callback_reaches_the_loops_handler_and_the_loop_goes_
         trace.append("done")
 
     assert run_both(program) == [
-        ("Exception", "ValueError", 0.0), ("Exception", "ValueError", 0.25), "after the failing timer", "done",
+        ("Exception", "ValueError", 0.0),
+        ("Exception", "ValueError", 0.25),
+        "after the failing timer",
+        "done",
     ]
 
 
@@ -159,7 +176,10 @@ def test_handles_carry_their_context_and_are_asyncios_handles():
         await asyncio.sleep(1)
 
     assert run_both(program) == [
-        ("TimerHandle", 0.5, False, True), ("soon", "given"), ("soon, own copy", "caller's"), ("timer", "given"),
+        ("TimerHandle", 0.5, False, True),
+        ("soon", "given"),
+        ("soon, own copy", "caller's"),
+        ("timer", "given"),
     ]
 
 
@@ -192,10 +212,17 @@ def test_call_again_puts_a_handle_that_ran_back_in_line_as_call_at_would():
         finally:
             loop.close()
     # The same ticks at the same times in the same context and order; the lean loop used one handle for all.
-    assert lean[:-1] == reference[:-1] == [
-        ("tick", 0.1, "the handle's own"), ("other", 0.2, "unset"), ("tick", 0.2, "the handle's own"),
-        ("other", 0.3, "unset"), ("tick", 0.3, "the handle's own"),
-    ]
+    assert (
+        lean[:-1]
+        == reference[:-1]
+        == [
+            ("tick", 0.1, "the handle's own"),
+            ("other", 0.2, "unset"),
+            ("tick", 0.2, "the handle's own"),
+            ("other", 0.3, "unset"),
+            ("tick", 0.3, "the handle's own"),
+        ]
+    )
     assert (lean[-1], reference[-1]) == (1, 3)
 
 

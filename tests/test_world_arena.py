@@ -102,9 +102,7 @@ def test_malformed_world_names_file_and_key_path(tmp_path: Path, text: str, expe
 
 
 def test_missing_world_file(tmp_path: Path) -> None:
-    with pytest.raises(
-        WorldFileError, match=r"nowhere\.toml: cannot read: No such file"
-    ):
+    with pytest.raises(WorldFileError, match=r"nowhere\.toml: cannot read: No such file"):
         load_world(tmp_path / "nowhere.toml")
 
 
@@ -127,15 +125,12 @@ def test_defaults_and_frozen(tmp_path: Path) -> None:
 def area(vertices: tuple[tuple[float, float], ...]) -> float:
     n = len(vertices)
     return 0.5 * sum(
-        vertices[i][0] * vertices[(i + 1) % n][1] - vertices[(i + 1) % n][0] * vertices[i][1]
-        for i in range(n)
+        vertices[i][0] * vertices[(i + 1) % n][1] - vertices[(i + 1) % n][0] * vertices[i][1] for i in range(n)
     )
 
 
 def test_solids_wind_counter_clockwise_and_keep_kind_and_name(tmp_path: Path) -> None:
-    clockwise = (
-        "[[polygons]]\nname = 'ell'\nvertices = [[0, 0], [0, 2], [1, 2], [1, 1], [2, 1], [2, 0]]\n"
-    )
+    clockwise = "[[polygons]]\nname = 'ell'\nvertices = [[0, 0], [0, 2], [1, 2], [1, 1], [2, 1], [2, 0]]\n"
     world = load_world(write(tmp_path, MINIMAL + clockwise))
     (ell,) = solids(world)
     assert ell.kind == "obstacle" and ell.name == "ell"

@@ -70,9 +70,7 @@ def assert_stops_flush(sim: Simulation, gap: Callable[[], float]) -> None:
         ("asl_tb3", (-1.0, -5.0), (-0.5, -1.0)),
     ],
 )
-def test_commands_are_clipped(
-    model: str, command: tuple[float, float], expected: tuple[float, float]
-) -> None:
+def test_commands_are_clipped(model: str, command: tuple[float, float], expected: tuple[float, float]) -> None:
     sim = Simulation.from_file("empty")
     robot = sim.add_robot("r", model)
     robot.command(*command)
@@ -176,9 +174,7 @@ def test_stops_at_a_wall_without_passing_or_creeping(model: str) -> None:
     sim = Simulation.from_file("empty")
     robot = sim.add_robot("r", model, x=4.0, y=0.0)
     robot.command(1.0, 0.0)
-    assert_stops_flush(
-        sim, lambda: 5.0 - robot.pose.x - robot.model.radius
-    )  # the inner face is at x = 5
+    assert_stops_flush(sim, lambda: 5.0 - robot.pose.x - robot.model.radius)  # the inner face is at x = 5
     assert robot.contacts == (Contact("wall", None),) and robot.in_contact
     assert robot.pose == (pytest.approx(4.895, abs=0.002), 0.0, 0.0)  # no bounce, no spin, no drift
     resting = robot.pose

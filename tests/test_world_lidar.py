@@ -76,9 +76,7 @@ def test_finish_ranges_marks_both_ends() -> None:
     assert ranges.tolist() == [-np.inf, 0.1, 1.0, 2.0, np.inf, np.inf]
 
 
-def brute_force(
-    space: pymunk.Space, x: float, y: float, heading: float, reach: float
-) -> np.ndarray:
+def brute_force(space: pymunk.Space, x: float, y: float, heading: float, reach: float) -> np.ndarray:
     """One pymunk segment query per beam: slow, and independent of Lidar's arithmetic."""
     out = np.full(BEAMS, np.inf)
     for i in range(BEAMS):
@@ -102,9 +100,7 @@ def test_matches_a_beam_by_beam_query_and_batches_like_single_scans() -> None:
         space.add(pymunk.Circle(space.static_body, post.radius, post.center))
     for x, y, r in robots:
         space.add(pymunk.Circle(space.static_body, r, (x, y)))
-    lidar = Lidar(
-        [s.vertices for s in solids(world)], [(*p.center, p.radius) for p in posts(world)]
-    )
+    lidar = Lidar([s.vertices for s in solids(world)], [(*p.center, p.radius) for p in posts(world)])
     poses = []
     while len(poses) < 25:
         x, y = rng.uniform(-2.9, 2.9, 2)
@@ -114,9 +110,7 @@ def test_matches_a_beam_by_beam_query_and_batches_like_single_scans() -> None:
     for row, (x, y, heading) in zip(batch, poses):
         expected = brute_force(space, x, y, heading, 3.5)
         np.testing.assert_allclose(row, expected, atol=1e-9)
-        np.testing.assert_array_equal(
-            row, lidar.distances(np.array([(x, y, heading)]), BEAMS, 3.5, robots)[0]
-        )
+        np.testing.assert_array_equal(row, lidar.distances(np.array([(x, y, heading)]), BEAMS, 3.5, robots)[0])
 
 
 def test_scan_all_gives_each_robots_scan() -> None:

@@ -7,6 +7,7 @@ import math
 import anyio
 import msgspec
 import pytest
+from conftest import ROOT
 
 from actors import Node, Parameter, Runtime, VirtualTimeLoop
 from actors.errors import WorldError
@@ -14,7 +15,6 @@ from interfaces.geometry_msgs.msg import PoseStamped, Twist
 from interfaces.nav_msgs.msg import Odometry
 from interfaces.sensor_msgs.msg import LaserScan
 from interfaces.std_msgs.msg import Bool
-from conftest import ROOT
 from nodes.constant_control import ConstantControl
 from world.robot import TurtleBot
 from world.sim import World
@@ -330,7 +330,9 @@ async def test_the_demo_robot_drives_a_minute_without_touching_anything_until_ki
 
     graph, classes = load_graph(ROOT / path)
     # The shipped graph's classes are actors.world's (see actors.launch.importing), graph.toml's the repository's.
-    robot_part = [(e, c) for e, c in zip(graph.nodes, classes) if c.__name__ in ("World", "TurtleBot", "ConstantControl")]
+    robot_part = [
+        (e, c) for e, c in zip(graph.nodes, classes) if c.__name__ in ("World", "TurtleBot", "ConstantControl")
+    ]
     assert len(robot_part) == 3
     async with Runtime() as rt:
         for entry, cls in robot_part:

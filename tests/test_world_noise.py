@@ -32,9 +32,7 @@ def test_same_seed_same_numbers_and_streams_are_independent() -> None:
     assert not np.array_equal(ranges[0], ranges[2])
     assert np.std(ranges[0]) == pytest.approx(0.05, rel=0.2)
     odometry = a.odometry(1.0, 2.0, 0.0, 0.2, 0.1)
-    assert odometry != (1.0, 2.0, 0.0, 0.2, 0.1) and odometry == pytest.approx(
-        (1.0, 2.0, 0.0, 0.2, 0.1), abs=0.3
-    )
+    assert odometry != (1.0, 2.0, 0.0, 0.2, 0.1) and odometry == pytest.approx((1.0, 2.0, 0.0, 0.2, 0.1), abs=0.3)
     assert {type(value) for value in odometry} == {float}  # what a message field takes as it is
 
 

@@ -36,9 +36,7 @@ def test_png_covers_the_bounds_at_the_scale(tmp_path: Path) -> None:
         (x0, _), (_, y1) = recorder.sim.world.bounds.min, recorder.sim.world.bounds.max
         x, y, theta = recorder.sim.robots["a"].pose
         at = lambda x, y: image.getpixel((int((x - x0) * 50), int((y1 - y) * 50)))  # noqa: E731
-        assert at(x - 0.05 * math.cos(theta), y - 0.05 * math.sin(theta)) == pytest.approx(
-            (31, 119, 180), abs=30
-        )
+        assert at(x - 0.05 * math.cos(theta), y - 0.05 * math.sin(theta)) == pytest.approx((31, 119, 180), abs=30)
         assert at(-3.05, -3.05) == pytest.approx((70, 70, 76), abs=10)
         assert at(0.0, 2.5) == pytest.approx((246, 246, 242), abs=10)
 
@@ -57,9 +55,7 @@ def test_gif_needs_frames(tmp_path: Path) -> None:
         save_gif(recorded_run(), tmp_path / "run.gif")
 
 
-def test_missing_pillow_says_what_to_install(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
-) -> None:
+def test_missing_pillow_says_what_to_install(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     recorder = recorded_run()
     for name in [m for m in sys.modules if m == "PIL" or m.startswith("PIL.")]:
         monkeypatch.delitem(sys.modules, name)

@@ -6,9 +6,9 @@ import math
 
 import anyio
 import pytest
+from conftest import protobuf_class
 
 from actors import Runtime
-from conftest import protobuf_class
 from world.robot import TurtleBot
 from world.scene import OBSTACLE_HEIGHT, scene_update
 from world.sim import World

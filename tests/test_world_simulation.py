@@ -25,7 +25,7 @@ def test_steps_advance_time() -> None:
         Simulation.from_file("empty", dt=-1.0)
 
 
-def test_bad_world_file_raises_world_file_error(tmp_path) -> None:  # noqa: ANN001
+def test_bad_world_file_raises_world_file_error(tmp_path) -> None:
     with pytest.raises(WorldFileError):
         Simulation.from_file(tmp_path / "missing.toml")
 

@@ -13,6 +13,7 @@ from typing import Any
 
 import anyio
 import pytest
+from zenoh_procs import free_port, matched, peer, section, until
 
 from actors import Node, Runtime, codec
 from actors.transport.zenoh import ZenohTransport
@@ -20,7 +21,6 @@ from actors.transport.zenoh.attachment import gid_of, pack, unpack
 from actors.transport.zenoh.keys import parse_token
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.std_msgs.msg import String
-from zenoh_procs import free_port, matched, peer, section, until
 
 zenoh = pytest.importorskip("zenoh", reason="the Zenoh transport's tests need eclipse-zenoh (the test extra has it)")
 
@@ -118,8 +118,14 @@ async def test_the_sdks_client_is_answered_as_its_own_server_answers():
         with anyio.fail_after(10):
             while True:  # until our queryable is known over there
                 replies = await anyio.to_thread.run_sync(
-                    lambda: list(sdk.get(query["key"], payload=bytes.fromhex(query["payload"]),
-                                         attachment=bytes.fromhex(query["attachment"]), timeout=1))
+                    lambda: list(
+                        sdk.get(
+                            query["key"],
+                            payload=bytes.fromhex(query["payload"]),
+                            attachment=bytes.fromhex(query["attachment"]),
+                            timeout=1,
+                        )
+                    )
                 )
                 if replies:
                     break

@@ -13,7 +13,6 @@ from pathlib import Path
 
 import anyio
 import pytest
-
 from conftest import ROOT
 from zenoh_procs import free_port, spawned, zenoh_env
 
@@ -53,7 +52,9 @@ async def test_a_service_in_one_process_answers_a_client_in_another():
 async def test_a_transient_local_topic_reaches_a_subscriber_process_started_later(tmp_path):
     env = zenoh_env(free_port())
     with anyio.fail_after(60):
-        async with spawned("-m", "actors.run", graph_file(tmp_path, "latcher", "zenoh_nodes:Latcher"), env=env) as latcher:
+        async with spawned(
+            "-m", "actors.run", graph_file(tmp_path, "latcher", "zenoh_nodes:Latcher"), env=env
+        ) as latcher:
             await latcher.wait_for("published")
             reader_graph = graph_file(tmp_path, "reader", "zenoh_nodes:LateReader")
             async with spawned("-m", "actors.run", reader_graph, env=env) as reader:
@@ -64,8 +65,17 @@ async def test_a_transient_local_topic_reaches_a_subscriber_process_started_late
 async def test_a_virtual_time_graph_with_a_transport_is_refused(tmp_path):
     graph = graph_file(tmp_path, "virtual", "zenoh_nodes:Latcher")
     proc = await asyncio.create_subprocess_exec(
-        sys.executable, "-m", "actors.run", graph, "--clock", "virtual", "--duration", "1",
-        cwd=ROOT, env=zenoh_env(free_port()), stderr=asyncio.subprocess.PIPE,
+        sys.executable,
+        "-m",
+        "actors.run",
+        graph,
+        "--clock",
+        "virtual",
+        "--duration",
+        "1",
+        cwd=ROOT,
+        env=zenoh_env(free_port()),
+        stderr=asyncio.subprocess.PIPE,
     )
     with anyio.fail_after(30):
         _, err = await proc.communicate()

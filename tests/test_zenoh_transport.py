@@ -11,6 +11,7 @@ import logging
 
 import anyio
 import pytest
+from zenoh_procs import free_port, matched, peer, section, spawned, until, zenoh_env
 
 from actors import Node, Runtime, ServiceError
 from actors.ops.doctor import diagnose
@@ -19,7 +20,6 @@ from actors.transport.zenoh.attachment import pack
 from actors.transport.zenoh.keys import data_key
 from interfaces.example_interfaces.srv import AddTwoInts
 from interfaces.std_msgs.msg import String
-from zenoh_procs import free_port, matched, peer, section, spawned, until, zenoh_env
 
 zenoh = pytest.importorskip("zenoh", reason="the Zenoh transport's tests need eclipse-zenoh (the test extra has it)")
 

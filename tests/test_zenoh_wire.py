@@ -40,7 +40,10 @@ def sdk_token(kind: str, node: str = "") -> str:
 def test_type_names_and_data_keys_are_rmw_zenohs():
     assert dds_type_name("std_msgs/msg/String") == "std_msgs::msg::dds_::String_"
     assert dds_type_name("example_interfaces/srv/AddTwoInts") == "example_interfaces::srv::dds_::AddTwoInts_"
-    assert ros_type_name("example_interfaces::action::dds_::Fibonacci_SendGoal_") == "example_interfaces/action/Fibonacci_SendGoal"
+    assert (
+        ros_type_name("example_interfaces::action::dds_::Fibonacci_SendGoal_")
+        == "example_interfaces/action/Fibonacci_SendGoal"
+    )
     assert codec.type_hash(String) == STRING_HASH
     assert data_key(0, "/topic", "std_msgs/msg/String", STRING_HASH) == SDK["samples"][0]["key"]
     assert data_key(0, "/add_two_ints", "example_interfaces/srv/AddTwoInts", ADD_HASH) == SDK["queries"][0]["key"]
@@ -54,30 +57,61 @@ def test_type_names_and_data_keys_are_rmw_zenohs():
 def test_our_tokens_are_the_sdks_for_the_same_entities():
     zid = sdk_token("MP").split("/")[2]
     assert node_token(0, zid, 0, "/sdk_talker") == sdk_token("NN", "sdk_talker")
-    talker = endpoint_token(0, zid, 0, 0, "MP", "/sdk_talker", "/topic", "std_msgs/msg/String", STRING_HASH, QoSSnapshot())
+    talker = endpoint_token(
+        0, zid, 0, 0, "MP", "/sdk_talker", "/topic", "std_msgs/msg/String", STRING_HASH, QoSSnapshot()
+    )
     assert talker == sdk_token("MP")
     caller_zid = sdk_token("SC").split("/")[2]
     caller = endpoint_token(
-        0, caller_zid, 0, 0, "SC", "/sdk_caller", "/add_two_ints", "example_interfaces/srv/AddTwoInts", ADD_HASH, QoSSnapshot()
+        0,
+        caller_zid,
+        0,
+        0,
+        "SC",
+        "/sdk_caller",
+        "/add_two_ints",
+        "example_interfaces/srv/AddTwoInts",
+        ADD_HASH,
+        QoSSnapshot(),
     )
     assert caller == sdk_token("SC")
 
 
 def test_tokens_name_namespaces_enclaves_and_node_ids_as_rmw_zenoh_does():
-    token = endpoint_token(3, "ab12", 5, 9, "MS", "/robot1/nav/planner", "/robot1/odom", "nav_msgs/msg/Odometry", "RIHS01_h", QoSSnapshot(depth=5))
-    assert token == "@ros2_lv/3/ab12/5/9/MS/%/%robot1%nav/planner/%robot1%odom/nav_msgs::msg::dds_::Odometry_/RIHS01_h/::,5:,:,:,,"
+    token = endpoint_token(
+        3,
+        "ab12",
+        5,
+        9,
+        "MS",
+        "/robot1/nav/planner",
+        "/robot1/odom",
+        "nav_msgs/msg/Odometry",
+        "RIHS01_h",
+        QoSSnapshot(depth=5),
+    )
+    assert (
+        token
+        == "@ros2_lv/3/ab12/5/9/MS/%/%robot1%nav/planner/%robot1%odom/nav_msgs::msg::dds_::Odometry_/RIHS01_h/::,5:,:,:,,"
+    )
     assert node_token(3, "ab12", 5, "/planner") == "@ros2_lv/3/ab12/5/5/NN/%/%/planner"
 
 
 def test_parsing_reads_back_every_sdk_token():
     talker = parse_token(sdk_token("MP"))
     assert (talker.kind, talker.node, talker.name, talker.type, talker.type_hash) == (
-        "MP", "/sdk_talker", "/topic", "std_msgs/msg/String", STRING_HASH
+        "MP",
+        "/sdk_talker",
+        "/topic",
+        "std_msgs/msg/String",
+        STRING_HASH,
     )
     assert talker.qos == QoSSnapshot(depth=10)
     node = parse_token(sdk_token("NN", "sdk_caller"))
     assert (node.kind, node.node, node.name) == ("NN", "/sdk_caller", "")
-    deep = parse_token("@ros2_lv/0/z/1/2/SS/%/%ns%deeper/srv_node/%ns%add/example_interfaces::srv::dds_::AddTwoInts_/h/::,:,:,:,,")
+    deep = parse_token(
+        "@ros2_lv/0/z/1/2/SS/%/%ns%deeper/srv_node/%ns%add/example_interfaces::srv::dds_::AddTwoInts_/h/::,:,:,:,,"
+    )
     assert (deep.node, deep.name, deep.qos.depth) == ("/ns/deeper/srv_node", "/ns/add", 42)
 
 
@@ -106,7 +140,12 @@ def test_a_malformed_token_is_refused_with_the_reason(key, why):
         (QoSSnapshot(depth=5, reliability=ReliabilityPolicy.BEST_EFFORT), "2::,5:,:,:,,"),
         (QoSSnapshot(history=HistoryPolicy.KEEP_ALL), "::2,:,:,:,,"),
         (
-            QoSSnapshot(depth=10, deadline_ns=1_500_000_000, liveliness=LivelinessPolicy.MANUAL_BY_TOPIC, liveliness_lease_duration_ns=2_000_000_000),
+            QoSSnapshot(
+                depth=10,
+                deadline_ns=1_500_000_000,
+                liveliness=LivelinessPolicy.MANUAL_BY_TOPIC,
+                liveliness_lease_duration_ns=2_000_000_000,
+            ),
             "::,10:1,500000000:,:3,2,0",
         ),
     ],
@@ -115,7 +154,10 @@ def test_qos_strings_leave_rmw_zenohs_defaults_empty_and_read_back(qos, text):
     assert qos_string(qos) == text
     back = parse_qos(text)
     assert (back.reliability, back.durability, back.history, back.deadline_ns) == (
-        qos.reliability, qos.durability, qos.history, qos.deadline_ns
+        qos.reliability,
+        qos.durability,
+        qos.history,
+        qos.deadline_ns,
     )
     if qos.history == HistoryPolicy.KEEP_LAST:
         assert back.depth == qos.depth

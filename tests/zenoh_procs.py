@@ -13,9 +13,9 @@ from contextlib import asynccontextmanager
 from typing import Any
 
 import anyio
+from conftest import ROOT, python_env
 
 from actors.launch.graph_file import TransportSection
-from conftest import ROOT, python_env
 
 __all__ = ["free_port", "zenoh_env", "Process", "spawned", "section", "raw_config", "peer", "matched", "until"]
 
@@ -30,8 +30,7 @@ def zenoh_env(port: int) -> dict[str, str]:
     """A child's environment: peers meeting on ``port`` of loopback, and nothing else."""
     env = python_env()
     env["ZENOH_CONFIG_OVERRIDE"] = (
-        f'connect/endpoints=["tcp/127.0.0.1:{port}"];'
-        f'listen/endpoints=["tcp/127.0.0.1:{port}","tcp/127.0.0.1:0"]'
+        f'connect/endpoints=["tcp/127.0.0.1:{port}"];listen/endpoints=["tcp/127.0.0.1:{port}","tcp/127.0.0.1:0"]'
     )
     env.pop("ROS_DOMAIN_ID", None)
     return env
@@ -61,7 +60,9 @@ class Process:
             if len(found) >= count:
                 return found[:count]
             if self.proc.returncode is not None:
-                raise AssertionError(f"process ended ({self.proc.returncode}) before {pattern!r}:\n" + "\n".join(self.lines))
+                raise AssertionError(
+                    f"process ended ({self.proc.returncode}) before {pattern!r}:\n" + "\n".join(self.lines)
+                )
             self._changed.clear()
             if len(self.lines) == seen:  # nothing came between looking and clearing
                 await self._changed.wait()
@@ -71,8 +72,13 @@ class Process:
 async def spawned(*args: str, env: dict[str, str]) -> AsyncIterator[Process]:
     """``python ARGS`` from the repo root, stopped (SIGINT, then killed) when the block ends."""
     proc = await asyncio.create_subprocess_exec(
-        sys.executable, *args, cwd=ROOT, env=env, stdin=asyncio.subprocess.DEVNULL,
-        stdout=asyncio.subprocess.PIPE, stderr=asyncio.subprocess.STDOUT,
+        sys.executable,
+        *args,
+        cwd=ROOT,
+        env=env,
+        stdin=asyncio.subprocess.DEVNULL,
+        stdout=asyncio.subprocess.PIPE,
+        stderr=asyncio.subprocess.STDOUT,
     )
     child = Process(proc)
     reader = asyncio.ensure_future(child._read())

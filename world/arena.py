@@ -40,9 +40,9 @@ from typing import Annotated, NamedTuple
 
 import msgspec
 
+from actors.core.explain import did_you_mean
 from actors.core.tomlfile import load_toml
 from actors.errors import WorldFileError
-from actors.core.explain import did_you_mean
 
 __all__ = [
     "WORLDS_DIR",
@@ -230,8 +230,7 @@ def _ccw(vertices: Sequence[XY]) -> tuple[XY, ...]:
 def _signed_area(vertices: Sequence[XY]) -> float:
     n = len(vertices)
     return 0.5 * sum(
-        vertices[i][0] * vertices[(i + 1) % n][1] - vertices[(i + 1) % n][0] * vertices[i][1]
-        for i in range(n)
+        vertices[i][0] * vertices[(i + 1) % n][1] - vertices[(i + 1) % n][0] * vertices[i][1] for i in range(n)
     )
 
 

@@ -68,9 +68,7 @@ class RobotModel(msgspec.Struct, frozen=True, kw_only=True):
     mass: float = 1.0
     lidar: LidarSpec = LidarSpec()
 
-    def limit(
-        self, v: float, w: float, last_v: float, last_w: float, dt: float
-    ) -> tuple[float, float]:
+    def limit(self, v: float, w: float, last_v: float, last_w: float, dt: float) -> tuple[float, float]:
         """The twist to drive this step: (v, w) clipped to the limits.
 
         Then rate-limited: at most ``accel * dt`` away from the last step's ``(last_v, last_w)``.
@@ -89,9 +87,7 @@ class RobotModel(msgspec.Struct, frozen=True, kw_only=True):
 #: The robots ``Simulation.add_robot`` knows by name.
 MODELS: dict[str, RobotModel] = {
     "burger": RobotModel(name="burger", max_linear=0.22, max_angular=2.84),
-    "asl_tb3": RobotModel(
-        name="asl_tb3", max_linear=0.5, max_angular=1.0, linear_accel=1.0, angular_accel=2.0
-    ),
+    "asl_tb3": RobotModel(name="asl_tb3", max_linear=0.5, max_angular=1.0, linear_accel=1.0, angular_accel=2.0),
 }
 
 
@@ -143,9 +139,7 @@ class Robot:
     ``odometry()`` is what its sensors report, with noise when some is set.
     """
 
-    def __init__(
-        self, name: str, model: RobotModel, pose: Pose, *, seed: int, noise: Noise
-    ) -> None:
+    def __init__(self, name: str, model: RobotModel, pose: Pose, *, seed: int, noise: Noise) -> None:
         self.name = name
         self.model = model
         self.noise = noise

@@ -114,9 +114,7 @@ class _Fan:
         self.dx = np.cos(angles).ravel()
         self.dy = np.sin(angles).ravel()
 
-    def spread(
-        self, scanner: np.ndarray, first: np.ndarray, width: np.ndarray
-    ) -> tuple[np.ndarray, np.ndarray]:
+    def spread(self, scanner: np.ndarray, first: np.ndarray, width: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(item, flat beam) pairs: each beam of ``scanner[item]`` in ``[first, first + width]``.
 
         May include a beam either side of each interval: callers test each pair exactly.
@@ -141,9 +139,7 @@ def _cast_circles(best: np.ndarray, fan: _Fan, circles: np.ndarray, reach: float
     half = np.arcsin(r / np.sqrt(dist2))  # half the angle the circle subtends
     pair, beam = fan.spread(scanner, np.arctan2(cy, cx) - half, 2 * half)
     cx, cy, r, dist2 = cx[pair], cy[pair], r[pair], dist2[pair]
-    along = (
-        fan.dx[beam] * cx + fan.dy[beam] * cy
-    )  # distance to the point of the beam nearest the centre
+    along = fan.dx[beam] * cx + fan.dy[beam] * cy  # distance to the point of the beam nearest the centre
     half_chord2 = r * r - (dist2 - along * along)
     hit = (along > 0) & (half_chord2 >= 0)
     np.minimum.at(best, beam[hit], along[hit] - np.sqrt(half_chord2[hit]))

@@ -26,9 +26,7 @@ class Noise(msgspec.Struct, frozen=True, kw_only=True):
         for field in self.__struct_fields__:
             value = getattr(self, field)
             if not 0.0 <= value < float("inf"):
-                raise ValueError(
-                    f"noise {field} must be a finite standard deviation >= 0, got {value!r}"
-                )
+                raise ValueError(f"noise {field} must be a finite standard deviation >= 0, got {value!r}")
 
     @property
     def odometry(self) -> bool:

@@ -82,9 +82,7 @@ def save_gif(
     canvas = _Canvas(recorder, scale)
     images = [canvas.picture(frame.poses, until=frame.t) for frame in frames]
     path = Path(path)
-    images[0].save(
-        path, format="GIF", save_all=True, append_images=images[1:], duration=frame_ms, loop=0
-    )
+    images[0].save(path, format="GIF", save_all=True, append_images=images[1:], duration=frame_ms, loop=0)
     return path
 
 
@@ -149,9 +147,7 @@ class _Canvas:
             outline=(20, 20, 20),
             width=max(1, round(r / 10)),
         )
-        tip = self._px(
-            pose.x + radius * math.cos(pose.theta), pose.y + radius * math.sin(pose.theta)
-        )
+        tip = self._px(pose.x + radius * math.cos(pose.theta), pose.y + radius * math.sin(pose.theta))
         draw.line([(cx, cy), tip], fill=(255, 255, 255), width=max(1, round(r / 5)))
 
     def _px(self, x: float, y: float) -> tuple[float, float]:

@@ -79,9 +79,7 @@ class TurtleBot(Node):
         y = self.declare_parameter("y", 0.0, fixed).value
         theta = self.declare_parameter("theta", 0.0, fixed).value
         seed = self.declare_parameter("seed", 0, fixed).value
-        noise = {
-            k: self.declare_parameter(f"noise_{k}", 0.0, fixed).value for k in Noise.__struct_fields__
-        }
+        noise = {k: self.declare_parameter(f"noise_{k}", 0.0, fixed).value for k in Noise.__struct_fields__}
         self.world = world_of(self)
         self.name = self.get_fully_qualified_name()
         # The node is the robot's driver: when it stops or restarts, the body stays in

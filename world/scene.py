@@ -62,8 +62,11 @@ def scene_update(world: World, now_ns: int) -> Any:
 
     def entity(id: str, kind: str, **primitives: Any) -> Any:
         return fm.SceneEntity(
-            timestamp=stamp, frame_id=frames.WORLD, id=id,
-            metadata=[fm.KeyValuePair(key="kind", value=kind)], **primitives,
+            timestamp=stamp,
+            frame_id=frames.WORLD,
+            id=id,
+            metadata=[fm.KeyValuePair(key="kind", value=kind)],
+            **primitives,
         )
 
     entities = [
@@ -75,8 +78,12 @@ def scene_update(world: World, now_ns: int) -> Any:
         radius = robot.model.radius
         body = _cylinder(fm, (x, y), radius, ROBOT_HEIGHT, _ROBOT)
         heading = fm.ArrowPrimitive(
-            pose=_pose(fm, x, y, ROBOT_HEIGHT + 0.01, theta), shaft_length=radius, shaft_diameter=0.02,
-            head_length=0.05, head_diameter=0.05, color=fm.Color(**_HEADING),
+            pose=_pose(fm, x, y, ROBOT_HEIGHT + 0.01, theta),
+            shaft_length=radius,
+            shaft_diameter=0.02,
+            head_length=0.05,
+            head_diameter=0.05,
+            color=fm.Color(**_HEADING),
         )
         entities.append(entity(name, "robot", cylinders=[body], arrows=[heading]))
     for name, (pose, ranges) in world.latest_scans().items():

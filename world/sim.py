@@ -48,8 +48,7 @@ def world_of(node: Node) -> World:
     world = _WORLDS.get(node._core.runtime)
     if world is None:
         raise WorldError(
-            f"{node.get_fully_qualified_name()} needs a world: start a world.sim:World node "
-            f"before it in the same graph"
+            f"{node.get_fully_qualified_name()} needs a world: start a world.sim:World node before it in the same graph"
         )
     return world
 

@@ -57,9 +57,7 @@ class Simulation:
             self._add_solid(solid)
         for post in the_posts:
             self._add_post(post)
-        self.lidar = Lidar(
-            [s.vertices for s in the_solids], [(*p.center, p.radius) for p in the_posts]
-        )
+        self.lidar = Lidar([s.vertices for s in the_solids], [(*p.center, p.radius) for p in the_posts])
         self.space.on_collision(_SENSOR_TYPE, None, pre_solve=self._on_sensor)
 
     @classmethod
@@ -95,8 +93,7 @@ class Simulation:
         if isinstance(model, str):
             if model not in MODELS:
                 raise ValueError(
-                    f"unknown robot model {model!r}{did_you_mean(model, MODELS)}; the models are "
-                    f"{', '.join(MODELS)}"
+                    f"unknown robot model {model!r}{did_you_mean(model, MODELS)}; the models are {', '.join(MODELS)}"
                 )
             model = MODELS[model]
         if not all(math.isfinite(value) for value in (x, y, theta)):
@@ -104,15 +101,11 @@ class Simulation:
         robot = Robot(name, model, Pose(x, y, theta), seed=seed, noise=noise or Noise())
         (x0, y0), (x1, y1) = self.world.bounds.min, self.world.bounds.max
         if not (x0 <= x <= x1 and y0 <= y <= y1):
-            raise ValueError(
-                f"robot {name!r} would start at ({x}, {y}), outside the world's bounds"
-            )
+            raise ValueError(f"robot {name!r} would start at ({x}, {y}), outside the world's bounds")
         # Query solids only: another robot's sensor circle is no obstacle.
         robot.shape.filter = pymunk.ShapeFilter(categories=_SOLID, mask=_SOLID)
         if hits := self.space.shape_query(robot.shape):
-            raise ValueError(
-                f"robot {name!r} would start overlapping {self._describe(hits[0].shape)}"
-            )
+            raise ValueError(f"robot {name!r} would start overlapping {self._describe(hits[0].shape)}")
         robot.shape.filter = pymunk.ShapeFilter(categories=_SOLID)
         robot.sensor.collision_type = _SENSOR_TYPE
         robot.sensor.filter = pymunk.ShapeFilter(categories=_SENSING, mask=_SOLID)
@@ -183,9 +176,7 @@ class Simulation:
             closed = [*solid.vertices, solid.vertices[0]]
             pieces = [hull[:-1] for hull in pymunk.autogeometry.convex_decomposition(closed, 0.0)]
         for piece in pieces:
-            self._add_static(
-                pymunk.Poly(self.space.static_body, piece), Contact(solid.kind, solid.name)
-            )
+            self._add_static(pymunk.Poly(self.space.static_body, piece), Contact(solid.kind, solid.name))
 
     def _add_post(self, post: Post) -> None:
         shape = pymunk.Circle(self.space.static_body, post.radius, post.center)

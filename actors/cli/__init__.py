@@ -16,16 +16,24 @@ __all__ = ["main"]
 # sets ``func(args) -> int | None`` on every verb.  Imports inside the verbs stay
 # lazy so that ``actors --help`` is quick.
 GROUPS = (
-    "node", "topic", "service", "action", "param", "interface", "doctor", "graph", "launch", "run", "pkg",
+    "node",
+    "topic",
+    "service",
+    "action",
+    "param",
+    "interface",
+    "doctor",
+    "graph",
+    "launch",
+    "run",
+    "pkg",
     "bag",
 )
 
 
 def build_parser() -> argparse.ArgumentParser:
     """The full argument parser, every group registered."""
-    parser = argparse.ArgumentParser(
-        prog="actors", description="ros2-style command line for actors graphs"
-    )
+    parser = argparse.ArgumentParser(prog="actors", description="ros2-style command line for actors graphs")
     groups = parser.add_subparsers(dest="group", metavar="GROUP", required=True)
     for group in GROUPS:
         importlib.import_module(f"actors.cli.{group}").register(groups)

@@ -22,6 +22,7 @@ from typing import Any, TypeVar
 
 import msgspec
 
+from actors.errors import ControlError
 from actors.ops.control import (
     Call,
     GetGraph,
@@ -33,7 +34,6 @@ from actors.ops.control import (
     frame,
     is_alive,
 )
-from actors.errors import ControlError
 
 __all__ = [
     "NO_GRAPH",
@@ -58,9 +58,7 @@ BUSY_RETRY = 2.0
 _sample_decoder = msgspec.msgpack.Decoder(Sample)
 
 
-def add_verb(
-    verbs: Any, name: str, func: Callable[[argparse.Namespace], int | None], help: str
-) -> Any:
+def add_verb(verbs: Any, name: str, func: Callable[[argparse.Namespace], int | None], help: str) -> Any:
     """Add a verb that runs ``func(args)`` and takes ``--graph NAME`` and ``--transport``; return its parser."""
     parser = verbs.add_parser(name, help=help)
     parser.add_argument(
@@ -120,9 +118,7 @@ class Connection:
         """The socket's descriptor, so that a selector can wait on several connections."""
         return self._sock.fileno()
 
-    def request(
-        self, request: Request, result_type: type[T] | Any = Any, *, timeout: float | None = 10.0
-    ) -> T:
+    def request(self, request: Request, result_type: type[T] | Any = Any, *, timeout: float | None = 10.0) -> T:
         """Send ``request``; return its result as ``result_type``.
 
         Raises ControlError with the graph's reason when the request failed,
@@ -134,9 +130,7 @@ class Connection:
             # A graph too busy to take us answers before we speak, and hangs up.
             body = None if self._answered else self._read(0.5, quiet=True)
             if body is None:
-                raise ControlError(
-                    f"lost the connection to graph {self.name}: {exc.strerror or exc}"
-                ) from None
+                raise ControlError(f"lost the connection to graph {self.name}: {exc.strerror or exc}") from None
         else:
             body = self._read(timeout)
         if body is None:
@@ -242,7 +236,9 @@ def _open(path: Path) -> socket.socket | None:
         except BlockingIOError:
             sock.close()
             if time.monotonic() >= give_up:
-                raise ControlError(f"graph {path.stem} is busy: its queue of new connections is full; try again") from None
+                raise ControlError(
+                    f"graph {path.stem} is busy: its queue of new connections is full; try again"
+                ) from None
             time.sleep(0.01)
         except OSError:
             sock.close()
@@ -277,9 +273,7 @@ def connect(graph: str | Path | None) -> Connection:
         sock.close()
     if not live:
         raise ControlError(NO_GRAPH)
-    raise ControlError(
-        f"several actors graphs are running ({', '.join(live)}): choose one with --graph NAME"
-    )
+    raise ControlError(f"several actors graphs are running ({', '.join(live)}): choose one with --graph NAME")
 
 
 def query(args: argparse.Namespace, request: Request, result_type: type[T] | Any = Any) -> T:
@@ -294,9 +288,7 @@ def graph_snapshot(args: argparse.Namespace) -> GraphSnapshot:
         return conn.graph()
 
 
-def call_service(
-    conn: Connection, service: str, srv_type: type, request: Any, *, timeout: float = 10.0
-) -> Any:
+def call_service(conn: Connection, service: str, srv_type: type, request: Any, *, timeout: float = 10.0) -> Any:
     """Call ``service`` of ``srv_type`` with the ``request`` message; return the response message.
 
     Raises ControlError for an unknown service, another type, a handler that
@@ -349,9 +341,7 @@ def type_of(entries: Iterable[Any], name: str, what: str) -> str:
     raise ControlError(f"unknown {what} {full}")
 
 
-def add_type_and_find(
-    verbs: Any, what: str, example: str, entries: Callable[[GraphSnapshot], Iterable[Any]]
-) -> None:
+def add_type_and_find(verbs: Any, what: str, example: str, entries: Callable[[GraphSnapshot], Iterable[Any]]) -> None:
     """``<what> type NAME`` and ``<what> find TYPE [-c] [--include-hidden-<what>s]``, as ros2 has them.
 
     ``entries`` picks the topics (or services...) out of the graph; ``example``
@@ -370,9 +360,5 @@ def add_type_and_find(
     type_.add_argument("name", metavar="NAME")
     find = add_verb(verbs, "find", find_verb, help=f"list the {what}s of a type")
     find.add_argument("type", metavar="TYPE", help=f"e.g. {example}")
-    find.add_argument(
-        "-c", f"--count-{what}s", dest="count_only", action="store_true", help="only print how many"
-    )
-    find.add_argument(
-        f"--include-hidden-{what}s", dest="include_hidden", action="store_true", help="hidden ones too"
-    )
+    find.add_argument("-c", f"--count-{what}s", dest="count_only", action="store_true", help="only print how many")
+    find.add_argument(f"--include-hidden-{what}s", dest="include_hidden", action="store_true", help="hidden ones too")

@@ -26,9 +26,9 @@ from pathlib import Path
 
 import anyio
 
-from actors.ops.control import ControlServer
 from actors.errors import ActorsError, ControlError
 from actors.launch.graph_file import TransportSection
+from actors.ops.control import ControlServer
 from actors.runtime import Runtime
 from actors.transport.zenoh import ZenohTransport
 
@@ -81,7 +81,7 @@ def bridge() -> Iterator[Path]:
     def run() -> None:
         try:
             anyio.run(serve)
-        except BaseException as exc:  # noqa: BLE001 - handed to the command's thread
+        except BaseException as exc:
             state["error"] = exc
         finally:
             ready.set()

@@ -54,9 +54,7 @@ def register(subparsers: Any) -> None:
     send = add_verb(verbs, "send_goal", send_goal, help="send a goal and print its result")
     send.add_argument("action", metavar="NAME", help="e.g. /fibonacci")
     send.add_argument("type", metavar="TYPE", help="e.g. example_interfaces/action/Fibonacci")
-    send.add_argument(
-        "goal", metavar="GOAL", nargs="?", default="{}", help='goal fields in YAML, e.g. "{order: 5}"'
-    )
+    send.add_argument("goal", metavar="GOAL", nargs="?", default="{}", help='goal fields in YAML, e.g. "{order: 5}"')
     send.add_argument("-f", "--feedback", action="store_true", help="print the goal's feedback messages")
 
 
@@ -112,9 +110,9 @@ def send_goal(args: argparse.Namespace) -> int:
     goal runs, it asks the server to cancel the goal first.
     """
     from actors import codec
-    from actors.ros.actions import status_name, wire_names
     from actors.cli._format import yaml_text
     from actors.errors import UnknownInterfaceError
+    from actors.ros.actions import status_name, wire_names
     from interfaces.unique_identifier_msgs.msg import UUID
 
     action = codec.get_type(args.type)

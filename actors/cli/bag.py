@@ -37,7 +37,12 @@ def register(subparsers: Any) -> None:
     play.add_argument("bag", metavar="BAG", help="an .mcap file or a bag directory")
     play.add_argument("-r", "--rate", type=_positive, default=1.0, help="speed factor on the wall clock")
     play.add_argument(
-        "--clock", type=_positive, nargs="?", const=40.0, default=0.0, metavar="HZ",
+        "--clock",
+        type=_positive,
+        nargs="?",
+        const=40.0,
+        default=0.0,
+        metavar="HZ",
         help="also publish the bag's time on /clock (rosgraph_msgs/Clock), HZ times a second (40)",
     )
     play.add_argument("-l", "--loop", action="store_true", help="play again and again until stopped")
@@ -90,7 +95,9 @@ def format_info(bag: Any) -> str:
     """``ros2 bag info``'s text for a :class:`~actors.recording.reader.Bag`."""
     pad = " " * 19
     topics = bag.topics
-    services = [t for t in topics if t.name.endswith("/_service_event") and "/srv/" in t.type and t.type.endswith("_Event")]
+    services = [
+        t for t in topics if t.name.endswith("/_service_event") and "/srv/" in t.type and t.type.endswith("_Event")
+    ]
     plain = [t for t in topics if t not in services]
     names = [str(f.relative_to(bag.path)) if bag.path.is_dir() else str(bag.path) for f in bag.files]
     distros = {s.ros_distro for s in bag.summaries if s.ros_distro}
@@ -104,12 +111,14 @@ def format_info(bag: Any) -> str:
         f"Start:             {_stamp(bag.start)}",
         f"End:               {_stamp(bag.end)}",
         f"Messages:          {bag.message_count - sum(t.count for t in services)}",
-        "Topic information: " + f"\n{pad}".join(
+        "Topic information: "
+        + f"\n{pad}".join(
             f"Topic: {t.name} | Type: {t.type} | Count: {t.count} | Serialization Format: {t.serialization_format}"
             for t in plain
         ),
         f"Service:           {len(services)}",
-        "Service information: " + f"\n{pad}  ".join(
+        "Service information: "
+        + f"\n{pad}  ".join(
             f"Service: {t.name.removesuffix('/_service_event')} | Type: {t.type.removesuffix('_Event')} | "
             f"Event Count: {t.count} | Serialization Format: {t.serialization_format}"
             for t in services
@@ -129,8 +138,8 @@ def play_bag(args: argparse.Namespace) -> None:
     virtual time as fast as the graph handles them.  Topics whose type is
     unknown here are named and skipped.  Ctrl-C stops the playing.
     """
-    from actors.ops.control import Play
     from actors.errors import BagError
+    from actors.ops.control import Play
     from actors.recording.player import parse_remaps, plan
 
     bag = _open_bag(args.bag, args.recover)
@@ -143,8 +152,13 @@ def play_bag(args: argparse.Namespace) -> None:
     for line in skipped:
         print(line, file=sys.stderr)
     request = Play(
-        path=str(Path(args.bag).resolve()), topics=args.topics, remap=remap, rate=args.rate,
-        clock=args.clock, loop=args.loop, recover=args.recover,
+        path=str(Path(args.bag).resolve()),
+        topics=args.topics,
+        remap=remap,
+        rate=args.rate,
+        clock=args.clock,
+        loop=args.loop,
+        recover=args.recover,
     )
     with connect(args.graph) as conn:
         played = conn.request(request, timeout=None)["played"]
@@ -166,10 +180,10 @@ def record_bag(args: argparse.Namespace) -> None:
     import selectors
 
     from actors import codec
-    from actors.ops.control import Subscribe
     from actors.errors import BagError, ControlError
-    from actors.ros.names import expand, is_hidden_name
+    from actors.ops.control import Subscribe
     from actors.recording.bag_writer import BagWriter
+    from actors.ros.names import expand, is_hidden_name
 
     if not args.all and not args.topics:
         raise BagError("name the topics to record, or -a for all of them")
@@ -196,8 +210,11 @@ def record_bag(args: argparse.Namespace) -> None:
         ros_type = conn.request(Subscribe(topic=topic.name, depth=1000))["type"]
         msg_type = codec.get_type(ros_type)
         channel = bag.add_topic(
-            topic.name, ros_type, definition=codec.definition_text(msg_type),
-            type_hash=codec.type_hash(msg_type), offers=[p.qos for p in topic.publishers],
+            topic.name,
+            ros_type,
+            definition=codec.definition_text(msg_type),
+            type_hash=codec.type_hash(msg_type),
+            offers=[p.qos for p in topic.publishers],
         )
         stream = _Stream(conn, msg_type, channel)
         selector.register(conn, selectors.EVENT_READ, stream)

@@ -65,18 +65,18 @@ def doctor(args: argparse.Namespace) -> None:
         )
         _section(
             "NODES",
-            [
-                (n.name, f"{n.state}, {n.restarts} restart(s), {n.crashes} crash(es)")
-                for n in graph.nodes
-            ],
+            [(n.name, f"{n.state}, {n.restarts} restart(s), {n.crashes} crash(es)") for n in graph.nodes],
         )
         _section(
             "ACTIONS",
             [
-                (a.name, f"{a.type}, servers: {', '.join(a.servers) or 'none'}, "
-                 f"clients: {', '.join(a.clients) or 'none'}")
+                (
+                    a.name,
+                    f"{a.type}, servers: {', '.join(a.servers) or 'none'}, clients: {', '.join(a.clients) or 'none'}",
+                )
                 for a in action_infos(graph.topics)
-            ] or [("actions", "none")],
+            ]
+            or [("actions", "none")],
         )
         _section(
             "TOPICS",
@@ -96,9 +96,7 @@ def doctor(args: argparse.Namespace) -> None:
         ]
         _section(
             "LOOP LAG",
-            (lag or [("events", "none")])
-            if report.lag_measured
-            else [("measured", "no (virtual time)")],
+            (lag or [("events", "none")]) if report.lag_measured else [("measured", "no (virtual time)")],
         )
         _section("CHECKS", [(c.name, _verdict(c, args.include_warnings)) for c in report.checks])
         print()

@@ -39,12 +39,9 @@ def register(subparsers: Any) -> None:
         "--output",
         metavar="FILE",
         type=Path,
-        help="a .dot file, or a .png/.svg image with its .dot beside it "
-        "(default: <graph name>.dot)",
+        help="a .dot file, or a .png/.svg image with its .dot beside it (default: <graph name>.dot)",
     )
-    parser.add_argument(
-        "--all", action="store_true", help="include /rosout, /parameter_events and hidden endpoints"
-    )
+    parser.add_argument("--all", action="store_true", help="include /rosout, /parameter_events and hidden endpoints")
 
 
 def write_graph(args: argparse.Namespace) -> int:
@@ -90,12 +87,10 @@ def _draw(graph: GraphSnapshot, everything: bool, dot_path: Path, image: Path) -
     return "install Graphviz (the dot program)" + (" or Pillow" if kind == "png" else "")
 
 
-def _edges(
-    graph: GraphSnapshot, everything: bool
-) -> tuple[list[str], list[str], list[tuple[str, str, bool]]]:
+def _edges(graph: GraphSnapshot, everything: bool) -> tuple[list[str], list[str], list[tuple[str, str, bool]]]:
     """Node names, topic names and edges ``(node, topic, node_publishes)`` to draw."""
-    from actors.ros.names import is_hidden
     from actors.ops.doctor import IGNORED_TOPICS
+    from actors.ros.names import is_hidden
 
     nodes = {n.name for n in graph.nodes if everything or not is_hidden(n.name)}
     topics, edges = [], []
@@ -154,21 +149,9 @@ def _draw_png(graph: GraphSnapshot, everything: bool, path: Path) -> bool:
             (draw.rectangle if kind == "t" else draw.ellipse)(box, outline="black", width=2)
             draw.text((x + 12, y + 9), name, fill="black")
     for node, topic, publishes in edges:
-        start, end = (
-            (boxes["n", node], boxes["t", topic])
-            if publishes
-            else (boxes["t", topic], boxes["n", node])
-        )
-        a = (
-            (start[2], (start[1] + start[3]) / 2)
-            if start[0] < end[0]
-            else (start[0], (start[1] + start[3]) / 2)
-        )
-        b = (
-            (end[0], (end[1] + end[3]) / 2)
-            if start[0] < end[0]
-            else (end[2], (end[1] + end[3]) / 2)
-        )
+        start, end = (boxes["n", node], boxes["t", topic]) if publishes else (boxes["t", topic], boxes["n", node])
+        a = (start[2], (start[1] + start[3]) / 2) if start[0] < end[0] else (start[0], (start[1] + start[3]) / 2)
+        b = (end[0], (end[1] + end[3]) / 2) if start[0] < end[0] else (end[2], (end[1] + end[3]) / 2)
         draw.line([a, b], fill="gray", width=2)
         draw.ellipse((b[0] - 4, b[1] - 4, b[0] + 4, b[1] + 4), fill="black")  # the arrow's head
     image.save(path)

@@ -38,9 +38,7 @@ def register(subparsers: Any) -> None:
     packages.set_defaults(func=list_packages)
     package.set_defaults(func=list_package)
 
-    proto = verbs.add_parser(
-        "proto", help="print a YAML prototype of a type (a service's request, an action's goal)"
-    )
+    proto = verbs.add_parser("proto", help="print a YAML prototype of a type (a service's request, an action's goal)")
     proto.add_argument("type", metavar="TYPE", help="e.g. geometry_msgs/msg/Twist")
     proto.add_argument("--no-quotes", action="store_true", help="without the outer quotes")
     proto.add_argument("--root", action="append", default=[], type=Path, help=root_help)
@@ -48,7 +46,10 @@ def register(subparsers: Any) -> None:
 
     generate = verbs.add_parser("generate", help="generate Python modules beside .msg/.srv/.action sources")
     generate.add_argument(
-        "roots", nargs="*", metavar="ROOT", type=Path,
+        "roots",
+        nargs="*",
+        metavar="ROOT",
+        type=Path,
         help="a folder of packages <ROOT>/<pkg>/msg/*.msg, srv/*.srv, action/*.action "
         "(default: the shipped interfaces)",
     )

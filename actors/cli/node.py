@@ -7,8 +7,8 @@ from typing import Any
 
 from actors.cli._client import add_verb, graph_snapshot, query
 from actors.ops.control import GetNode, NodeDetail
-from actors.system.introspection import action_of
 from actors.ros.names import is_hidden, is_hidden_name
+from actors.system.introspection import action_of
 
 __all__ = ["register"]
 
@@ -19,9 +19,7 @@ def register(subparsers: Any) -> None:
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
 
     listing = add_verb(verbs, "list", list_nodes, help="list the graph's nodes")
-    listing.add_argument(
-        "-a", "--all", action="store_true", help="also list hidden nodes (names starting with _)"
-    )
+    listing.add_argument("-a", "--all", action="store_true", help="also list hidden nodes (names starting with _)")
 
     info = add_verb(
         verbs,
@@ -30,9 +28,7 @@ def register(subparsers: Any) -> None:
         help="a node's subscribers, publishers, service servers and clients, action servers and clients",
     )
     info.add_argument("node", metavar="NODE")
-    info.add_argument(
-        "--include-hidden", action="store_true", help="also show hidden topics, services and actions"
-    )
+    info.add_argument("--include-hidden", action="store_true", help="also show hidden topics, services and actions")
 
 
 def list_nodes(args: argparse.Namespace) -> None:

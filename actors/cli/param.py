@@ -35,14 +35,10 @@ _LABELS = {
 
 def register(subparsers: Any) -> None:
     """Add the ``param`` group and its verbs to the command line."""
-    parser = subparsers.add_parser(
-        "param", help="list, get, describe, set, delete, load and dump node parameters"
-    )
+    parser = subparsers.add_parser("param", help="list, get, describe, set, delete, load and dump node parameters")
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
 
-    listing = add_verb(
-        verbs, "list", list_parameters, help="list the parameters of one node, or of every node"
-    )
+    listing = add_verb(verbs, "list", list_parameters, help="list the parameters of one node, or of every node")
     listing.add_argument("node", metavar="NODE", nargs="?")
 
     get = add_verb(verbs, "get", get_parameter, help="print a parameter's type and value")
@@ -59,21 +55,15 @@ def register(subparsers: Any) -> None:
     set_.add_argument("name", metavar="NAME")
     set_.add_argument("value", metavar="VALUE")
 
-    describe = add_verb(
-        verbs, "describe", describe_parameters, help="print parameters' types and constraints"
-    )
+    describe = add_verb(verbs, "describe", describe_parameters, help="print parameters' types and constraints")
     describe.add_argument("node", metavar="NODE")
     describe.add_argument("names", metavar="NAME", nargs="+")
 
-    delete = add_verb(
-        verbs, "delete", delete_parameter, help="undeclare a parameter (a dynamically typed one)"
-    )
+    delete = add_verb(verbs, "delete", delete_parameter, help="undeclare a parameter (a dynamically typed one)")
     delete.add_argument("node", metavar="NODE")
     delete.add_argument("name", metavar="NAME")
 
-    load = add_verb(
-        verbs, "load", load_parameters, help="set the parameters a ROS parameters YAML file gives NODE"
-    )
+    load = add_verb(verbs, "load", load_parameters, help="set the parameters a ROS parameters YAML file gives NODE")
     load.add_argument("node", metavar="NODE")
     load.add_argument("file", metavar="FILE", help="/node: ros__parameters: ... as param dump writes")
     load.add_argument(
@@ -82,9 +72,7 @@ def register(subparsers: Any) -> None:
         help="leave out the file's /** entry (the parameters for every node)",
     )
 
-    dump = add_verb(
-        verbs, "dump", dump_parameters, help="print a node's parameters as a parameters YAML file"
-    )
+    dump = add_verb(verbs, "dump", dump_parameters, help="print a node's parameters as a parameters YAML file")
     dump.add_argument("node", metavar="NODE")
 
 
@@ -200,9 +188,7 @@ def load_parameters(args: argparse.Namespace) -> int:
         (node,) = _nodes(conn, args.node)
         values: dict[str, Any] = {}
         for rule in rules:  # later entries win, as when a node starts with the file
-            if node_key_matches(rule.node_key, node) and not (
-                args.no_use_wildcard and rule.node_key == "/**"
-            ):
+            if node_key_matches(rule.node_key, node) and not (args.no_use_wildcard and rule.node_key == "/**"):
                 values.update(rule.values)
         if not values:
             raise ControlError(f"{args.file} has no parameters for {node}")

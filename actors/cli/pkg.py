@@ -36,9 +36,7 @@ def register(subparsers: Any) -> None:
         "create", help="write a package: a node, its graph, a test on the virtual clock, a README"
     )
     create_.add_argument("package_name", metavar="NAME", help="e.g. my_pkg (lower case, digits, _)")
-    create_.add_argument(
-        "--node-name", metavar="N", help="the node's name and module (default: NAME_node)"
-    )
+    create_.add_argument("--node-name", metavar="N", help="the node's name and module (default: NAME_node)")
     create_.add_argument(
         "--destination-directory",
         default=".",
@@ -68,9 +66,7 @@ def create(args: argparse.Namespace) -> None:
         raise ControlError(f"the node cannot be named as its package ({package!r}): choose another")
     root = Path(args.destination_directory) / package
     if root.exists():
-        raise ControlError(
-            f"{root} already exists: remove it, or choose another name or --destination-directory"
-        )
+        raise ControlError(f"{root} already exists: remove it, or choose another name or --destination-directory")
     spec = importlib.util.find_spec(package)
     if spec is not None:
         where = spec.origin or ", ".join(spec.submodule_search_locations or ())

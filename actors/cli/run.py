@@ -22,11 +22,18 @@ def register(groups: Any) -> None:
     parser.add_argument("--clock", choices=("wall", "virtual"), help="the runtime clock (default: wall)")
     parser.add_argument("--duration", type=float, help="stop after this many seconds of runtime clock")
     parser.add_argument("--graph", metavar="GRAPH.toml", help="run the script beside this graph's nodes")
-    parser.add_argument("--log-level", choices=("debug", "info", "warn", "error", "fatal"),
-                        help="the console's level (default: info)")
-    parser.add_argument("--with", dest="partners", metavar="PARTNER.py", action="append", default=[],
-                        help="another rclpy program to run beside it in the same runtime, e.g. its action "
-                             "server (quote it with its arguments: --with 'server.py ARGS'); repeatable")
+    parser.add_argument(
+        "--log-level", choices=("debug", "info", "warn", "error", "fatal"), help="the console's level (default: info)"
+    )
+    parser.add_argument(
+        "--with",
+        dest="partners",
+        metavar="PARTNER.py",
+        action="append",
+        default=[],
+        help="another rclpy program to run beside it in the same runtime, e.g. its action "
+        "server (quote it with its arguments: --with 'server.py ARGS'); repeatable",
+    )
     parser.add_argument("script", help="the rclpy program, e.g. talker.py")
     parser.add_argument("args", nargs=argparse.REMAINDER, help="the program's arguments")
     parser.set_defaults(func=_run)
@@ -36,6 +43,11 @@ def _run(args: argparse.Namespace) -> int:
     from actors.compat.launcher import run_script
 
     return run_script(
-        args.script, args.args, clock=args.clock, duration=args.duration, graph=args.graph,
-        log_level=args.log_level, partners=args.partners,
+        args.script,
+        args.args,
+        clock=args.clock,
+        duration=args.duration,
+        graph=args.graph,
+        log_level=args.log_level,
+        partners=args.partners,
     )

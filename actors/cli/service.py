@@ -16,16 +16,12 @@ def register(subparsers: Any) -> None:
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
 
     listing = add_verb(verbs, "list", list_services, help="list the graph's services")
-    listing.add_argument(
-        "-t", "--show-types", action="store_true", help="also show each service's type"
-    )
+    listing.add_argument("-t", "--show-types", action="store_true", help="also show each service's type")
     listing.add_argument(
         "--include-hidden-services", action="store_true", help="also list hidden services (an action's)"
     )
 
-    add_type_and_find(
-        verbs, "service", "rcl_interfaces/srv/ListParameters", lambda graph: graph.services
-    )
+    add_type_and_find(verbs, "service", "rcl_interfaces/srv/ListParameters", lambda graph: graph.services)
 
     caller = add_verb(verbs, "call", call, help="call a service and print the response")
     caller.add_argument("service", metavar="NAME")
@@ -37,9 +33,7 @@ def register(subparsers: Any) -> None:
         default="{}",
         help='request fields in YAML, e.g. "{a: 2, b: 3}" (default: all defaults)',
     )
-    caller.add_argument(
-        "--timeout", type=float, default=10.0, help="seconds to wait for the response (default 10)"
-    )
+    caller.add_argument("--timeout", type=float, default=10.0, help="seconds to wait for the response (default 10)")
 
 
 def list_services(args: argparse.Namespace) -> None:

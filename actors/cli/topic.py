@@ -21,20 +21,12 @@ def register(subparsers: Any) -> None:
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
 
     listing = add_verb(verbs, "list", list_topics, help="list the graph's topics")
-    listing.add_argument(
-        "-t", "--show-types", action="store_true", help="also show each topic's type"
-    )
-    listing.add_argument(
-        "--include-hidden-topics", action="store_true", help="also list hidden topics (an action's)"
-    )
+    listing.add_argument("-t", "--show-types", action="store_true", help="also show each topic's type")
+    listing.add_argument("--include-hidden-topics", action="store_true", help="also list hidden topics (an action's)")
 
-    info = add_verb(
-        verbs, "info", topic_info, help="a topic's type and its publishers and subscriptions"
-    )
+    info = add_verb(verbs, "info", topic_info, help="a topic's type and its publishers and subscriptions")
     info.add_argument("topic", metavar="TOPIC")
-    info.add_argument(
-        "-v", "--verbose", action="store_true", help="each endpoint: node, QoS, queue, drops"
-    )
+    info.add_argument("-v", "--verbose", action="store_true", help="each endpoint: node, QoS, queue, drops")
 
     add_type_and_find(verbs, "topic", "std_msgs/msg/String", lambda graph: graph.topics)
 
@@ -48,18 +40,12 @@ def register(subparsers: Any) -> None:
     )
     echo.add_argument("--once", action="store_true", help="print one message, then exit")
     echo.add_argument("--field", metavar="A.B", help="print only this field of each message")
-    echo.add_argument(
-        "--no-arr", action="store_true", help="print each array field's type and length instead"
-    )
-    echo.add_argument(
-        "--no-str", action="store_true", help="print each string field's length instead"
-    )
+    echo.add_argument("--no-arr", action="store_true", help="print each array field's type and length instead")
+    echo.add_argument("--no-str", action="store_true", help="print each string field's length instead")
 
     pub = add_verb(verbs, "pub", publish, help="publish a message, once or at a rate")
     pub.add_argument("topic", metavar="TOPIC")
-    pub.add_argument(
-        "type", metavar="TYPE", help="e.g. std_msgs/msg/Bool (must match an existing topic)"
-    )
+    pub.add_argument("type", metavar="TYPE", help="e.g. std_msgs/msg/Bool (must match an existing topic)")
     pub.add_argument(
         "values",
         metavar="VALUES",
@@ -67,24 +53,16 @@ def register(subparsers: Any) -> None:
         default="{}",
         help='field values in YAML, e.g. "data: true" (default: all defaults)',
     )
-    pub.add_argument(
-        "-r", "--rate", type=_positive, default=1.0, help="publishing rate in Hz (default 1)"
-    )
+    pub.add_argument("-r", "--rate", type=_positive, default=1.0, help="publishing rate in Hz (default 1)")
     pub.add_argument("-1", "--once", action="store_true", help="publish one message, then exit")
-    pub.add_argument(
-        "-t", "--times", type=int, default=0, help="publish this many messages, then exit"
-    )
+    pub.add_argument("-t", "--times", type=int, default=0, help="publish this many messages, then exit")
 
     hz = add_verb(verbs, "hz", topic_hz, help="print a topic's average rate every second")
     hz.add_argument("topic", metavar="TOPIC")
-    hz.add_argument(
-        "-w", "--window", type=int, default=10000, help="intervals averaged (default 10000)"
-    )
+    hz.add_argument("-w", "--window", type=int, default=10000, help="intervals averaged (default 10000)")
     bw = add_verb(verbs, "bw", topic_bw, help="print a topic's bandwidth every second")
     bw.add_argument("topic", metavar="TOPIC")
-    bw.add_argument(
-        "-w", "--window", type=int, default=100, help="messages averaged (default 100)"
-    )
+    bw.add_argument("-w", "--window", type=int, default=100, help="messages averaged (default 100)")
     for timed in (hz, bw):
         timed.add_argument(
             "--count",
@@ -238,8 +216,7 @@ def topic_hz(args: argparse.Namespace) -> None:
         std = math.sqrt(sum((x - mean) ** 2 for x in intervals) / n)
         print(f"average rate: {1.0 / mean if mean > 0 else 0.0:.3f}")
         print(
-            f"\tmin: {min(intervals):.3f}s max: {max(intervals):.3f}s "
-            f"std dev: {std:.5f}s window: {n + 1}",
+            f"\tmin: {min(intervals):.3f}s max: {max(intervals):.3f}s std dev: {std:.5f}s window: {n + 1}",
             flush=True,
         )
         return True
@@ -300,9 +277,7 @@ def _bytes_unit(rate: float) -> Callable[[float], str]:
     return lambda n: f"{n / 1_000_000:.2f} MB"
 
 
-def _each_second(
-    conn: Connection, take: Callable[[Sample], None], report: Callable[[], bool], count: int
-) -> None:
+def _each_second(conn: Connection, take: Callable[[Sample], None], report: Callable[[], bool], count: int) -> None:
     """Hand each streamed sample to ``take``; once a second of wall time, ``report()``.
 
     ``report`` returns whether it printed; after ``count`` printed reports

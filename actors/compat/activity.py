@@ -66,12 +66,14 @@ _LOOK_AGAIN = 0.005
 # Where a thread is parked, as its innermost Python frame shows it: waiting on a Condition (so in
 # Event.wait, Queue.get, Semaphore.acquire...), joining a thread, or a thread pool's worker idle in
 # its queue's get (a C call, so the worker's own frame is the innermost one).
-_PARKED = frozenset({
-    threading.Condition.wait.__code__,
-    # Thread.join waits in _wait_for_tstate_lock up to Python 3.12, in join itself (a C call) after.
-    getattr(threading.Thread, "_wait_for_tstate_lock", threading.Thread.join).__code__,
-    concurrent.futures.thread._worker.__code__,
-})
+_PARKED = frozenset(
+    {
+        threading.Condition.wait.__code__,
+        # Thread.join waits in _wait_for_tstate_lock up to Python 3.12, in join itself (a C call) after.
+        getattr(threading.Thread, "_wait_for_tstate_lock", threading.Thread.join).__code__,
+        concurrent.futures.thread._worker.__code__,
+    }
+)
 
 _STDLIB = sysconfig.get_paths()["stdlib"] + os.sep
 _ACTORS = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep  # the actors package
@@ -383,5 +385,9 @@ def _warn_holding(thread: threading.Thread, frame: FrameType) -> None:
     logging.getLogger(ROOT_LOGGER).warning(
         "virtual time waits for thread %r (started by the script; now in %s at %s:%d), which has "
         "not waited on rclpy for %g s of real time: virtual time goes on without it from now",
-        thread.name, frame.f_code.co_name, frame.f_code.co_filename, frame.f_lineno, HOLD_WARNING,
+        thread.name,
+        frame.f_code.co_name,
+        frame.f_code.co_filename,
+        frame.f_lineno,
+        HOLD_WARNING,
     )

@@ -27,10 +27,19 @@ from collections import deque
 from collections.abc import Awaitable, Callable, Coroutine
 from typing import Any, Protocol
 
-from actors.ros.actions import ActionCall, ActionClient, ActionServer
 from actors.core._actor import Actor, Entity
+from actors.ros.actions import ActionCall, ActionClient, ActionServer
 
-__all__ = ["Dispatcher", "ScriptActor", "WorkSource", "NativeWork", "NativeProxy", "NodeState", "ScriptNode", "SpinningExecutor"]
+__all__ = [
+    "Dispatcher",
+    "ScriptActor",
+    "WorkSource",
+    "NativeWork",
+    "NativeProxy",
+    "NodeState",
+    "ScriptNode",
+    "SpinningExecutor",
+]
 
 Handler = Callable[[], Coroutine[Any, Any, None]]
 

@@ -42,11 +42,11 @@ from actors.compat.rclpy.executors import ExternalShutdownException
 from actors.compat.rclpy.utilities import get_default_context, try_shutdown
 from actors.compat.script_state import ScriptArgv
 from actors.compat.session import Session
-from actors.ops.control import ControlEndpoint
 from actors.errors import ActorsError, GraphFileError, RosArgsError
 from actors.launch.graph_file import load_graph
-from actors.ros.log import INFO, LEVELS, configure_console
 from actors.launch.rosargs import parse
+from actors.ops.control import ControlEndpoint
+from actors.ros.log import INFO, LEVELS, configure_console
 
 __all__ = ["run_script"]
 
@@ -108,7 +108,7 @@ def run_script(
     )
     try:
         session.start()
-    except BaseException as exc:  # noqa: BLE001 - a graph node that fails to start
+    except BaseException as exc:
         print(f"[FATAL] {graph}: {_one_line(exc)}", file=sys.stderr)
         return 1
     others = [Partner(session, partner, arguments, _print_script_traceback) for partner, arguments in scripts]
@@ -233,7 +233,7 @@ def _run(path: Path, command_line: MutableSequence[str], stop: _Stop) -> int:
     except RosArgsError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    except BaseException as exc:  # noqa: BLE001 - the script's own error, shown as Python would
+    except BaseException as exc:
         _print_script_traceback(exc, path)
         return 1
     finally:

@@ -67,9 +67,7 @@ class OverlayFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
                     name=fullname,
                 ) from None
             return None
-        spec = importlib.machinery.ModuleSpec(
-            fullname, self, is_package=found.submodule_search_locations is not None
-        )
+        spec = importlib.machinery.ModuleSpec(fullname, self, is_package=found.submodule_search_locations is not None)
         spec.loader_state = real
         return spec
 

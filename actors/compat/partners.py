@@ -74,7 +74,7 @@ class Partner:
             self.failed = exc.code not in (None, 0)
         except (KeyboardInterrupt, ExternalShutdownException):
             self.failed = not self._stopping
-        except BaseException as exc:  # noqa: BLE001 - the partner's own error, shown as Python would
+        except BaseException as exc:
             self.failed = True
             self._report(exc, self.path)
 

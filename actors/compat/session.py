@@ -29,12 +29,12 @@ import anyio
 import anyio.abc
 import anyio.from_thread
 
-from actors.core.loops import precise_loop
 from actors.compat.activity import Activity, ScriptTimeLoop, Waiter, run_as
 from actors.compat.dispatch import Dispatcher
+from actors.core.loops import precise_loop
 from actors.launch.graph_file import GraphFile
-from actors.ros.node import Node
 from actors.launch.spawn import spawn_graph
+from actors.ros.node import Node
 from actors.runtime import Attachment, Runtime
 
 try:  # anyio tells its backend by sniffio when that is installed: a loop callback must say it
@@ -378,5 +378,5 @@ async def _as_coroutine(async_fn: Callable[..., Awaitable[T]], *args: Any) -> T:
 def _wait_quietly(done: Future[None]) -> None:
     try:
         done.result()
-    except BaseException:  # noqa: BLE001 - kept in Session.failure by _ended
+    except BaseException:
         pass

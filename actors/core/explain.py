@@ -59,9 +59,7 @@ class Explained(NamedTuple):
     unknown: bool = False
 
 
-def explain(
-    exc: msgspec.MsgspecError, type_: Any, data: Any, words: Words = MESSAGE_WORDS
-) -> Explained:
+def explain(exc: msgspec.MsgspecError, type_: Any, data: Any, words: Words = MESSAGE_WORDS) -> Explained:
     """What ``exc`` (raised converting or decoding ``data`` as ``type_``) means, in our words.
 
     ``data`` is the plain value that was converted (for bytes, their untyped
@@ -88,9 +86,7 @@ def explain(
         return Explained(path, f"expected {_a(got['want'], words)}, got {shown(value, words)}")
     if bound := _BOUND.match(text):
         limit = bound["limit"]
-        return Explained(
-            path, f"expected {_a(bound['want'], words)} {bound['op']} {limit}, got {shown(value, words)}"
-        )
+        return Explained(path, f"expected {_a(bound['want'], words)} {bound['op']} {limit}, got {shown(value, words)}")
     if length := _LENGTH.match(text):
         return Explained(path, _length_problem(length, value, words))
     if choice := _CHOICE.match(text):

@@ -79,12 +79,20 @@ _new_handle = object.__new__
 # The fields asyncio's Handle and TimerHandle have (3.11 to 3.13): call_at and call_soon fill them
 # in directly; a Python whose handles differ gets asyncio's own constructors.
 _LEAN_HANDLES = set(asyncio.Handle.__slots__) == {
-    "_callback", "_args", "_cancelled", "_loop", "_source_traceback", "_repr", "__weakref__", "_context"
+    "_callback",
+    "_args",
+    "_cancelled",
+    "_loop",
+    "_source_traceback",
+    "_repr",
+    "__weakref__",
+    "_context",
 } and set(asyncio.TimerHandle.__slots__) == {"_scheduled", "_when"}
 
 
-def _handle(cls: type, callback: Callable[..., object], args: tuple[Any, ...], loop: VirtualTimeLoop,
-            context: Any) -> Any:
+def _handle(
+    cls: type, callback: Callable[..., object], args: tuple[Any, ...], loop: VirtualTimeLoop, context: Any
+) -> Any:
     # Handle.__init__ outside debug mode, filled in by one call instead of two (TimerHandle's and Handle's).
     handle = _new_handle(cls)
     handle._callback = callback
@@ -205,8 +213,9 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
     def time(self) -> float:
         return self._now
 
-    def call_at(self, when: float, callback: Callable[..., object], *args: Any,
-                context: Any = None) -> asyncio.TimerHandle:
+    def call_at(
+        self, when: float, callback: Callable[..., object], *args: Any, context: Any = None
+    ) -> asyncio.TimerHandle:
         if self._debug or self._closed or when is None or not _LEAN_HANDLES:
             return super().call_at(when, callback, *args, context=context)
         # asyncio's call_at without its two constructors' debug questions and the closed

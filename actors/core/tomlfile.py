@@ -8,8 +8,8 @@ from typing import Any, TypeVar
 
 import msgspec
 
-from actors.errors import ActorsError
 from actors.core.explain import FILE_WORDS, explain
+from actors.errors import ActorsError
 
 __all__ = ["MAX_SECONDS", "load_toml"]
 
@@ -38,7 +38,9 @@ def load_toml(path: str | Path, type_: type[T], error: type[ActorsError]) -> T:
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
-        raise error(f"{path}: not UTF-8 text (byte {exc.start} is {raw[exc.start]:#04x}); TOML files are UTF-8") from None
+        raise error(
+            f"{path}: not UTF-8 text (byte {exc.start} is {raw[exc.start]:#04x}); TOML files are UTF-8"
+        ) from None
     try:
         data: Any = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

@@ -59,11 +59,11 @@ import msgspec
 
 from actors.core.tomlfile import MAX_SECONDS, load_toml
 from actors.errors import GraphFileError, InvalidNameError, RosArgsError
+from actors.launch.importing import find_graph, import_use
+from actors.launch.rosargs import load_params_file, node_key_matches, values_for
 from actors.ros.names import expand, fully_qualified, normalize_namespace, validate_node_name
 from actors.ros.node import Node
-from actors.launch.rosargs import load_params_file, node_key_matches, values_for
 from actors.system.supervisor import RestartType, Strategy, SupervisorPolicy
-from actors.launch.importing import find_graph, import_use
 
 __all__ = [
     "RuntimeSection",
@@ -176,17 +176,13 @@ def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
         raise GraphFileError(str(exc)) from None
     graph = load_toml(path, GraphFile, GraphFileError)
     if not graph.nodes:
-        raise GraphFileError(
-            f'{path}: no nodes: a graph needs at least one [[nodes]] table with use = "module:Class"'
-        )
+        raise GraphFileError(f'{path}: no nodes: a graph needs at least one [[nodes]] table with use = "module:Class"')
     if graph.transport is not None and graph.transport.config:
         # A Zenoh config file is found beside the graph file, as a relative path reads.
         config = Path(path).parent / graph.transport.config
         if not config.is_file():
             raise GraphFileError(f"{path}: transport.config: no such file: {config}")
-        graph = msgspec.structs.replace(
-            graph, transport=msgspec.structs.replace(graph.transport, config=str(config))
-        )
+        graph = msgspec.structs.replace(graph, transport=msgspec.structs.replace(graph.transport, config=str(config)))
     classes = []
     nodes = list(graph.nodes)
     taken: dict[str, int] = {}  # full node names known before start, and the entry that has each
@@ -272,8 +268,8 @@ def default_node_name(cls: type[Node]) -> str | None:
                 and isinstance(node.func.value, ast.Call)
                 and getattr(node.func.value.func, "id", None) == "super"
             ):
-                given = node.args[0] if node.args else next(
-                    (k.value for k in node.keywords if k.arg == "node_name"), None
+                given = (
+                    node.args[0] if node.args else next((k.value for k in node.keywords if k.arg == "node_name"), None)
                 )
                 if isinstance(given, ast.Constant) and isinstance(given.value, str):
                     return given.value

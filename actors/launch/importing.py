@@ -114,8 +114,7 @@ def _adopt(top: str, spec: importlib.machinery.ModuleSpec, place: Path) -> None:
     if loaded is not None:
         if _module_origin(loaded) != where:
             raise UseError(
-                f"{top} is already imported from {_module_origin(loaded)}; one process cannot also "
-                f"import {where}"
+                f"{top} is already imported from {_module_origin(loaded)}; one process cannot also import {where}"
             )
         return
     if str(place) not in sys.path:

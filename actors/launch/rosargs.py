@@ -62,11 +62,7 @@ _END = "--"
 _LOG_LEVELS = {**LEVELS, "unset": 0}
 _ENCLAVE = ("-e", "--enclave")
 _IGNORED_WITH_VALUE = ("--log-file-name", "--log-config-file")
-_FLAGS = {
-    f"--{state}-{what}-logs"
-    for state in ("enable", "disable")
-    for what in ("stdout", "rosout", "external-lib")
-}
+_FLAGS = {f"--{state}-{what}-logs" for state in ("enable", "disable") for what in ("stdout", "rosout", "external-lib")}
 
 
 @dataclass(frozen=True)
@@ -246,8 +242,7 @@ def _log_level(text: str) -> tuple[str, int]:
     number = _LOG_LEVELS.get(level.lower())
     if number is None:
         raise RosArgsError(
-            f"--ros-args: --log-level {text!r}: unknown level {level!r} "
-            f"(one of {', '.join(sorted(_LOG_LEVELS))})"
+            f"--ros-args: --log-level {text!r}: unknown level {level!r} (one of {', '.join(sorted(_LOG_LEVELS))})"
         )
     return logger, number
 
@@ -262,13 +257,12 @@ def _param_value(value: Any, where: str) -> Any:
         kinds = {bool if isinstance(v, bool) else type(v) for v in value}
         if len(kinds) == 1 and kinds <= {bool, int, float, str}:
             return value
-        raise ValueError(
-            f"{where}: a list parameter holds one type (bool, int, float or str), got {value!r}"
-        )
+        raise ValueError(f"{where}: a list parameter holds one type (bool, int, float or str), got {value!r}")
     raise ValueError(f"{where}: a parameter holds bool, int, float, str or a list of one of them, got {value!r}")
 
 
 # -- parameter files ---------------------------------------------------------------
+
 
 def load_params_file(path: str | Path) -> list[ParamRule]:
     """The rules of a ROS parameter file, in file order.
@@ -347,9 +341,7 @@ def node_key_matches(node_key: str, node_fqn: str) -> bool:
     if pattern is None:
         key = node_key if node_key.startswith("/") else "/" + node_key
         parts = re.split(r"(/\*\*|/\*)", key)
-        regex = "".join(
-            r"(/\w+)*" if p == "/**" else r"(/\w+)" if p == "/*" else re.escape(p) for p in parts
-        )
+        regex = "".join(r"(/\w+)*" if p == "/**" else r"(/\w+)" if p == "/*" else re.escape(p) for p in parts)
         pattern = _REGEX_CACHE[node_key] = re.compile(regex)
     return pattern.fullmatch(node_fqn) is not None
 

@@ -51,8 +51,8 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from actors.errors import MessageValidationError
-from actors.messages.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType
 from actors.messages._fields import MessageLayout, layout
+from actors.messages.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType
 
 __all__ = ["snapshotter", "checker", "adopter", "snapshot", "FLOAT32_MAX", "ALONE"]
 
@@ -117,8 +117,9 @@ def adopter(cls: type) -> Snapshot:
     return _made(_adopters, cls, "adopt", _identity)
 
 
-def _made(cache: dict[Any, Any], cls: type, mode: str, otherwise: Callable[[Any], Any],
-          trusted: Trusted = frozenset()) -> Any:
+def _made(
+    cache: dict[Any, Any], cls: type, mode: str, otherwise: Callable[[Any], Any], trusted: Trusted = frozenset()
+) -> Any:
     # The function of ``mode`` for ``cls`` from ``cache``, generated at its first use;
     # ``otherwise`` for a class that is not a generated interface type.
     key = (cls, trusted) if trusted else cls
@@ -259,7 +260,7 @@ def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy", trusted: T
         lines.append("    except _Invalid as exc:")
         lines.append("        raise _invalid(exc, ros_type) from None")
     source = "\n".join(lines) + "\n"
-    exec(compile(source, f"<{mode} of {top.ros_type}>", "exec"), names)  # noqa: S102 - our own source
+    exec(compile(source, f"<{mode} of {top.ros_type}>", "exec"), names)
     function: Snapshot = names[name]
     return function
 
@@ -288,12 +289,13 @@ def _scalar(ftype: FieldType, value: str, path: str) -> tuple[str, str]:
         return f"{value} is not True and {value} is not False", f"_bool({value}, {path!r})"
     if base in INTEGER_RANGES:
         low, high = INTEGER_RANGES[base]
-        return (f"type({value}) is not int or not {low} <= {value} <= {high}",
-                f"_int({value}, {path!r}, {base!r})")
+        return (f"type({value}) is not int or not {low} <= {value} <= {high}", f"_int({value}, {path!r}, {base!r})")
     if base in FLOATS:
         if base == "float32":
-            return (f"type({value}) is not float or not -FLOAT32_MAX <= {value} <= FLOAT32_MAX",
-                    f"_float({value}, {path!r}, True)")
+            return (
+                f"type({value}) is not float or not -FLOAT32_MAX <= {value} <= FLOAT32_MAX",
+                f"_float({value}, {path!r}, True)",
+            )
         return f"type({value}) is not float", f"_float({value}, {path!r}, False)"
     assert base in STRINGS, base
     bound = ftype.string_bound
@@ -314,8 +316,14 @@ def _float_list_test(ftype: FieldType, value: str) -> str:
     return test + f" and set(map(type, {value})) <= _FLOAT"
 
 
-def _array_call(ftype: FieldType, nested: MessageLayout | None, value: str, path: str, names: dict[str, Any],
-                floats: str = "_floats") -> str:
+def _array_call(
+    ftype: FieldType,
+    nested: MessageLayout | None,
+    value: str,
+    path: str,
+    names: dict[str, Any],
+    floats: str = "_floats",
+) -> str:
     # ``floats``: the helper a float array goes through (``_check_floats`` for a bare check).
     shape = (ftype.array, ftype.size, _spelled(ftype))
     if ftype.base in OCTETS:
@@ -488,7 +496,7 @@ def _ints(value: Any, path: str, shape: Shape, base: str) -> list[int]:
     items = _listed(value, path, shape)
     _sized(items, path, shape)
     low, high = INTEGER_RANGES[base]
-    if set(map(type, items)) <= _INT and (not items or low <= min(items) and max(items) <= high):
+    if set(map(type, items)) <= _INT and (not items or (low <= min(items) and max(items) <= high)):
         return items
     return _each(items, path, lambda item, where: _int(item, where, base))
 

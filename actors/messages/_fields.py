@@ -77,7 +77,9 @@ def layout(cls: type) -> MessageLayout:
     if [field.name for field in spec.fields] != list(annotations):
         raise InterfaceError(f"{ros_type}: the class's fields differ from its definition")
     fields = tuple(
-        FieldLayout(field.name, field.type, _nested(annotations[field.name], ros_type) if field.type.is_nested else None)
+        FieldLayout(
+            field.name, field.type, _nested(annotations[field.name], ros_type) if field.type.is_nested else None
+        )
         for field in spec.fields
     )
     if not fields:

@@ -44,8 +44,8 @@ from types import FrameType
 from typing import Any, TypeVar
 
 from actors.errors import CdrError
-from actors.messages.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType
 from actors.messages._fields import MessageLayout, layout
+from actors.messages.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType
 
 __all__ = ["HEADER", "encode", "decode", "min_size"]
 
@@ -56,9 +56,19 @@ HEADER = b"\x00\x01\x00\x00"
 
 # ROS primitive -> struct code (also the array typecode, bool aside), size in bytes.
 _PRIMITIVES: dict[str, tuple[str, int]] = {
-    "bool": ("?", 1), "byte": ("B", 1), "char": ("B", 1), "uint8": ("B", 1), "int8": ("b", 1),
-    "int16": ("h", 2), "uint16": ("H", 2), "int32": ("i", 4), "uint32": ("I", 4),
-    "int64": ("q", 8), "uint64": ("Q", 8), "float32": ("f", 4), "float64": ("d", 8),
+    "bool": ("?", 1),
+    "byte": ("B", 1),
+    "char": ("B", 1),
+    "uint8": ("B", 1),
+    "int8": ("b", 1),
+    "int16": ("h", 2),
+    "uint16": ("H", 2),
+    "int32": ("i", 4),
+    "uint32": ("I", 4),
+    "int64": ("q", 8),
+    "uint64": ("Q", 8),
+    "float32": ("f", 4),
+    "float64": ("d", 8),
 }
 assert all(array(code).itemsize == size for code, size in _PRIMITIVES.values() if code != "?")
 _FLOAT32_MAX = 3.4028234663852886e38
@@ -106,7 +116,7 @@ def decode(data: bytes | bytearray | memoryview, cls: type[T]) -> T:
         raise CdrError(f"{layout(cls).ros_type}: not plain CDR (the header is {head}, expected 00 01 00 00)")
     try:
         return decoders[data[1]](data, 4)[0]  # header byte 1: 0 big-endian, 1 little-endian
-    except Exception as exc:  # noqa: BLE001 - every failure of generated code becomes one CdrError
+    except Exception as exc:
         raise _decode_error(layout(cls), data, exc) from None
 
 
@@ -388,8 +398,12 @@ def _encode_array(src: _Source, type_: FieldType, value: str, nested: MessageLay
 
 def _compile_decoder(lay: MessageLayout, endian: str, *, top: bool) -> Callable[..., Any]:
     src = _Source(lay, top, "pos += {}", "pos += (4 - pos) & {}")
-    src.namespace.update(U32=struct.Struct(endian + "I").unpack_from, ST=_sequence_struct, endian=endian,
-                         swap=(endian == "<") != _LITTLE_HOST)
+    src.namespace.update(
+        U32=struct.Struct(endian + "I").unpack_from,
+        ST=_sequence_struct,
+        endian=endian,
+        swap=(endian == "<") != _LITTLE_HOST,
+    )
     constructor = _decode_fields(src, lay, "$")
     _flush_decode(src)
     for token, value in src.values.items():
@@ -475,9 +489,14 @@ def _decode_string(src: _Source, type_: FieldType, target: str, depth: int) -> N
         src.emit("if end > len(d): raise _Bad(f'a wstring of {n} characters, {len(d) - pos} bytes left')", depth)
         src.emit("a = array('I'); a.frombytes(d[pos:end])", depth)
         src.emit("if swap: a.byteswap()", depth)
-        src.emit(f"{target} = array('H', a).tobytes().decode('utf-16-le' if {_LITTLE_HOST} else 'utf-16-be'); pos = end", depth)
+        src.emit(
+            f"{target} = array('H', a).tobytes().decode('utf-16-le' if {_LITTLE_HOST} else 'utf-16-be'); pos = end",
+            depth,
+        )
     if type_.string_bound is not None:
-        src.emit(f"if len({target}) > {type_.string_bound}: raise _Bad('longer than its bound {type_.string_bound}')", depth)
+        src.emit(
+            f"if len({target}) > {type_.string_bound}: raise _Bad('longer than its bound {type_.string_bound}')", depth
+        )
     src.phase = None
 
 
@@ -596,7 +615,7 @@ def _problem(lay: MessageLayout, value: Any, path: str) -> tuple[str, str] | Non
             found = _item_problem(type_, field.nested, item, where)
         elif type_.base in OCTETS and not isinstance(item, (bytes, bytearray, memoryview)):
             found = where, f"expected bytes, got {type(item).__name__}"
-        elif not hasattr(item, "__len__") or isinstance(item, (str, bytes)) and type_.base not in OCTETS:
+        elif not hasattr(item, "__len__") or (isinstance(item, (str, bytes)) and type_.base not in OCTETS):
             found = where, f"expected a sequence, got {type(item).__name__}"
         elif type_.array == "fixed" and len(item) != type_.size:
             found = where, f"expected exactly {type_.size} items, got {len(item)}"

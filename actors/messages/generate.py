@@ -35,12 +35,12 @@ from typing import Any
 from actors.errors import IdlError, InterfaceError
 from actors.messages.idl import (
     FLOATS,
-    ActionSpec,
     INTEGER_RANGES,
     OCTETS,
     PACKAGE_NAME,
     STRINGS,
     TYPE_NAME,
+    ActionSpec,
     FieldType,
     MessageSpec,
     ServiceSpec,
@@ -54,12 +54,14 @@ __all__ = ["generate", "render", "render_module"]
 
 # byte and char share uint8's alias: one range, one name.
 _ALIAS = {name: f"_{name}" for name in INTEGER_RANGES} | {"byte": "_uint8", "char": "_uint8"}
-_ZERO: dict[str, Any] = {"bool": False, "string": "", "wstring": ""} | dict.fromkeys(
-    FLOATS, 0.0
-) | dict.fromkeys(INTEGER_RANGES, 0)
-_PYTHON_TYPE = {"bool": "bool", "string": "str", "wstring": "str"} | dict.fromkeys(
-    FLOATS, "float"
-) | dict.fromkeys(INTEGER_RANGES, "int")
+_ZERO: dict[str, Any] = (
+    {"bool": False, "string": "", "wstring": ""} | dict.fromkeys(FLOATS, 0.0) | dict.fromkeys(INTEGER_RANGES, 0)
+)
+_PYTHON_TYPE = (
+    {"bool": "bool", "string": "str", "wstring": "str"}
+    | dict.fromkeys(FLOATS, "float")
+    | dict.fromkeys(INTEGER_RANGES, "int")
+)
 
 
 def render_module(
@@ -96,7 +98,11 @@ def _action_names(spec: Any) -> list[str]:
     """Every Python name an action's module defines for ``spec``."""
     services = (spec.send_goal, spec.get_result)
     messages = (spec.goal, spec.result, spec.feedback, spec.feedback_message)
-    return [spec.name, *(m.name for m in messages), *(s.name + x for s in services for x in ("", "_Request", "_Response"))]
+    return [
+        spec.name,
+        *(m.name for m in messages),
+        *(s.name + x for s in services for x in ("", "_Request", "_Response")),
+    ]
 
 
 def _dependencies_first(local: Mapping[str, MessageSpec]) -> list[MessageSpec]:
@@ -144,16 +150,10 @@ class _Writer:
             f"    __ros_type__: ClassVar[str] = {_literal(spec.ros_type)}",
             f"    __ros_definition__: ClassVar[str] = {_text_literal(spec.text)}",
         ]
-        body += [
-            f"    {c.name}: ClassVar[{_PYTHON_TYPE[c.type.base]}] = {_literal(c.value)}"
-            for c in spec.constants
-        ]
+        body += [f"    {c.name}: ClassVar[{_PYTHON_TYPE[c.type.base]}] = {_literal(c.value)}" for c in spec.constants]
         if spec.fields:
             body.append("")
-        body += [
-            f"    {f.name}: {self._annotation(f.type)} = {self._default(f.type, f.default)}"
-            for f in spec.fields
-        ]
+        body += [f"    {f.name}: {self._annotation(f.type)} = {self._default(f.type, f.default)}" for f in spec.fields]
         self.classes.append("\n".join(body))
 
     def service(self, spec: ServiceSpec) -> None:
@@ -219,8 +219,10 @@ class _Writer:
             if alias in self.aliases
         ]
         typing_names = "Annotated, ClassVar" if self.annotated or aliases else "ClassVar"
-        imports = [_import(module, sorted(n if n == a else f"{n} as {a}" for n, a in names.items()))
-                   for module, names in sorted(self.imports.items())]
+        imports = [
+            _import(module, sorted(n if n == a else f"{n} as {a}" for n, a in names.items()))
+            for module, names in sorted(self.imports.items())
+        ]
         sections = [
             f'"""Generated from {sources} by `python -m actors interface generate`; do not edit."""',
             f"from typing import {typing_names}\n\nimport msgspec",

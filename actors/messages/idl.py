@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from actors.errors import IdlError, InterfaceError
+from actors.errors import IdlError
 
 __all__ = [
     "Constant",
@@ -207,9 +207,7 @@ class ActionSpec:
         return f"{self.pkg}/action/{self.name}"
 
 
-def parse_message(
-    text: str, *, path: str | Path = "<string>", pkg: str, name: str, kind: str = "msg"
-) -> MessageSpec:
+def parse_message(text: str, *, path: str | Path = "<string>", pkg: str, name: str, kind: str = "msg") -> MessageSpec:
     """Parse the text of a ``.msg`` file of package ``pkg``.
 
     ``path`` only names the source in errors; ``kind`` is the ROS name's
@@ -248,9 +246,7 @@ def parse_action(text: str, *, path: str | Path = "<string>", pkg: str, name: st
     where = {"path": str(path), "pkg": pkg, "kind": "action"}
     parts = [
         _parse_lines(section, offset, name=f"{name}_{part}", **where)
-        for part, (section, offset) in zip(
-            ("Goal", "Result", "Feedback"), _sections(lines, 3, str(path), "an action")
-        )
+        for part, (section, offset) in zip(("Goal", "Result", "Feedback"), _sections(lines, 3, str(path), "an action"))
     ]
     goal, result, feedback = parts
     uuid = "unique_identifier_msgs/UUID goal_id"
@@ -316,9 +312,7 @@ def _lines(text: str) -> list[str]:
     return text.replace("\r\n", "\n").rstrip("\n").split("\n") if text.strip() else []
 
 
-def _parse_lines(
-    lines: list[str], offset: int, *, path: str, pkg: str, name: str, kind: str
-) -> MessageSpec:
+def _parse_lines(lines: list[str], offset: int, *, path: str, pkg: str, name: str, kind: str) -> MessageSpec:
     fields: list[Field] = []
     constants: list[Constant] = []
     seen: set[str] = set()
@@ -380,9 +374,7 @@ def _parse_type(text: str, pkg: str, where: tuple[str, int]) -> FieldType:
     return FieldType(parts[1], pkg=parts[0], kind=kind, **bounds)
 
 
-def _parse_field(
-    type_: FieldType, name: str, default: str, number: int, where: tuple[str, int]
-) -> Field:
+def _parse_field(type_: FieldType, name: str, default: str, number: int, where: tuple[str, int]) -> Field:
     if not _FIELD_NAME.fullmatch(name):
         raise IdlError(*where, f"invalid field name {name!r} (lowercase, digits, single '_')")
     if keyword.iskeyword(name) or name in _RESERVED:
@@ -393,9 +385,7 @@ def _parse_field(
     return Field(name, type_, value, number)
 
 
-def _parse_constant(
-    type_: FieldType, match: re.Match[str], number: int, where: tuple[str, int]
-) -> Constant:
+def _parse_constant(type_: FieldType, match: re.Match[str], number: int, where: tuple[str, int]) -> Constant:
     name, value = match.group("name", "value")
     if not _CONSTANT_NAME.fullmatch(name):
         raise IdlError(*where, f"invalid constant name {name!r} (uppercase, digits, '_')")

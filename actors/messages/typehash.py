@@ -22,16 +22,31 @@ import hashlib
 import json
 from typing import Any
 
-from actors.messages.idl import FieldType
 from actors.messages._fields import MessageLayout, layout
+from actors.messages.idl import FieldType
 
 __all__ = ["FIELD_TYPE_IDS", "type_description", "type_hash"]
 
 #: type_description_interfaces/msg/FieldType's ids of the single (non-array) types.
 FIELD_TYPE_IDS: dict[str, int] = {
-    "nested": 1, "int8": 2, "uint8": 3, "char": 3, "int16": 4, "uint16": 5, "int32": 6, "uint32": 7,
-    "int64": 8, "uint64": 9, "float32": 10, "float64": 11, "bool": 15, "byte": 16, "string": 17,
-    "wstring": 18, "bounded string": 21, "bounded wstring": 22,
+    "nested": 1,
+    "int8": 2,
+    "uint8": 3,
+    "char": 3,
+    "int16": 4,
+    "uint16": 5,
+    "int32": 6,
+    "uint32": 7,
+    "int64": 8,
+    "uint64": 9,
+    "float32": 10,
+    "float64": 11,
+    "bool": 15,
+    "byte": 16,
+    "string": 17,
+    "wstring": 18,
+    "bounded string": 21,
+    "bounded wstring": 22,
 }
 # What an array kind adds to its element's id.
 _ARRAY_OFFSETS = {None: 0, "fixed": 48, "bounded": 96, "unbounded": 144}
@@ -75,9 +90,14 @@ def _describe(type_: type, known: dict[str, Description]) -> Description:
     """``type_``'s own description; those of every type it uses go into ``known``."""
     if hasattr(type_, "Goal"):
         impl = type_.Impl
-        parts = [("goal", type_.Goal), ("result", type_.Result), ("feedback", type_.Feedback),
-                 ("send_goal_service", impl.SendGoalService), ("get_result_service", impl.GetResultService),
-                 ("feedback_message", impl.FeedbackMessage)]
+        parts = [
+            ("goal", type_.Goal),
+            ("result", type_.Result),
+            ("feedback", type_.Feedback),
+            ("send_goal_service", impl.SendGoalService),
+            ("get_result_service", impl.GetResultService),
+            ("feedback_message", impl.FeedbackMessage),
+        ]
         return _composite(type_.__ros_type__, parts, known)
     if hasattr(type_, "Request"):
         return _service(type_, known)
@@ -111,8 +131,11 @@ def _service(service: type, known: dict[str, Description]) -> Description:
     }
     _message(layout(service.Request), known)
     _message(layout(service.Response), known)
-    fields = [_field("request_message", 1, 0, 0, request), _field("response_message", 1, 0, 0, response),
-              _field("event_message", 1, 0, 0, event)]
+    fields = [
+        _field("request_message", 1, 0, 0, request),
+        _field("response_message", 1, 0, 0, response),
+        _field("event_message", 1, 0, 0, event),
+    ]
     known[name] = {"type_name": name, "fields": fields}
     return known[name]
 
@@ -145,5 +168,10 @@ def _field_type(type_: FieldType) -> tuple[int, int, int, str]:
 def _field(name: str, type_id: int, capacity: int, string_capacity: int, nested: str) -> Description:
     return {
         "name": name,
-        "type": {"type_id": type_id, "capacity": capacity, "string_capacity": string_capacity, "nested_type_name": nested},
+        "type": {
+            "type_id": type_id,
+            "capacity": capacity,
+            "string_capacity": string_capacity,
+            "nested_type_name": nested,
+        },
     }

@@ -225,11 +225,7 @@ class Connection:
         limits = self.pool.limits
         if self._frame_since is not None and now - self._frame_since > limits.frame_timeout:
             return True  # a frame left half-sent
-        if (
-            not self.streaming
-            and self._sending_since is not None
-            and now - self._sending_since > limits.frame_timeout
-        ):
+        if not self.streaming and self._sending_since is not None and now - self._sending_since > limits.frame_timeout:
             return True  # a reply left unread
         idle = self._idle_for(now)
         return idle is not None and idle > limits.idle_timeout
@@ -332,9 +328,7 @@ class ConnectionPool:
             self._refuse(conn, f"the graph has too many open files ({conn.fileno()}) to watch one more")
             return True
         if len(self.connections) + self._starting >= self.limits.connections and not self._evict_one():
-            self._refuse(
-                conn, f"the graph is busy: {self.limits.connections} connections are open; try again"
-            )
+            self._refuse(conn, f"the graph is busy: {self.limits.connections} connections are open; try again")
             return True
         self._numbers += 1
         self._starting += 1
@@ -397,7 +391,7 @@ class ConnectionPool:
         try:
             with connection.scope:
                 await self._serve(connection)
-        except Exception as exc:  # noqa: BLE001 - one connection's failure is its own
+        except Exception as exc:
             self._log(f"control endpoint: connection {number} failed: {type(exc).__name__}: {exc}")
         finally:
             conn.close()

@@ -60,15 +60,15 @@ import msgspec
 
 from actors import codec
 from actors.core._actor import Actor, CallbackFailed
-from actors.core.tomlfile import MAX_SECONDS
-from actors.ops._connections import Connection, ConnectionLimits, ConnectionPool, ConnectionStats
-from actors.errors import ActorsError, ControlError, InterfaceError
 from actors.core.explain import explain
-from actors.system.introspection import NodeInfo, ServiceInfo, TopicInfo
+from actors.core.tomlfile import MAX_SECONDS
+from actors.errors import ActorsError, ControlError, InterfaceError
+from actors.ops._connections import Connection, ConnectionLimits, ConnectionPool, ConnectionStats
 from actors.ros.names import expand
-from actors.services import Client
-from actors.ros.topics import Publisher, Subscription, type_name
 from actors.ros.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from actors.ros.topics import Publisher, Subscription, type_name
+from actors.services import Client
+from actors.system.introspection import NodeInfo, ServiceInfo, TopicInfo
 
 if TYPE_CHECKING:
     from actors.ops.doctor import LagMonitor, Report
@@ -487,7 +487,7 @@ class _Session:
             return frame(Reply(ok=False, error=str(exc)))
         except (ActorsError, TimeoutError) as exc:
             return frame(Reply(ok=False, error=str(exc)))
-        except Exception as exc:  # noqa: BLE001 - a bug here must not end the graph
+        except Exception as exc:
             self.connection.report(f"{type(request).__name__} failed: {type(exc).__name__}: {exc}")
             self.runtime.logger.debug(f"control request {request!r} failed", exc_info=exc)
             return frame(Reply(ok=False, error=f"internal error in the graph: {exc!r}"))
@@ -591,8 +591,8 @@ class _Session:
         info = self.runtime.graph.topic(name)
         pubs = info.publishers if info is not None else ()
         # (Not for `hz`, content=False: a replayed history would look like a burst.)
-        latched = request.content and bool(pubs) and all(
-            p.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in pubs
+        latched = (
+            request.content and bool(pubs) and all(p.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in pubs)
         )
         qos = QoSProfile(
             depth=max(1, request.depth),
@@ -619,21 +619,15 @@ class _Session:
             raise ControlError(f"unknown service {name}")
         srv_type = codec.get_type(request.type)
         if srv_type is not server.srv_type:
-            raise ControlError(
-                f"service {name} has type {type_name(server.srv_type)}, not {request.type}"
-            )
+            raise ControlError(f"service {name} has type {type_name(server.srv_type)}, not {request.type}")
         client = self._clients.get(name)
         if client is None:
             client = Client(self, name, srv_type, self.runtime.services)  # type: ignore[arg-type]
             self._clients[name] = client
         try:
-            return await client.call(
-                codec.convert(request.request, srv_type.Request), timeout=request.timeout
-            )
+            return await client.call(codec.convert(request.request, srv_type.Request), timeout=request.timeout)
         except TimeoutError:
-            raise TimeoutError(
-                f"service {name} did not answer within {request.timeout:g} s"
-            ) from None
+            raise TimeoutError(f"service {name} did not answer within {request.timeout:g} s") from None
 
     async def _play(self, request: Play) -> dict[str, int]:
         from actors.recording.player import play
@@ -655,8 +649,13 @@ class _Session:
 
             tg.start_soon(until_hang_up)
             played = await play(
-                self.runtime, bag, topics=request.topics, remap=request.remap, rate=request.rate,
-                clock_hz=request.clock, loop=request.loop,
+                self.runtime,
+                bag,
+                topics=request.topics,
+                remap=request.remap,
+                rate=request.rate,
+                clock_hz=request.clock,
+                loop=request.loop,
             )
             tg.cancel_scope.cancel()
         return {"played": played}
@@ -700,9 +699,7 @@ class ControlEndpoint:
                 raise ControlError("this platform has no Unix sockets")
             sock, path = _bind(runtime.name)
         except (ControlError, OSError) as exc:
-            runtime.logger.warning(
-                f"no control endpoint, the command line cannot reach this graph: {exc}"
-            )
+            runtime.logger.warning(f"no control endpoint, the command line cannot reach this graph: {exc}")
             task_status.started()
             return
         inode = -1  # the socket file is ours only once we know its inode

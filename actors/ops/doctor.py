@@ -46,9 +46,9 @@ import anyio
 import msgspec
 
 from actors.ops._connections import ConnectionStats
-from actors.system.introspection import ActionInfo, EndpointInfo, NodeInfo, TopicInfo
 from actors.ros.names import is_hidden, is_hidden_name
 from actors.ros.qos import qos_incompatibility
+from actors.system.introspection import ActionInfo, EndpointInfo, NodeInfo, TopicInfo
 
 if TYPE_CHECKING:
     from actors.runtime import Runtime
@@ -104,9 +104,7 @@ class Report(msgspec.Struct, frozen=True, kw_only=True):
         return [check for check in self.checks if check.failed(include_warnings)]
 
 
-def diagnose(
-    runtime: Runtime, monitor: LagMonitor | None = None, control: ConnectionStats | None = None
-) -> Report:
+def diagnose(runtime: Runtime, monitor: LagMonitor | None = None, control: ConnectionStats | None = None) -> Report:
     """Run every check on ``runtime``'s graph now.
 
     The loop-lag check runs only with a ``monitor`` (the control endpoint starts
@@ -133,9 +131,7 @@ def diagnose(
         checks.append(_lag(events))
     if control is not None:
         checks.append(_control(control))
-    missing = [
-        f"{name} is not installed" for name in _REQUIRED if versions[name] == "not installed"
-    ]
+    missing = [f"{name} is not installed" for name in _REQUIRED if versions[name] == "not installed"]
     checks.append(Check(name="required packages", passed=not missing, reasons=tuple(missing)))
     return Report(
         graph=runtime.name,
@@ -168,11 +164,7 @@ def _one_sided(topics: list[TopicInfo], *, publishers: bool) -> Check:
         have, lack = (pubs, subs) if publishers else (subs, pubs)
         if have and not lack:
             nodes = ", ".join(sorted({e.node for e in have}))
-            what = (
-                "published by {} but nobody subscribes"
-                if publishers
-                else "subscribed by {} but nobody publishes"
-            )
+            what = "published by {} but nobody subscribes" if publishers else "subscribed by {} but nobody publishes"
             reasons.append(f"{topic.name} ({topic.type}) is {what.format(nodes)}")
     name = "publishers without subscribers" if publishers else "subscriptions without publishers"
     return Check(name=name, passed=True, warnings=tuple(reasons))
@@ -254,10 +246,7 @@ def _node_health(nodes: list[NodeInfo]) -> Check:
     reasons = []
     for node in nodes:
         if node.crashes or node.state in ("crashed", "restarting"):
-            text = (
-                f"{node.name} is {node.state} after {node.crashes} crash(es) "
-                f"and {node.restarts} restart(s)"
-            )
+            text = f"{node.name} is {node.state} after {node.crashes} crash(es) and {node.restarts} restart(s)"
             if node.last_error:
                 text += f"; last error: {node.last_error}"
             reasons.append(text)
@@ -368,9 +357,7 @@ class LagMonitor:
     reads; it stops with the task.
     """
 
-    def __init__(
-        self, runtime: Runtime, *, threshold: float = 0.05, period: float = 0.02, keep: int = 50
-    ) -> None:
+    def __init__(self, runtime: Runtime, *, threshold: float = 0.05, period: float = 0.02, keep: int = 50) -> None:
         self.threshold = threshold
         self.period = period
         self.events: deque[LagEvent] = deque(maxlen=keep)
@@ -385,9 +372,7 @@ class LagMonitor:
         clock = self._runtime.clock
         self._tick = clock.monotonic()
         self._loop_thread = threading.get_ident()
-        thread = threading.Thread(
-            target=self._watch, name=f"actors lag monitor ({self._runtime.name})", daemon=True
-        )
+        thread = threading.Thread(target=self._watch, name=f"actors lag monitor ({self._runtime.name})", daemon=True)
         waited = _CpuWait()
         try:
             thread.start()
@@ -401,9 +386,7 @@ class LagMonitor:
                     if lag - (waited() - mark) <= self.threshold:
                         # Preempted: the callback would have finished in time on a free CPU.
                         node, callback = "", ""
-                    self.events.append(
-                        LagEvent(stamp=clock.now_ns() / 1e9, lag=lag, node=node, callback=callback)
-                    )
+                    self.events.append(LagEvent(stamp=clock.now_ns() / 1e9, lag=lag, node=node, callback=callback))
                 # Tick first: the watchdog must not pin the next stall on this one's suspect.
                 self._tick = now
                 self._suspect = None
@@ -436,11 +419,7 @@ class LagMonitor:
         if latest is None:
             return None
         entity = latest[2]
-        fn = (
-            getattr(entity, "callback", None)
-            or getattr(entity, "handler", None)
-            or getattr(entity, "fn", None)
-        )
+        fn = getattr(entity, "callback", None) or getattr(entity, "handler", None) or getattr(entity, "fn", None)
         if not self._executing(fn):
             return None  # an async callback that awaits: something else holds the loop
         return latest[1], getattr(fn, "__qualname__", None) or type(entity).__name__

@@ -59,7 +59,9 @@ class BagWriter:
         if schema is None:
             schema = self._schemas[ros_type] = self.mcap.add_schema(ros_type, "ros2msg", definition.encode())
         channel = self.mcap.add_channel(
-            name, schema, "cdr",
+            name,
+            schema,
+            "cdr",
             {"offered_qos_profiles": qos_profiles_yaml(offers), "topic_type_hash": type_hash},
         )
         self._topics[channel] = TopicRecord(name=name, type=ros_type, offered_qos=tuple(offers), type_hash=type_hash)

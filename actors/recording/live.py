@@ -34,10 +34,10 @@ import anyio.abc
 
 from actors import codec
 from actors.errors import ActorsError
-from actors.ros.names import is_hidden_name
 from actors.recording.tap import Tap, TapOwner, TapSet, latched
-from actors.services import Client, Service
+from actors.ros.names import is_hidden_name
 from actors.ros.topics import type_name
+from actors.services import Client, Service
 
 if TYPE_CHECKING:
     from actors.runtime import Runtime
@@ -118,8 +118,13 @@ class FoxgloveView:
             capabilities = [fox.websocket.Capability.Time, fox.websocket.Capability.Services]
             try:
                 self._server = fox.start_server(
-                    name="actors", host=self.host, port=self.port, capabilities=capabilities,
-                    supported_encodings=["cdr"], context=self._context, server_listener=self,
+                    name="actors",
+                    host=self.host,
+                    port=self.port,
+                    capabilities=capabilities,
+                    supported_encodings=["cdr"],
+                    context=self._context,
+                    server_listener=self,
                 )
             except Exception as exc:  # the SDK raises RuntimeError for an address in use
                 raise ActorsError(f"--foxglove: cannot serve on {self.host}:{self.port}: {exc}") from None
@@ -206,7 +211,10 @@ class FoxgloveView:
             fox = self._fox
             schema = fox.Schema(name=tap.ros_type, encoding="ros2msg", data=tap.definition.encode())
             tap.channel = fox.Channel(
-                tap.topic_name, schema=schema, message_encoding="cdr", context=self._context,
+                tap.topic_name,
+                schema=schema,
+                message_encoding="cdr",
+                context=self._context,
                 metadata={"topic_type_hash": tap.type_hash},
             )
 
@@ -291,4 +299,3 @@ class FoxgloveView:
         except concurrent.futures.TimeoutError:
             future.cancel()
             raise TimeoutError(f"service {client.service_name} did not answer within {CALL_TIMEOUT:g} s") from None
-

@@ -130,7 +130,10 @@ class McapWriter:
         """Register a channel (a topic with its schema, ``cdr`` encoding, metadata); returns its id."""
         channel_id = len(self._channels) + 1
         channel = self._records.Channel(
-            id=channel_id, topic=topic, message_encoding=encoding, schema_id=schema_id,
+            id=channel_id,
+            topic=topic,
+            message_encoding=encoding,
+            schema_id=schema_id,
             metadata=dict(metadata),
         )
         self._channels[channel_id] = channel
@@ -183,9 +186,12 @@ class McapWriter:
         r = self._records
         builder = self._builder_class()
         r.Chunk(
-            compression=self._compression, data=compressed,
-            message_start_time=self._chunk_start, message_end_time=self._chunk_end,
-            uncompressed_crc=zlib.crc32(data), uncompressed_size=len(data),
+            compression=self._compression,
+            data=compressed,
+            message_start_time=self._chunk_start,
+            message_end_time=self._chunk_end,
+            uncompressed_crc=zlib.crc32(data),
+            uncompressed_size=len(data),
         ).write(builder)
         chunk_record = builder.end()
         start = self._offset
@@ -199,12 +205,19 @@ class McapWriter:
             self.lost += self._chunk_messages
             self._new_chunk()
             return
-        self._chunk_indexes.append(r.ChunkIndex(
-            message_start_time=self._chunk_start, message_end_time=self._chunk_end,
-            chunk_start_offset=start, chunk_length=len(chunk_record),
-            message_index_offsets=offsets, message_index_length=len(out) - len(chunk_record),
-            compression=self._compression, compressed_size=len(compressed), uncompressed_size=len(data),
-        ))
+        self._chunk_indexes.append(
+            r.ChunkIndex(
+                message_start_time=self._chunk_start,
+                message_end_time=self._chunk_end,
+                chunk_start_offset=start,
+                chunk_length=len(chunk_record),
+                message_index_offsets=offsets,
+                message_index_length=len(out) - len(chunk_record),
+                compression=self._compression,
+                compressed_size=len(compressed),
+                uncompressed_size=len(data),
+            )
+        )
         if not self._messages:
             self._start = self._chunk_start
         self._end = self._chunk_end
@@ -300,31 +313,42 @@ class McapWriter:
                 begin = summary.count
                 for record in records:
                     record.write(summary)
-                offsets.append(r.SummaryOffset(
-                    group_opcode=opcode, group_start=summary_start + begin, group_length=summary.count - begin,
-                ))
+                offsets.append(
+                    r.SummaryOffset(
+                        group_opcode=opcode,
+                        group_start=summary_start + begin,
+                        group_length=summary.count - begin,
+                    )
+                )
 
         if with_summary:
             from mcap.opcode import Opcode
 
             group(Opcode.SCHEMA, list(self._schemas.values()))
             group(Opcode.CHANNEL, list(self._channels.values()))
-            group(Opcode.STATISTICS, [r.Statistics(
-                message_count=self._messages, schema_count=len(self._schemas),
-                channel_count=len(self._channels), attachment_count=0,
-                metadata_count=len(self._metadata), chunk_count=len(self._chunk_indexes),
-                message_start_time=self._start, message_end_time=self._end,
-                channel_message_counts={k: v for k, v in self._counts.items() if v},
-            )])
+            group(
+                Opcode.STATISTICS,
+                [
+                    r.Statistics(
+                        message_count=self._messages,
+                        schema_count=len(self._schemas),
+                        channel_count=len(self._channels),
+                        attachment_count=0,
+                        metadata_count=len(self._metadata),
+                        chunk_count=len(self._chunk_indexes),
+                        message_start_time=self._start,
+                        message_end_time=self._end,
+                        channel_message_counts={k: v for k, v in self._counts.items() if v},
+                    )
+                ],
+            )
             group(Opcode.CHUNK_INDEX, self._chunk_indexes)
             group(Opcode.METADATA_INDEX, metadata_indexes)
         offset_start = summary_start + summary.count
         for offset in offsets:
             offset.write(summary)
         body = summary.end()
-        footer_fields = struct.pack(
-            "<BQQQ", 0x02, 8 + 8 + 4, summary_start if body else 0, offset_start if body else 0
-        )
+        footer_fields = struct.pack("<BQQQ", 0x02, 8 + 8 + 4, summary_start if body else 0, offset_start if body else 0)
         crc = zlib.crc32(footer_fields, zlib.crc32(body)) if body else 0
         tail = self._builder_class()
         r.Footer(

@@ -23,10 +23,10 @@ import yaml
 from actors import codec
 from actors.core._actor import Actor
 from actors.errors import ActorsError, InterfaceError
-from actors.ros.names import expand
 from actors.recording.reader import Bag
-from actors.ros.topics import Publisher
+from actors.ros.names import expand
 from actors.ros.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
+from actors.ros.topics import Publisher
 
 if TYPE_CHECKING:
     from actors.runtime import Runtime
@@ -87,7 +87,9 @@ def plan(
             skipped.append(f"skipping {topic.name}: {reason} ({topic.count} message(s))")
             continue
         playable[topic.name] = PlayTopic(
-            name=topic.name, target=remap.get(topic.name, topic.name), msg_type=msg_type,
+            name=topic.name,
+            target=remap.get(topic.name, topic.name),
+            msg_type=msg_type,
             qos=_qos(topic.offered_qos_profiles),
         )
     return playable, skipped
@@ -106,11 +108,13 @@ def _qos(text: str) -> QoSProfile:
             history=HistoryPolicy.KEEP_ALL if keep_all else HistoryPolicy.KEEP_LAST,
             reliability=(
                 ReliabilityPolicy.BEST_EFFORT
-                if str(first.get("reliability")) in ("best_effort", "2") else ReliabilityPolicy.RELIABLE
+                if str(first.get("reliability")) in ("best_effort", "2")
+                else ReliabilityPolicy.RELIABLE
             ),
             durability=(
                 DurabilityPolicy.TRANSIENT_LOCAL
-                if str(first.get("durability")) in ("transient_local", "1") else DurabilityPolicy.VOLATILE
+                if str(first.get("durability")) in ("transient_local", "1")
+                else DurabilityPolicy.VOLATILE
             ),
         )
     except (yaml.YAMLError, TypeError, ValueError):
@@ -204,7 +208,9 @@ async def play(
                     finally:
                         handle.cancel()
                 name, msg_type, qos = (
-                    (CLOCK_TOPIC, type(msg), QoSProfile(depth=10)) if topic is None else (topic.target, topic.msg_type, topic.qos)
+                    (CLOCK_TOPIC, type(msg), QoSProfile(depth=10))
+                    if topic is None
+                    else (topic.target, topic.msg_type, topic.qos)
                 )
                 pub = publishers.get(name)
                 if pub is None:

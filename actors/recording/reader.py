@@ -29,8 +29,17 @@ __all__ = ["Bag", "BagTopic", "BagMessage", "FileSummary"]
 
 _RECORD_HEAD = struct.Struct("<BQ")
 _OP = {
-    "header": 0x01, "footer": 0x02, "schema": 0x03, "channel": 0x04, "message": 0x05, "chunk": 0x06,
-    "metadata": 0x0C, "metadata_index": 0x0D, "data_end": 0x0F, "statistics": 0x0B, "chunk_index": 0x08,
+    "header": 0x01,
+    "footer": 0x02,
+    "schema": 0x03,
+    "channel": 0x04,
+    "message": 0x05,
+    "chunk": 0x06,
+    "metadata": 0x0C,
+    "metadata_index": 0x0D,
+    "data_end": 0x0F,
+    "statistics": 0x0B,
+    "chunk_index": 0x08,
 }
 _FOOTER_SIZE = 1 + 8 + 8 + 8 + 4  # opcode, length, summary start, summary offset start, crc
 
@@ -108,16 +117,24 @@ class _McapFile:
             if opcode == _OP["message"]:
                 return r.Message.read(stream, len(body))
             kind = {
-                _OP["header"]: r.Header, _OP["footer"]: r.Footer, _OP["schema"]: r.Schema,
-                _OP["channel"]: r.Channel, _OP["chunk"]: r.Chunk, _OP["metadata"]: r.Metadata,
-                _OP["data_end"]: r.DataEnd, _OP["statistics"]: r.Statistics,
-                _OP["metadata_index"]: r.MetadataIndex, _OP["chunk_index"]: r.ChunkIndex,
+                _OP["header"]: r.Header,
+                _OP["footer"]: r.Footer,
+                _OP["schema"]: r.Schema,
+                _OP["channel"]: r.Channel,
+                _OP["chunk"]: r.Chunk,
+                _OP["metadata"]: r.Metadata,
+                _OP["data_end"]: r.DataEnd,
+                _OP["statistics"]: r.Statistics,
+                _OP["metadata_index"]: r.MetadataIndex,
+                _OP["chunk_index"]: r.ChunkIndex,
             }.get(opcode)
             return kind.read(stream) if kind is not None else None
         except Exception as exc:
             raise _Damage(offset, f"a malformed record (opcode 0x{opcode:02x}): {exc or type(exc).__name__}") from None
 
-    def records_from(self, data: bytes | memoryview, base: int, end: int | None = None) -> Iterator[tuple[int, int, Any]]:
+    def records_from(
+        self, data: bytes | memoryview, base: int, end: int | None = None
+    ) -> Iterator[tuple[int, int, Any]]:
         """``(offset, opcode, record)`` of each record in ``data`` (at file offset ``base``)."""
         end = len(data) if end is None else end
         pos = 0

@@ -31,9 +31,9 @@ import anyio
 import anyio.abc
 
 from actors import codec
-from actors.ros.names import expand, is_hidden_name
 from actors.recording.bag_writer import BagWriter
 from actors.recording.tap import Tap, TapSet
+from actors.ros.names import expand, is_hidden_name
 
 if TYPE_CHECKING:
     from actors.runtime import Runtime

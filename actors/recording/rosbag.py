@@ -84,7 +84,12 @@ class TopicRecord:
 
 
 def metadata_dict(
-    topics: Sequence[TopicRecord], *, start: int, end: int, count: int, files: Sequence[str],
+    topics: Sequence[TopicRecord],
+    *,
+    start: int,
+    end: int,
+    count: int,
+    files: Sequence[str],
     ros_distro: str = "",
 ) -> dict[str, Any]:
     """rosbag2's BagMetadata (version 9) as plain data: what ``metadata.yaml`` holds."""

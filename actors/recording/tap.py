@@ -21,8 +21,8 @@ from typing import TYPE_CHECKING, Any
 
 from actors import codec
 from actors.core._actor import Actor
-from actors.ros.topics import Expiring, Publisher, Subscription, Topic, type_name
 from actors.ros.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from actors.ros.topics import Expiring, Publisher, Subscription, Topic, type_name
 
 if TYPE_CHECKING:
     from actors.runtime import Runtime
@@ -122,9 +122,7 @@ class TapSet:
         runtime, owner = self._runtime, self._owner
         if runtime is None or owner is None or not self.wants(topic.name):
             return
-        previous = next(
-            (t for t in self._retired if t.topic_name == topic.name and t.msg_type is topic.msg_type), None
-        )
+        previous = next((t for t in self._retired if t.topic_name == topic.name and t.msg_type is topic.msg_type), None)
         try:
             tap = Tap(owner, topic, self.deliver, self.depth)
         except Exception as exc:  # a type with no ROS definition: say so once, tap the rest

@@ -84,7 +84,9 @@ class GraphQueries:
         """The topics the node ``node_namespace``/``node_name`` publishes, with their types."""
         return _names_and_types(self._node(node_name, node_namespace).publishers, "topic_name", "msg_type")
 
-    def get_subscriber_names_and_types_by_node(self, node_name: str, node_namespace: str) -> list[tuple[str, list[str]]]:
+    def get_subscriber_names_and_types_by_node(
+        self, node_name: str, node_namespace: str
+    ) -> list[tuple[str, list[str]]]:
         """The topics the node ``node_namespace``/``node_name`` subscribes to, with their types."""
         return _names_and_types(self._node(node_name, node_namespace).subscriptions, "topic_name", "msg_type")
 

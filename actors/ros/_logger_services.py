@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from actors.ros.log import LoggingSeverity, get_logger_level, set_logger_level
 from actors.ros._param_services import ServiceHost
+from actors.ros.log import LoggingSeverity, get_logger_level, set_logger_level
 from interfaces.rcl_interfaces.msg import LoggerLevel, SetLoggerLevelsResult
 from interfaces.rcl_interfaces.srv import GetLoggerLevels, SetLoggerLevels
 

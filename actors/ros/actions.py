@@ -56,11 +56,11 @@ from typing import Any, Protocol
 import anyio
 
 from actors.core._actor import OneShot, Owner
-from actors.ros.time import Clock
 from actors.errors import ActionError
-from actors.services import Client, Service
-from actors.ros.topics import Publisher, Subscription, type_name
 from actors.ros.qos import DurabilityPolicy, QoSProfile
+from actors.ros.time import Clock
+from actors.ros.topics import Publisher, Subscription, type_name
+from actors.services import Client, Service
 from interfaces.action_msgs.msg import GoalInfo, GoalStatus
 from interfaces.unique_identifier_msgs.msg import UUID
 
@@ -141,11 +141,15 @@ def status_name(status: int) -> str:
 
 def wire_names(action: str) -> dict[str, str]:
     """The services and topics of the action named ``action`` (absolute), by role."""
-    return {role: f"{action}/_action/{role}" for role in ("send_goal", "cancel_goal", "get_result", "feedback", "status")}
+    return {
+        role: f"{action}/_action/{role}" for role in ("send_goal", "cancel_goal", "get_result", "feedback", "status")
+    }
 
 
 def _check_action_type(action_type: Any, where: str) -> None:
-    if not (isinstance(action_type, type) and all(hasattr(action_type, a) for a in ("Goal", "Result", "Feedback", "Impl"))):
+    if not (
+        isinstance(action_type, type) and all(hasattr(action_type, a) for a in ("Goal", "Result", "Feedback", "Impl"))
+    ):
         raise TypeError(f"{where} needs an action type (with .Goal, .Result, .Feedback), got {action_type!r}")
 
 
@@ -255,14 +259,20 @@ class ServerGoalHandle:
         Raises ActionError for a goal that has ended or already runs.
         """
         if not self.is_active or self._running:
-            raise ActionError(f"goal {_short(self.goal_id)} of {self._server.name} cannot execute: it is "
-                              f"{'running' if self._running else status_name(self.status)}")
+            raise ActionError(
+                f"goal {_short(self.goal_id)} of {self._server.name} cannot execute: it is "
+                f"{'running' if self._running else status_name(self.status)}"
+            )
         if not self.is_cancel_requested:
             self._update(GoalEvent.EXECUTE)
         self._running = True
         server = self._server
-        server.node.start_task(server._run_goal, self, execute_callback or server.execute_callback,
-                               name=f"goal {_short(self.goal_id)} of {server.name}")
+        server.node.start_task(
+            server._run_goal,
+            self,
+            execute_callback or server.execute_callback,
+            name=f"goal {_short(self.goal_id)} of {server.name}",
+        )
 
     def publish_feedback(self, feedback: Any) -> None:
         """Publish ``feedback`` (the action's Feedback) for this goal; ignored once the goal has ended.
@@ -271,8 +281,10 @@ class ServerGoalHandle:
         """
         server = self._server
         if type(feedback) is not server.action_type.Feedback:
-            raise TypeError(f"feedback of {server.name} is {type_name(server.action_type.Feedback)}, "
-                            f"got {type_name(type(feedback))}")
+            raise TypeError(
+                f"feedback of {server.name} is {type_name(server.action_type.Feedback)}, "
+                f"got {type_name(type(feedback))}"
+            )
         if self.is_active:
             server._feedback.publish(server.action_type.Impl.FeedbackMessage(goal_id=self.goal_id, feedback=feedback))
 
@@ -291,8 +303,10 @@ class ServerGoalHandle:
     def _update(self, event: GoalEvent) -> None:
         after = _TRANSITIONS.get((self.status, event))
         if after is None:
-            raise ActionError(f"goal {_short(self.goal_id)} of {self._server.name}: cannot {event.value} "
-                              f"from {status_name(self.status)}")
+            raise ActionError(
+                f"goal {_short(self.goal_id)} of {self._server.name}: cannot {event.value} "
+                f"from {status_name(self.status)}"
+            )
         self.status = after
         self._server._publish_status()
         if after not in _ACTIVE and not self._running:
@@ -371,8 +385,9 @@ class ActionServer:
 
     def _decide(self, decision: Any, request: Any, response: Any) -> Any:
         if not isinstance(decision, (GoalResponse, bool)):
-            self.node.logger.warning(f"{self.name}: the goal callback returned {decision!r}, "
-                                     "not a GoalResponse; goal rejected")
+            self.node.logger.warning(
+                f"{self.name}: the goal callback returned {decision!r}, not a GoalResponse; goal rejected"
+            )
             decision = GoalResponse.REJECT
         if decision not in (GoalResponse.ACCEPT, True) or self._halted:
             return response
@@ -381,7 +396,9 @@ class ActionServer:
         self.goals[_key(request.goal_id)] = handle
         self._publish_status()
         # After this response is sent, as rclpy does: the accepted callback runs next in the actor.
-        self.node.actor.schedule(ActionCall(partial(self.accepted_callback, handle), f"accepted callback of {self.name}"))
+        self.node.actor.schedule(
+            ActionCall(partial(self.accepted_callback, handle), f"accepted callback of {self.name}")
+        )
         response.accepted = True
         response.stamp = stamp
         return response
@@ -416,7 +433,8 @@ class ActionServer:
             return codes.ERROR_NONE, [handle]
         limit = stamp if stamp else float("inf")
         return codes.ERROR_NONE, [
-            h for h in self.goals.values()
+            h
+            for h in self.goals.values()
             if h.status in cancelable
             and (h.info.stamp.sec * 1_000_000_000 + h.info.stamp.nanosec <= limit or _key(h.goal_id) == key)
         ]
@@ -443,7 +461,9 @@ class ActionServer:
                 if isawaitable(result):
                     result = await result
                 if type(result) is not result_type:
-                    raise TypeError(f"execute callback returned {type_name(type(result))}, expected {type_name(result_type)}")
+                    raise TypeError(
+                        f"execute callback returned {type_name(type(result))}, expected {type_name(result_type)}"
+                    )
             except Exception as exc:
                 self.node.logger.error(f"{self.name}: execute callback raised {exc!r}", exc_info=exc)
                 result = result_type()
@@ -452,8 +472,9 @@ class ActionServer:
         if scope.cancelled_caught or self._halted:
             return  # _halt has answered for this goal
         if handle.is_active:
-            self.node.logger.warning(f"{self.name}: goal {_short(handle.goal_id)} ended without succeed(), "
-                                     "abort() or canceled(); aborted")
+            self.node.logger.warning(
+                f"{self.name}: goal {_short(handle.goal_id)} ended without succeed(), abort() or canceled(); aborted"
+            )
             handle.status = _ABORTED
             self._publish_status()
         self._finish(handle, result)
@@ -528,8 +549,18 @@ class ClientGoalHandle:
     Returned by :meth:`ActionClient.send_goal`.
     """
 
-    __slots__ = ("_client", "goal_id", "goal", "accepted", "stamp", "status", "_feedback", "_result", "_buffer",
-                 "_arrived")
+    __slots__ = (
+        "_client",
+        "goal_id",
+        "goal",
+        "accepted",
+        "stamp",
+        "status",
+        "_feedback",
+        "_result",
+        "_buffer",
+        "_arrived",
+    )
 
     def __init__(self, client: ActionClient, goal_id: UUID, goal: Any, feedback: Callable[[Any], Any] | None) -> None:
         self._client = client

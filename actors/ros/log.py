@@ -61,7 +61,11 @@ class LoggingSeverity(IntEnum):
 
 
 DEBUG, INFO, WARN, ERROR, FATAL = (
-    LoggingSeverity.DEBUG, LoggingSeverity.INFO, LoggingSeverity.WARN, LoggingSeverity.ERROR, LoggingSeverity.FATAL
+    LoggingSeverity.DEBUG,
+    LoggingSeverity.INFO,
+    LoggingSeverity.WARN,
+    LoggingSeverity.ERROR,
+    LoggingSeverity.FATAL,
 )
 LEVELS = {"debug": DEBUG, "info": INFO, "warn": WARN, "warning": WARN, "error": ERROR, "fatal": FATAL}
 _LEVEL_NAMES = {DEBUG: "DEBUG", INFO: "INFO", WARN: "WARN", ERROR: "ERROR", FATAL: "FATAL"}
@@ -167,15 +171,12 @@ class NodeLogger:
             return False
         text = str(message)
         stamp = self._now_ns()
-        self._logger.log(
-            level, text, exc_info=exc_info, extra={"ros_stamp": stamp, "ros_name": self.name}
-        )
+        self._logger.log(level, text, exc_info=exc_info, extra={"ros_stamp": stamp, "ros_name": self.name})
         if self._sink is not None:
             self._sink(level, self.name, text, stamp)
         return True
 
-    def _passes(self, level: int, once: bool, skip_first: bool, throttle: float | None,
-                source: Clock | None) -> bool:
+    def _passes(self, level: int, once: bool, skip_first: bool, throttle: float | None, source: Clock | None) -> bool:
         frame = sys._getframe(2)
         while frame.f_code.co_filename == __file__:  # from debug()/info()... to the user's call
             frame = frame.f_back  # type: ignore[assignment]

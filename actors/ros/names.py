@@ -46,8 +46,7 @@ def validate_node_name(name: str) -> str:
     """Return ``name`` if it is a valid ROS node name, else raise InvalidNameError."""
     if not isinstance(name, str) or not _NODE_NAME.match(name):
         raise InvalidNodeNameException(
-            f"invalid node name {name!r}: use letters, digits and underscores, "
-            f"not starting with a digit"
+            f"invalid node name {name!r}: use letters, digits and underscores, not starting with a digit"
         )
     return name
 

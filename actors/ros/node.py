@@ -22,19 +22,16 @@ from typing import Any, Protocol
 
 import anyio.abc
 
-from actors.ros.actions import ActionClient, ActionServer
 from actors.core._actor import Actor, Scheduler
-from actors.ros.time import Clock, Rate, ROSClock
-from actors.ros.log import NodeLogger
-from actors.ros._logger_services import serve_logger_levels
-from actors.ros.names import Resolver, fully_qualified, normalize_namespace, validate_node_name
 from actors.ros._graph_queries import GraphQueries
+from actors.ros._logger_services import serve_logger_levels
 from actors.ros._node_parameters import ParameterMethods
 from actors.ros._param_services import ParameterServices
 from actors.ros._param_services import serve as serve_parameters
+from actors.ros.actions import ActionClient, ActionServer
+from actors.ros.log import NodeLogger
+from actors.ros.names import Resolver, fully_qualified, normalize_namespace, validate_node_name
 from actors.ros.parameter_store import Parameter, ParameterStore
-from actors.services import Client, Service, ServiceTable
-from actors.ros.timers import Deadlines, Timer
 from actors.ros.qos import QoSProfile, as_qos
 from actors.ros.qos_events import (
     EndpointEvents,
@@ -43,7 +40,10 @@ from actors.ros.qos_events import (
     WatchedPublisher,
     watched,
 )
+from actors.ros.time import Clock, Rate, ROSClock
+from actors.ros.timers import Deadlines, Timer
 from actors.ros.topics import Publisher, Subscription, TopicTable
+from actors.services import Client, Service, ServiceTable
 from interfaces.rcl_interfaces.msg import ParameterDescriptor
 
 __all__ = ["Node", "NodeCore", "Host", "ChildSpec", "SpawnRequest", "spawning"]
@@ -207,8 +207,9 @@ class NodeCore:
         self._inherited = {}
         return rest
 
-    def create_publisher(self, msg_type: type, topic: str, qos: QoSProfile | int,
-                         event_callbacks: PublisherEventCallbacks | None = None) -> Publisher:
+    def create_publisher(
+        self, msg_type: type, topic: str, qos: QoSProfile | int, event_callbacks: PublisherEventCallbacks | None = None
+    ) -> Publisher:
         """See :meth:`Node.create_publisher`."""
         _check_type(msg_type, "create_publisher")
         name = _shared(self.resolver.resolve(topic))
@@ -227,7 +228,11 @@ class NodeCore:
         return pub
 
     def create_subscription(
-        self, msg_type: type, topic: str, callback: Callable[[Any], Any], qos: QoSProfile | int,
+        self,
+        msg_type: type,
+        topic: str,
+        callback: Callable[[Any], Any],
+        qos: QoSProfile | int,
         event_callbacks: SubscriptionEventCallbacks | None = None,
     ) -> Subscription:
         """See :meth:`Node.create_subscription`."""
@@ -247,8 +252,9 @@ class NodeCore:
         self.subscriptions[sub] = None
         return sub
 
-    def create_timer(self, period: float, callback: Callable[..., Any], *, clock: Clock | None = None,
-                     autostart: bool = True) -> Timer:
+    def create_timer(
+        self, period: float, callback: Callable[..., Any], *, clock: Clock | None = None, autostart: bool = True
+    ) -> Timer:
         """See :meth:`Node.create_timer`."""
         if not callable(callback):
             raise TypeError(f"timer callback must be callable, got {callback!r}")
@@ -493,8 +499,14 @@ class Node(ParameterMethods, GraphQueries):
 
     # -- topics ---------------------------------------------------------------
 
-    def create_publisher(self, msg_type: type, topic: str, qos_profile: QoSProfile | int, *,
-                         event_callbacks: PublisherEventCallbacks | None = None) -> Publisher:
+    def create_publisher(
+        self,
+        msg_type: type,
+        topic: str,
+        qos_profile: QoSProfile | int,
+        *,
+        event_callbacks: PublisherEventCallbacks | None = None,
+    ) -> Publisher:
         """A publisher of ``msg_type`` on ``topic`` (resolved and remapped by ROS rules).
 
         ``qos_profile`` is a QoSProfile (copied: changing it later changes
@@ -588,8 +600,13 @@ class Node(ParameterMethods, GraphQueries):
         another node serves the action.  See :mod:`actors.ros.actions`.
         """
         return self._core.create_action_server(
-            action_type, action_name, execute,
-            goal=goal, cancel=cancel, accepted=accepted, result_timeout=result_timeout,
+            action_type,
+            action_name,
+            execute,
+            goal=goal,
+            cancel=cancel,
+            accepted=accepted,
+            result_timeout=result_timeout,
         )
 
     def create_action_client(self, action_type: type, action_name: str) -> ActionClient:
@@ -598,8 +615,14 @@ class Node(ParameterMethods, GraphQueries):
 
     # -- time -----------------------------------------------------------------
 
-    def create_timer(self, timer_period_sec: float, callback: Callable[..., Any], *, clock: Clock | None = None,
-                     autostart: bool = True) -> Timer:
+    def create_timer(
+        self,
+        timer_period_sec: float,
+        callback: Callable[..., Any],
+        *,
+        clock: Clock | None = None,
+        autostart: bool = True,
+    ) -> Timer:
         """A timer calling ``callback()`` every ``timer_period_sec`` seconds, first one period from now.
 
         A callback with a parameter annotated ``TimerInfo`` gets the tick's

@@ -71,8 +71,9 @@ class AsyncParameterClient:
             )
         return future
 
-    def list_parameters(self, prefixes: Sequence[str] | None = None, depth: int | None = None,
-                        callback: Done | None = None) -> asyncio.Future[Any]:
+    def list_parameters(
+        self, prefixes: Sequence[str] | None = None, depth: int | None = None, callback: Done | None = None
+    ) -> asyncio.Future[Any]:
         """The names under ``prefixes`` (all when None), at most ``depth`` parts deep (None: any)."""
         request = ListParameters.Request(prefixes=list(prefixes or []), depth=depth or 0)
         return self._call(self._list, request, callback)
@@ -89,13 +90,15 @@ class AsyncParameterClient:
         """The descriptors of ``names`` (``response.descriptors``)."""
         return self._call(self._describe, DescribeParameters.Request(names=list(names)), callback)
 
-    def set_parameters(self, parameters: Sequence[Parameter | ParameterMsg],
-                       callback: Done | None = None) -> asyncio.Future[Any]:
+    def set_parameters(
+        self, parameters: Sequence[Parameter | ParameterMsg], callback: Done | None = None
+    ) -> asyncio.Future[Any]:
         """Set each parameter on its own (``response.results``, one per parameter)."""
         return self._call(self._set, SetParameters.Request(parameters=_msgs(parameters)), callback)
 
-    def set_parameters_atomically(self, parameters: Sequence[Parameter | ParameterMsg],
-                                  callback: Done | None = None) -> asyncio.Future[Any]:
+    def set_parameters_atomically(
+        self, parameters: Sequence[Parameter | ParameterMsg], callback: Done | None = None
+    ) -> asyncio.Future[Any]:
         """Set all parameters or none (``response.result``)."""
         return self._call(self._atomic, SetParametersAtomically.Request(parameters=_msgs(parameters)), callback)
 
@@ -103,8 +106,9 @@ class AsyncParameterClient:
         """Unset ``names`` (only dynamically typed parameters can be; ``response.results``)."""
         return self.set_parameters([Parameter(name) for name in names], callback)
 
-    def on_parameter_event(self, callback: Callable[[ParameterEvent], Any],
-                           qos_profile: QoSProfile | int = qos_profile_parameter_events) -> Any:
+    def on_parameter_event(
+        self, callback: Callable[[ParameterEvent], Any], qos_profile: QoSProfile | int = qos_profile_parameter_events
+    ) -> Any:
         """Subscribe ``callback`` to ``/parameter_events`` (every node's parameter changes)."""
         return self.node.create_subscription(ParameterEvent, "/parameter_events", callback, qos_profile)
 

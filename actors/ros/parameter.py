@@ -66,8 +66,7 @@ class ParameterType(IntEnum):
             if len(kinds) == 1 and (kind := kinds.pop()) in _ELEMENT:
                 return _ELEMENT[kind]
         raise TypeError(
-            f"a parameter holds bool, int, float, str, bytes or a list of one of "
-            f"bool/int/float/str; got {value!r}"
+            f"a parameter holds bool, int, float, str, bytes or a list of one of bool/int/float/str; got {value!r}"
         )
 
     def check(self, value: Any) -> bool:
@@ -78,9 +77,13 @@ class ParameterType(IntEnum):
             actual = ParameterType.from_parameter_value(value)
         except TypeError:
             return False
-        return actual is self or (actual, self) in WIDENED or (
-            # An empty list fits every array type.
-            self >= ParameterType.BYTE_ARRAY and isinstance(value, (list, tuple)) and not value
+        return (
+            actual is self
+            or (actual, self) in WIDENED
+            or (
+                # An empty list fits every array type.
+                self >= ParameterType.BYTE_ARRAY and isinstance(value, (list, tuple)) and not value
+            )
         )
 
 

@@ -30,7 +30,6 @@ from typing import Any, Protocol
 
 import msgspec
 
-from actors.ros.time import ROSClock
 from actors.errors import (
     InvalidParameterException,
     InvalidParameterTypeException,
@@ -49,6 +48,7 @@ from actors.ros.parameter import (
     value_to_msg,
     widen,
 )
+from actors.ros.time import ROSClock
 from interfaces.rcl_interfaces.msg import (
     ListParametersResult,
     ParameterDescriptor,
@@ -120,8 +120,9 @@ class ParameterStore:
 
     # -- declaring --------------------------------------------------------------
 
-    def declare(self, name: str, value: Any = None, descriptor: ParameterDescriptor | None = None,
-                ignore_override: bool = False) -> Parameter:
+    def declare(
+        self, name: str, value: Any = None, descriptor: ParameterDescriptor | None = None, ignore_override: bool = False
+    ) -> Parameter:
         """Declare ``name``: see :meth:`actors.ros.node.Node.declare_parameter`."""
         if not isinstance(name, str):
             raise TypeError(f"a parameter name is a str, got {name!r}")
@@ -162,7 +163,11 @@ class ParameterStore:
             raise InvalidParameterTypeException(f"parameter {name!r} of {self._core.fqn}: {exc}") from None
         result = self._set_common([param], {name: descriptor}, allow_not_set=True)
         if not result.successful:
-            error = InvalidParameterTypeException if result.reason.startswith("wrong type") else InvalidParameterValueException
+            error = (
+                InvalidParameterTypeException
+                if result.reason.startswith("wrong type")
+                else InvalidParameterValueException
+            )
             raise error(f"parameter {name!r} of {self._core.fqn}: {result.reason}")
         return self._values[name]
 
@@ -185,8 +190,9 @@ class ParameterStore:
         if announce:
             self._publish_event(new=(param,))
 
-    def declare_many(self, namespace: str, parameters: Sequence[tuple[Any, ...]],
-                     ignore_override: bool = False) -> list[Parameter]:
+    def declare_many(
+        self, namespace: str, parameters: Sequence[tuple[Any, ...]], ignore_override: bool = False
+    ) -> list[Parameter]:
         """Declare ``(name[, value[, descriptor]])`` tuples under ``namespace.``, each in turn."""
         for index, entry in enumerate(parameters):
             if not isinstance(entry, tuple) or not 1 <= len(entry) <= 3:
@@ -250,7 +256,7 @@ class ParameterStore:
         """Parameters named ``prefix.<rest>`` keyed by ``<rest>`` (every parameter for ``""``)."""
         if prefix:
             prefix += PARAMETER_SEPARATOR_STRING
-        return {n[len(prefix):]: p for n, p in self._values.items() if n.startswith(prefix)}
+        return {n[len(prefix) :]: p for n, p in self._values.items() if n.startswith(prefix)}
 
     def has(self, name: str) -> bool:
         """Whether ``name`` is declared."""
@@ -270,9 +276,10 @@ class ParameterStore:
             return depth == 0 or rest.count(sep) < depth
 
         names = [
-            n for n in self.names()
+            n
+            for n in self.names()
             if (not prefixes and shallow(n))
-            or any(n == p or (n.startswith(p + sep) and shallow(n[len(p) + 1:])) for p in prefixes)
+            or any(n == p or (n.startswith(p + sep) and shallow(n[len(p) + 1 :])) for p in prefixes)
         ]
         found = []
         for n in names:
@@ -287,8 +294,9 @@ class ParameterStore:
         self._declared(name)
         return self._descriptors[name]
 
-    def set_descriptor(self, name: str, descriptor: ParameterDescriptor,
-                       alternative_value: ParameterValue | None = None) -> ParameterValue:
+    def set_descriptor(
+        self, name: str, descriptor: ParameterDescriptor, alternative_value: ParameterValue | None = None
+    ) -> ParameterValue:
         """Give ``name`` a new descriptor, keeping its value if it fits, else ``alternative_value``.
 
         Raises ParameterNotDeclaredException, ParameterImmutableException for a
@@ -367,9 +375,7 @@ class ParameterStore:
         if self._pre:
             params = [p for callback in self._pre for p in callback(params)]
             if not params:
-                return SetParametersResult(
-                    successful=False, reason="a pre-set parameters callback left nothing to set"
-                )
+                return SetParametersResult(successful=False, reason="a pre-set parameters callback left nothing to set")
         for param in params:
             if not isinstance(param, Parameter):
                 raise TypeError(f"set_parameters takes Parameters, got {param!r}")
@@ -378,8 +384,13 @@ class ParameterStore:
             raise ParameterNotDeclaredException(f"parameters {undeclared} are not declared on {self._core.fqn}")
         return self._set_common(params)
 
-    def _set_common(self, params: list[Parameter], descriptors: dict[str, ParameterDescriptor] | None = None,
-                    *, allow_not_set: bool = False) -> SetParametersResult:
+    def _set_common(
+        self,
+        params: list[Parameter],
+        descriptors: dict[str, ParameterDescriptor] | None = None,
+        *,
+        allow_not_set: bool = False,
+    ) -> SetParametersResult:
         # Check each parameter against its descriptor (the given ones when declaring).
         for param in params:
             descriptor = (descriptors or self._descriptors).get(param.name)
@@ -387,9 +398,7 @@ class ParameterStore:
                 problem = self._check(param, descriptor, check_read_only=descriptors is None)
                 if problem is not None:
                     return SetParametersResult(successful=False, reason=problem)
-        stored = [
-            _stored(p, (descriptors or self._descriptors).get(p.name)) for p in params
-        ]
+        stored = [_stored(p, (descriptors or self._descriptors).get(p.name)) for p in params]
         for callback in self._on_set:
             result = callback(stored)
             if not isinstance(result, SetParametersResult):
@@ -438,8 +447,9 @@ class ParameterStore:
             return _outside_floating_point_range(value, descriptor.floating_point_range[0])
         return None
 
-    def _publish_event(self, new: Sequence[Parameter] = (), changed: Sequence[Parameter] = (),
-                       deleted: Sequence[Parameter] = ()) -> None:
+    def _publish_event(
+        self, new: Sequence[Parameter] = (), changed: Sequence[Parameter] = (), deleted: Sequence[Parameter] = ()
+    ) -> None:
         publisher = self._core.parameter_events
         if not publisher._subs:
             return
@@ -497,6 +507,8 @@ def _outside_floating_point_range(value: float, bounds: Any) -> str | None:
         return None
     if not low < value < high:
         return f"{value} is out of range [{low}, {high}]"
-    if bounds.step and not math.isclose(low + round((value - low) / bounds.step) * bounds.step, value, rel_tol=_REL_TOL):
+    if bounds.step and not math.isclose(
+        low + round((value - low) / bounds.step) * bounds.step, value, rel_tol=_REL_TOL
+    ):
         return f"{value} is not on a step of {bounds.step} from {low}"
     return None

@@ -24,8 +24,8 @@ from typing import Any
 
 import msgspec
 
-from actors.ros.time import Duration
 from actors.errors import InvalidQoSProfileException
+from actors.ros.time import Duration
 
 __all__ = [
     "QoSPolicyEnum",
@@ -226,8 +226,9 @@ class QoSProfile:
         if value < 0:
             raise ValueError(f"QoS depth must be >= 0, got {value}")
         if value == 0 and self._history is HistoryPolicy.KEEP_LAST:
-            warnings.warn("a KEEP_LAST QoS depth of 0 keeps nothing: it is taken as the default depth (10)",
-                          stacklevel=2)
+            warnings.warn(
+                "a KEEP_LAST QoS depth of 0 keeps nothing: it is taken as the default depth (10)", stacklevel=2
+            )
         self._depth = value
 
     @property
@@ -352,7 +353,15 @@ class QoSSnapshot(msgspec.Struct, frozen=True, kw_only=True):
 
 _VAGUE = frozenset({"SYSTEM_DEFAULT", "UNKNOWN"})
 # A plain depth's other policies, in a snapshot's field order.
-_DEPTH_ONLY = (ReliabilityPolicy.RELIABLE, DurabilityPolicy.VOLATILE, 0, 0, LivelinessPolicy.AUTOMATIC, 0, False)  # the values whose meaning is the middleware's
+_DEPTH_ONLY = (
+    ReliabilityPolicy.RELIABLE,
+    DurabilityPolicy.VOLATILE,
+    0,
+    0,
+    LivelinessPolicy.AUTOMATIC,
+    0,
+    False,
+)  # the values whose meaning is the middleware's
 _snapshots: dict[tuple[Any, ...], QoSSnapshot] = {}  # one shared snapshot per distinct profile
 # The snapshot of a plain depth, found without building and hashing the key above: its enum
 # members hash in Python, and every node's create_publisher(..., 10) paid 2.4 µs for it.
@@ -389,15 +398,25 @@ def as_qos(qos: QoSProfile | QoSSnapshot | int) -> QoSSnapshot:
             DurabilityPolicy.VOLATILE if qos.durability.name in _VAGUE else qos.durability,
             _ns(qos.lifespan),
             _ns(qos.deadline),
-            LivelinessPolicy.AUTOMATIC if liveliness.name in _VAGUE or liveliness == LivelinessPolicy.BEST_AVAILABLE
+            LivelinessPolicy.AUTOMATIC
+            if liveliness.name in _VAGUE or liveliness == LivelinessPolicy.BEST_AVAILABLE
             else liveliness,
             _ns(qos.liveliness_lease_duration),
             qos.avoid_ros_namespace_conventions,
         )
     snapshot = _snapshots.get(key)
     if snapshot is None:
-        names = ("history", "depth", "reliability", "durability", "lifespan_ns", "deadline_ns", "liveliness",
-                 "liveliness_lease_duration_ns", "avoid_ros_namespace_conventions")
+        names = (
+            "history",
+            "depth",
+            "reliability",
+            "durability",
+            "lifespan_ns",
+            "deadline_ns",
+            "liveliness",
+            "liveliness_lease_duration_ns",
+            "avoid_ros_namespace_conventions",
+        )
         snapshot = _snapshots[key] = QoSSnapshot(**dict(zip(names, key)))
     if type(qos) is int:
         _by_depth[qos] = snapshot
@@ -407,12 +426,17 @@ def as_qos(qos: QoSProfile | QoSSnapshot | int) -> QoSSnapshot:
 # -- the presets, with rclpy's values --------------------------------------------------
 
 qos_profile_unknown = QoSProfile(
-    history=HistoryPolicy.UNKNOWN, depth=0, reliability=ReliabilityPolicy.UNKNOWN,
-    durability=DurabilityPolicy.UNKNOWN, liveliness=LivelinessPolicy.UNKNOWN,
+    history=HistoryPolicy.UNKNOWN,
+    depth=0,
+    reliability=ReliabilityPolicy.UNKNOWN,
+    durability=DurabilityPolicy.UNKNOWN,
+    liveliness=LivelinessPolicy.UNKNOWN,
 )
 qos_profile_default = QoSProfile(depth=10)
 qos_profile_system_default = QoSProfile(
-    history=HistoryPolicy.SYSTEM_DEFAULT, depth=0, reliability=ReliabilityPolicy.SYSTEM_DEFAULT,
+    history=HistoryPolicy.SYSTEM_DEFAULT,
+    depth=0,
+    reliability=ReliabilityPolicy.SYSTEM_DEFAULT,
     durability=DurabilityPolicy.SYSTEM_DEFAULT,
 )
 qos_profile_sensor_data = QoSProfile(depth=5, reliability=ReliabilityPolicy.BEST_EFFORT)
@@ -420,8 +444,11 @@ qos_profile_services_default = QoSProfile(depth=10)
 qos_profile_parameters = QoSProfile(depth=1000)
 qos_profile_parameter_events = QoSProfile(depth=1000)
 qos_profile_best_available = QoSProfile(
-    depth=10, reliability=ReliabilityPolicy.BEST_AVAILABLE, durability=DurabilityPolicy.BEST_AVAILABLE,
-    deadline=DeadlineBestAvailable, liveliness=LivelinessPolicy.BEST_AVAILABLE,
+    depth=10,
+    reliability=ReliabilityPolicy.BEST_AVAILABLE,
+    durability=DurabilityPolicy.BEST_AVAILABLE,
+    deadline=DeadlineBestAvailable,
+    liveliness=LivelinessPolicy.BEST_AVAILABLE,
     liveliness_lease_duration=LivelinessLeaseDurationeBestAvailable,
 )
 qos_profile_action_status_default = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
@@ -479,15 +506,21 @@ def _errors(pub: Any, sub: Any, deadlines: tuple[int, int], leases: tuple[int, i
     if pub_deadline and sub_deadline and sub_deadline < pub_deadline:
         found.append((QoSPolicyKind.DEADLINE, "Subscription deadline is less than publisher deadline"))
     if pub.liveliness == LivelinessPolicy.AUTOMATIC and sub.liveliness == LivelinessPolicy.MANUAL_BY_TOPIC:
-        found.append((QoSPolicyKind.LIVELINESS,
-                      "Publisher's liveliness is automatic and subscription's is manual by topic"))
+        found.append(
+            (QoSPolicyKind.LIVELINESS, "Publisher's liveliness is automatic and subscription's is manual by topic")
+        )
     pub_lease, sub_lease = leases
     if not pub_lease and sub_lease:
-        found.append((QoSPolicyKind.LIVELINESS_LEASE_DURATION,
-                      "Subscription has a liveliness lease duration, but publisher does not"))
+        found.append(
+            (
+                QoSPolicyKind.LIVELINESS_LEASE_DURATION,
+                "Subscription has a liveliness lease duration, but publisher does not",
+            )
+        )
     if pub_lease and sub_lease and sub_lease < pub_lease:
-        found.append((QoSPolicyKind.LIVELINESS_LEASE_DURATION,
-                      "Subscription liveliness lease duration is less than publisher"))
+        found.append(
+            (QoSPolicyKind.LIVELINESS_LEASE_DURATION, "Subscription liveliness lease duration is less than publisher")
+        )
     return found
 
 
@@ -495,15 +528,33 @@ def _warnings(pub: QoSProfile, sub: QoSProfile) -> list[str]:
     """rmw's warnings for policies whose outcome depends on the middleware's defaults."""
     found = []
     for policy, kind, one_sided in (
-        ("reliability", ReliabilityPolicy,
-         ((ReliabilityPolicy.RELIABLE, "Reliable subscription, but publisher is {pub}"),
-          (ReliabilityPolicy.BEST_EFFORT, "Best effort publisher, but subscription is {sub}"))),
-        ("durability", DurabilityPolicy,  # "durabilty": rmw's spelling, kept so the text matches
-         ((DurabilityPolicy.TRANSIENT_LOCAL, "Transient local subscription, but publisher is {pub}"),
-          (DurabilityPolicy.VOLATILE, "Volatile publisher, but subscription is {sub}"))),
-        ("liveliness", LivelinessPolicy,
-         ((LivelinessPolicy.MANUAL_BY_TOPIC, "Subscription's liveliness is manual by topic, but publisher's is {pub}"),
-          (LivelinessPolicy.AUTOMATIC, "Publisher's liveliness is automatic, but subscription's is {sub}"))),
+        (
+            "reliability",
+            ReliabilityPolicy,
+            (
+                (ReliabilityPolicy.RELIABLE, "Reliable subscription, but publisher is {pub}"),
+                (ReliabilityPolicy.BEST_EFFORT, "Best effort publisher, but subscription is {sub}"),
+            ),
+        ),
+        (
+            "durability",
+            DurabilityPolicy,  # "durabilty": rmw's spelling, kept so the text matches
+            (
+                (DurabilityPolicy.TRANSIENT_LOCAL, "Transient local subscription, but publisher is {pub}"),
+                (DurabilityPolicy.VOLATILE, "Volatile publisher, but subscription is {sub}"),
+            ),
+        ),
+        (
+            "liveliness",
+            LivelinessPolicy,
+            (
+                (
+                    LivelinessPolicy.MANUAL_BY_TOPIC,
+                    "Subscription's liveliness is manual by topic, but publisher's is {pub}",
+                ),
+                (LivelinessPolicy.AUTOMATIC, "Publisher's liveliness is automatic, but subscription's is {sub}"),
+            ),
+        ),
     ):
         offered, requested = kind(getattr(pub, policy)), kind(getattr(sub, policy))
         names = {"pub": offered.short_key, "sub": requested.short_key}
@@ -525,7 +576,8 @@ def qos_check_compatible(publisher_qos: QoSProfile, subscription_qos: QoSProfile
     when it depends on what SYSTEM_DEFAULT (or UNKNOWN) means, OK otherwise.
     """
     errors = _errors(
-        publisher_qos, subscription_qos,
+        publisher_qos,
+        subscription_qos,
         (publisher_qos.deadline.nanoseconds, subscription_qos.deadline.nanoseconds),
         (publisher_qos.liveliness_lease_duration.nanoseconds, subscription_qos.liveliness_lease_duration.nanoseconds),
     )
@@ -539,11 +591,15 @@ def qos_check_compatible(publisher_qos: QoSProfile, subscription_qos: QoSProfile
 
 def incompatible_policies(offered: QoSSnapshot, requested: QoSSnapshot) -> list[QoSPolicyKind]:
     """The policies that stop a publisher offering ``offered`` from reaching ``requested`` (empty: none)."""
-    return [kind for kind, _ in _errors(
-        offered, requested,
-        (offered.deadline_ns, requested.deadline_ns),
-        (offered.liveliness_lease_duration_ns, requested.liveliness_lease_duration_ns),
-    )]
+    return [
+        kind
+        for kind, _ in _errors(
+            offered,
+            requested,
+            (offered.deadline_ns, requested.deadline_ns),
+            (offered.liveliness_lease_duration_ns, requested.liveliness_lease_duration_ns),
+        )
+    ]
 
 
 def qos_incompatibility(offered: QoSSnapshot, requested: QoSSnapshot) -> str | None:
@@ -557,15 +613,14 @@ def qos_incompatibility(offered: QoSSnapshot, requested: QoSSnapshot) -> str | N
 
     reasons = {
         QoSPolicyKind.RELIABILITY: f"publisher offers {offered.reliability.name}, "
-                                   f"subscription requests {requested.reliability.name}",
+        f"subscription requests {requested.reliability.name}",
         QoSPolicyKind.DURABILITY: f"publisher offers {offered.durability.name}, "
-                                  f"subscription requests {requested.durability.name}",
+        f"subscription requests {requested.durability.name}",
         QoSPolicyKind.DEADLINE: f"publisher offers a deadline of {seconds(offered.deadline_ns)}, "
-                                f"subscription requests {seconds(requested.deadline_ns)}",
+        f"subscription requests {seconds(requested.deadline_ns)}",
         QoSPolicyKind.LIVELINESS: f"publisher offers {offered.liveliness.name} liveliness, "
-                                  f"subscription requests {requested.liveliness.name}",
-        QoSPolicyKind.LIVELINESS_LEASE_DURATION:
-            f"publisher offers a liveliness lease of {seconds(offered.liveliness_lease_duration_ns)}, "
-            f"subscription requests {seconds(requested.liveliness_lease_duration_ns)}",
+        f"subscription requests {requested.liveliness.name}",
+        QoSPolicyKind.LIVELINESS_LEASE_DURATION: f"publisher offers a liveliness lease of {seconds(offered.liveliness_lease_duration_ns)}, "
+        f"subscription requests {seconds(requested.liveliness_lease_duration_ns)}",
     }
     return "; ".join(reasons[kind] for kind in dict.fromkeys(kinds))

@@ -119,9 +119,17 @@ class SubscriptionEventCallbacks:
     logged as a warning when no ``incompatible_qos`` callback is given.
     """
 
-    def __init__(self, *, deadline: Callback = None, incompatible_qos: Callback = None, liveliness: Callback = None,
-                 message_lost: Callback = None, incompatible_type: Callback = None, matched: Callback = None,
-                 use_default_callbacks: bool = True) -> None:
+    def __init__(
+        self,
+        *,
+        deadline: Callback = None,
+        incompatible_qos: Callback = None,
+        liveliness: Callback = None,
+        message_lost: Callback = None,
+        incompatible_type: Callback = None,
+        matched: Callback = None,
+        use_default_callbacks: bool = True,
+    ) -> None:
         self.deadline = deadline
         self.incompatible_qos = incompatible_qos
         self.liveliness = liveliness
@@ -138,9 +146,16 @@ class PublisherEventCallbacks:
     is logged as a warning when no ``incompatible_qos`` callback is given.
     """
 
-    def __init__(self, *, deadline: Callback = None, liveliness: Callback = None, incompatible_qos: Callback = None,
-                 incompatible_type: Callback = None, matched: Callback = None,
-                 use_default_callbacks: bool = True) -> None:
+    def __init__(
+        self,
+        *,
+        deadline: Callback = None,
+        liveliness: Callback = None,
+        incompatible_qos: Callback = None,
+        incompatible_type: Callback = None,
+        matched: Callback = None,
+        use_default_callbacks: bool = True,
+    ) -> None:
         self.deadline = deadline
         self.liveliness = liveliness
         self.incompatible_qos = incompatible_qos
@@ -159,8 +174,9 @@ class Watch:
 
     __slots__ = ("_loop", "_period", "_on_expiry", "_rearm", "_last", "_handle", "expired")
 
-    def __init__(self, loop: asyncio.AbstractEventLoop, period: float, on_expiry: Callable[[], None], *,
-                 rearm: bool) -> None:
+    def __init__(
+        self, loop: asyncio.AbstractEventLoop, period: float, on_expiry: Callable[[], None], *, rearm: bool
+    ) -> None:
         self._loop = loop
         self._period = period
         self._on_expiry = on_expiry
@@ -244,22 +260,28 @@ class EndpointEvents:
             if subscription:
                 alive, alive_change = self._change("alive")
                 not_alive, not_alive_change = self._change("not_alive")
-                return QoSLivelinessChangedInfo(alive_count=alive, not_alive_count=not_alive,
-                                                alive_count_change=alive_change,
-                                                not_alive_count_change=not_alive_change)
+                return QoSLivelinessChangedInfo(
+                    alive_count=alive,
+                    not_alive_count=not_alive,
+                    alive_count_change=alive_change,
+                    not_alive_count_change=not_alive_change,
+                )
             total, change = self._change("liveliness_lost")
             return QoSLivelinessLostInfo(total_count=total, total_count_change=change)
         if kind == "matched":
             total, change = self._change("matched_total")
             current, current_change = self._change("matched_current")
-            return QoSSubscriptionMatchedInfo(total_count=total, total_count_change=change,
-                                              current_count=current, current_count_change=current_change)
+            return QoSSubscriptionMatchedInfo(
+                total_count=total, total_count_change=change, current_count=current, current_count_change=current_change
+            )
         total, change = self._change(kind)
         if kind == "incompatible_qos":
-            return QoSRequestedIncompatibleQoSInfo(total_count=total, total_count_change=change,
-                                                   last_policy_kind=self._last_policy)
+            return QoSRequestedIncompatibleQoSInfo(
+                total_count=total, total_count_change=change, last_policy_kind=self._last_policy
+            )
         return (QoSRequestedDeadlineMissedInfo if subscription else QoSOfferedDeadlineMissedInfo)(
-            total_count=total, total_count_change=change)
+            total_count=total, total_count_change=change
+        )
 
     # -- what the topic table and the endpoint report -----------------------------
 
@@ -321,8 +343,14 @@ class WatchedPublisher(Publisher):
 
     __slots__ = ("_lifespan",)
 
-    def __init__(self, node: Any, topic_name: str, msg_type: type, qos: QoSSnapshot,
-                 callbacks: PublisherEventCallbacks | None = None) -> None:
+    def __init__(
+        self,
+        node: Any,
+        topic_name: str,
+        msg_type: type,
+        qos: QoSSnapshot,
+        callbacks: PublisherEventCallbacks | None = None,
+    ) -> None:
         super().__init__(node, topic_name, msg_type, qos)
         self._lifespan = self.qos.lifespan_ns / 1e9
         if callbacks is not None or _leased(self.qos):

@@ -190,8 +190,7 @@ class Time:
     def _same_clock(self, other: Time, doing: str) -> None:
         if other._clock_type != self._clock_type:
             raise TypeError(
-                f"cannot {doing} Times of different clock types "
-                f"({self._clock_type.name} and {other._clock_type.name})"
+                f"cannot {doing} Times of different clock types ({self._clock_type.name} and {other._clock_type.name})"
             )
 
     def __add__(self, other: object) -> Time:
@@ -330,8 +329,9 @@ class ROSClock(Clock):
 
     __slots__ = ("_loop", "_epoch_ns", "_override_active", "_override_ns")
 
-    def __init__(self, loop: asyncio.AbstractEventLoop | None = None, *,
-                 clock_type: ClockType = ClockType.ROS_TIME) -> None:
+    def __init__(
+        self, loop: asyncio.AbstractEventLoop | None = None, *, clock_type: ClockType = ClockType.ROS_TIME
+    ) -> None:
         # ``clock_type`` is taken only so that ``Clock(clock_type=ROS_TIME)`` can build one.
         super().__init__(clock_type=ClockType.ROS_TIME)
         self._loop = loop

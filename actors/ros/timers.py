@@ -33,8 +33,8 @@ from __future__ import annotations
 import asyncio
 import inspect
 import itertools
-from collections.abc import Awaitable, Callable
 from collections import deque
+from collections.abc import Awaitable, Callable
 from heapq import heappop, heappush, heapreplace
 from inspect import isawaitable
 from typing import Any
@@ -60,8 +60,9 @@ class TimerInfo:
 
     __slots__ = ("_expected", "_actual")
 
-    def __init__(self, *, expected_call_time: int = 0, actual_call_time: int = 0,
-                 clock_type: ClockType = ClockType.SYSTEM_TIME) -> None:
+    def __init__(
+        self, *, expected_call_time: int = 0, actual_call_time: int = 0, clock_type: ClockType = ClockType.SYSTEM_TIME
+    ) -> None:
         if expected_call_time < 0 or actual_call_time < 0:
             raise ValueError("a TimerInfo's call times cannot be negative")
         self._expected = Time(nanoseconds=expected_call_time, clock_type=clock_type)
@@ -90,6 +91,7 @@ def _timer_info_parameter(callback: Callable[..., Any]) -> str | None:
         if annotation is TimerInfo or (isinstance(annotation, str) and annotation.rpartition(".")[2] == "TimerInfo"):
             return parameter.name
     return None
+
 
 _COMPACT_AT = 64  # stale entries tolerated before the heap and lanes are rebuilt without them
 # Instants one loop timer's callback runs in a row on virtual time (see Deadlines._fire): the
@@ -138,8 +140,22 @@ class Deadlines:
     fire in the order they were armed.
     """
 
-    __slots__ = ("_loop", "_scheduler", "_context", "_heap", "_lanes", "_periods", "_handle", "_spent", "_call_again",
-                 "_skip_to", "_armed", "_order", "_stale", "_firing")
+    __slots__ = (
+        "_loop",
+        "_scheduler",
+        "_context",
+        "_heap",
+        "_lanes",
+        "_periods",
+        "_handle",
+        "_spent",
+        "_call_again",
+        "_skip_to",
+        "_armed",
+        "_order",
+        "_stale",
+        "_firing",
+    )
 
     def __init__(self, loop: asyncio.AbstractEventLoop, scheduler: Scheduler) -> None:
         self._loop = loop
@@ -363,8 +379,16 @@ class Timer:
         "__weakref__",
     )
 
-    def __init__(self, node: Owner, period: float, callback: Callable[..., Any], deadlines: Deadlines, *,
-                 clock: Clock, autostart: bool = True) -> None:
+    def __init__(
+        self,
+        node: Owner,
+        period: float,
+        callback: Callable[..., Any],
+        deadlines: Deadlines,
+        *,
+        clock: Clock,
+        autostart: bool = True,
+    ) -> None:
         if not period > 0:
             raise ValueError(f"timer period must be > 0 seconds, got {period}")
         self.node = node
@@ -438,8 +462,9 @@ class Timer:
     def _info(self) -> TimerInfo:
         actual = self.clock.now_ns()
         late = int(round((self._last_call - self.next_deadline) * _NS))
-        return TimerInfo(expected_call_time=max(0, actual - late), actual_call_time=actual,
-                         clock_type=self.clock.clock_type)
+        return TimerInfo(
+            expected_call_time=max(0, actual - late), actual_call_time=actual, clock_type=self.clock.clock_type
+        )
 
     @property
     def timer_period_ns(self) -> int:

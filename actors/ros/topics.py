@@ -69,8 +69,8 @@ import msgspec
 
 from actors.core._actor import Actor, CallbackFailed, Mailbox, Owner
 from actors.errors import MessageRefused, TopicTypeError
-from actors.ros._refusals import Refusals
 from actors.messages._copy import checker, snapshotter
+from actors.ros._refusals import Refusals
 from actors.ros.qos import (
     DurabilityPolicy,
     HistoryPolicy,
@@ -80,10 +80,7 @@ from actors.ros.qos import (
     ReliabilityPolicy,
     as_qos,
     incompatible_policies,
-    qos_incompatibility,
     qos_policy_name_from_kind,
-    qos_profile_sensor_data,
-    qos_profile_system_default,
 )
 
 __all__ = [
@@ -107,11 +104,15 @@ def warn_incompatible(endpoint: Publisher | Subscription, policy: QoSPolicyKind)
     """rclpy's default incompatible-QoS warning, from ``endpoint``'s node."""
     name = qos_policy_name_from_kind(policy)
     if isinstance(endpoint, Subscription):
-        text = (f"New publisher discovered on topic '{endpoint.topic_name}', offering incompatible QoS. "
-                f"No messages will be received from it. Last incompatible policy: {name}")
+        text = (
+            f"New publisher discovered on topic '{endpoint.topic_name}', offering incompatible QoS. "
+            f"No messages will be received from it. Last incompatible policy: {name}"
+        )
     else:
-        text = (f"New subscription discovered on topic '{endpoint.topic_name}', requesting incompatible QoS. "
-                f"No messages will be sent to it. Last incompatible policy: {name}")
+        text = (
+            f"New subscription discovered on topic '{endpoint.topic_name}', requesting incompatible QoS. "
+            f"No messages will be sent to it. Last incompatible policy: {name}"
+        )
     endpoint.node.logger.warning(text)
 
 
@@ -137,8 +138,22 @@ class Publisher:
     """Publishes messages of one type on one topic.  Create with ``Node.create_publisher``."""
 
     __slots__ = (
-        "topic_name", "msg_type", "qos", "node", "_subs", "_feeds", "_tracked", "_history", "_snapshot",
-        "_check", "_events", "_topic", "_pending", "_bound", "_only", "__weakref__",
+        "topic_name",
+        "msg_type",
+        "qos",
+        "node",
+        "_subs",
+        "_feeds",
+        "_tracked",
+        "_history",
+        "_snapshot",
+        "_check",
+        "_events",
+        "_topic",
+        "_pending",
+        "_bound",
+        "_only",
+        "__weakref__",
     )
 
     def __init__(self, node: Owner, topic_name: str, msg_type: type, qos: QoSProfile | QoSSnapshot | int) -> None:
@@ -148,8 +163,9 @@ class Publisher:
         qos = as_qos(qos)
         if qos.reliability == ReliabilityPolicy.BEST_AVAILABLE or qos.durability == DurabilityPolicy.BEST_AVAILABLE:
             # A BEST_AVAILABLE publisher offers the most: subscriptions of any kind can take it.
-            qos = msgspec.structs.replace(qos, reliability=ReliabilityPolicy.RELIABLE,
-                                          durability=DurabilityPolicy.TRANSIENT_LOCAL)
+            qos = msgspec.structs.replace(
+                qos, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL
+            )
         self.qos = qos
         # Functions held in slots: publish() reads them into a local before calling, since
         # CPython 3.11 leaves ``self._snapshot(msg)`` (a method call on a slot) unspecialised.
@@ -210,8 +226,7 @@ class Publisher:
             return
         if type(msg) is not self.msg_type:
             raise TypeError(
-                f"publisher on {self.topic_name} takes {type_name(self.msg_type)}, "
-                f"got {type_name(type(msg))}"
+                f"publisher on {self.topic_name} takes {type_name(self.msg_type)}, got {type_name(type(msg))}"
             )
         feeds = self._feeds
         if feeds is None:
@@ -525,9 +540,7 @@ class Subscription(Mailbox):
             msg = msg.msg  # the message the sender sent
         if self.refusals is None:
             self.refusals = Refusals()
-        line = self.refusals.add(
-            self.topic_name, self._sender_of(msg), refusal.reason, self.node.loop.time()
-        )
+        line = self.refusals.add(self.topic_name, self._sender_of(msg), refusal.reason, self.node.loop.time())
         if line is not None:
             self.node.logger.warning(line)
         self.track_senders()

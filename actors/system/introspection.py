@@ -19,10 +19,10 @@ import msgspec
 from actors import codec
 from actors.errors import ActorsError
 from actors.ros.names import is_hidden
-from actors.services import ServiceTable
-from actors.system.supervisor import Child, Supervisor
 from actors.ros.qos import QoSSnapshot
 from actors.ros.topics import Topic, TopicTable, type_name
+from actors.services import ServiceTable
+from actors.system.supervisor import Child, Supervisor
 from actors.transport.seam import GraphSource, RemoteNode, is_proxy
 
 __all__ = [
@@ -197,7 +197,9 @@ class GraphView:
     def services(self) -> list[ServiceInfo]:
         """Every service with its server (remote ones too), sorted by name."""
         found = {
-            name: ServiceInfo(name=name, type=type_name(s.srv_type), node=s.node.fqn, handled=s.handled, queued=s.queued)
+            name: ServiceInfo(
+                name=name, type=type_name(s.srv_type), node=s.node.fqn, handled=s.handled, queued=s.queued
+            )
             for name, s in self._rt.services.servers.items()
             if not is_proxy(s)
         }

@@ -42,10 +42,10 @@ import anyio
 import msgspec
 
 from actors.core._actor import CallbackFailed, OneShot
-from actors.ros.time import ROSClock
 from actors.errors import Escalation
 from actors.ros.log import NodeLogger
 from actors.ros.node import NodeCore
+from actors.ros.time import ROSClock
 
 __all__ = ["Strategy", "RestartType", "SupervisorPolicy", "Child", "Supervisor", "Supervised"]
 
@@ -275,7 +275,7 @@ class Supervisor:
             group = [child]
         else:
             children = list(self.children)
-            group = children if strategy is Strategy.ONE_FOR_ALL else children[children.index(child):]
+            group = children if strategy is Strategy.ONE_FOR_ALL else children[children.index(child) :]
         await self._restart(group, crashed=child)
 
     def _retire(self, child: Child, state: str) -> None:

@@ -38,8 +38,8 @@ from actors.core._actor import Actor
 from actors.errors import ServiceError
 from actors.ros.log import NodeLogger
 from actors.ros.qos import DurabilityPolicy, QoSSnapshot, ReliabilityPolicy
-from actors.services import Service, ServiceListener
 from actors.ros.topics import Publisher, Subscription, TopicListener, type_name
+from actors.services import Service, ServiceListener
 
 __all__ = [
     "Hub",

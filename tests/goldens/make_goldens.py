@@ -91,11 +91,15 @@ def generated_hashes(package: str) -> dict[str, str]:
         includes = [f"{pkg.name}:{pkg}" for pkg in SHARE.iterdir() if pkg.is_dir()]
         arguments = Path(tmp) / "arguments.json"
         arguments.write_text(
-            json.dumps({"package_name": package, "output_dir": str(out_dir), "idl_tuples": tuples, "include_paths": includes})
+            json.dumps(
+                {"package_name": package, "output_dir": str(out_dir), "idl_tuples": tuples, "include_paths": includes}
+            )
         )
         hashes = {}
         for written in generate_type_hash(str(arguments)):
-            hashes.update({e["type_name"]: e["hash_string"] for e in json.loads(Path(written).read_text())["type_hashes"]})
+            hashes.update(
+                {e["type_name"]: e["hash_string"] for e in json.loads(Path(written).read_text())["type_hashes"]}
+            )
     return hashes
 
 

@@ -14,8 +14,8 @@ import importlib
 from typing import Any
 
 from actors.messages import cdr
-from actors.messages.idl import OCTETS, STRINGS
 from actors.messages._fields import MessageLayout, layout
+from actors.messages.idl import OCTETS, STRINGS
 
 __all__ = ["rclpy_class", "to_rclpy", "same_wire", "padding_positions", "fastrtps_length"]
 
@@ -90,8 +90,21 @@ def same_wire(msg: Any, theirs: bytes) -> str | None:
 
 # ----- rmw_fastrtps' buffer size (rosidl_typesupport_fastrtps_c's size functions, in our words)
 
-_SIZES = {"bool": 1, "byte": 1, "char": 1, "uint8": 1, "int8": 1, "int16": 2, "uint16": 2, "int32": 4,
-          "uint32": 4, "float32": 4, "int64": 8, "uint64": 8, "float64": 8}
+_SIZES = {
+    "bool": 1,
+    "byte": 1,
+    "char": 1,
+    "uint8": 1,
+    "int8": 1,
+    "int16": 2,
+    "uint16": 2,
+    "int32": 4,
+    "uint32": 4,
+    "float32": 4,
+    "int64": 8,
+    "uint64": 8,
+    "float64": 8,
+}
 
 
 def _align(offset: int, size: int) -> int:

@@ -15,8 +15,8 @@ import struct
 from typing import Any, Protocol
 
 from actors import codec
-from actors.messages.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType, shipped_root
 from actors.messages._fields import MessageLayout, layout
+from actors.messages.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType, shipped_root
 
 __all__ = ["Pick", "RandomPick", "DrawPick", "message", "shipped_types", "shipped_messages", "float32"]
 
@@ -50,8 +50,10 @@ class RandomPick:
         return self.rng.choice((low, high, 0)) if self.rng.random() < 0.3 else self.rng.randint(low, high)
 
     def real(self, bits: int) -> float:
-        value = self.rng.choice((0.0, -0.0, 1.5, -2.25, 1e300, -1e-300)) if self.rng.random() < 0.2 else (
-            self.rng.uniform(-1e6, 1e6)
+        value = (
+            self.rng.choice((0.0, -0.0, 1.5, -2.25, 1e300, -1e-300))
+            if self.rng.random() < 0.2
+            else (self.rng.uniform(-1e6, 1e6))
         )
         return float32(max(-3e38, min(3e38, value))) if bits == 32 else value
 
@@ -125,8 +127,11 @@ def _item(type_: FieldType, nested: MessageLayout | None, pick: Pick) -> Any:
 def shipped_types() -> list[str]:
     """Every message, service and action type of the shipped root (not of roots tests register)."""
     root = shipped_root()
-    return sorted(f"{p.parent.parent.name}/{p.parent.name}/{p.stem}" for p in root.glob("*/*/*.*")
-                  if p.suffix.lstrip(".") == p.parent.name)
+    return sorted(
+        f"{p.parent.parent.name}/{p.parent.name}/{p.stem}"
+        for p in root.glob("*/*/*.*")
+        if p.suffix.lstrip(".") == p.parent.name
+    )
 
 
 def shipped_messages() -> list[str]:

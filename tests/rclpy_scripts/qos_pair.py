@@ -20,7 +20,9 @@ def main(argv=sys.argv[1:]):
     rclpy.init(args=argv)
     qos = QoSProfile(depth=10, reliability=QoSReliabilityPolicy.RELIABLE) if args.reliable else qos_profile_sensor_data
     node = rclpy.create_node(f"qos_{args.role}")
-    node.get_logger().info(f"{'reliable' if qos.reliability is QoSReliabilityPolicy.RELIABLE else 'best effort'} {args.role}")
+    node.get_logger().info(
+        f"{'reliable' if qos.reliability is QoSReliabilityPolicy.RELIABLE else 'best effort'} {args.role}"
+    )
     if args.role == "talker":
         out = node.create_publisher(String, "chatter", qos)
         count = [0]

@@ -17,7 +17,6 @@ from actors.compat.activity import Waiter
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
 from actors.compat.rclpy.task import Future
 
-
 __all__ = ["Client"]
 
 

@@ -19,8 +19,8 @@ from typing import Any, Protocol
 
 from actors.compat.script_state import script_state
 from actors.compat.session import Session
-from actors.ros.log import ROOT_LOGGER, set_logger_level
 from actors.launch.rosargs import RosArgs, parse
+from actors.ros.log import ROOT_LOGGER, set_logger_level
 
 __all__ = ["Context", "use_session", "current_session"]
 

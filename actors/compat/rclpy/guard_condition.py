@@ -8,7 +8,6 @@ from typing import Any
 from actors.compat.dispatch import Handler, ScriptNode, WorkSource
 from actors.compat.rclpy.task import await_or_execute
 
-
 __all__ = ["GuardCondition"]
 
 

@@ -21,22 +21,22 @@ import weakref
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
+import actors.compat.rclpy.logging  # noqa: F401 - as rclpy's node does: `rclpy.logging` is then set
 from actors.compat.dispatch import NativeWork, ScriptActor, SpinningExecutor, WorkSource
 from actors.compat.rclpy.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup
 from actors.compat.rclpy.client import Client
 from actors.compat.rclpy.context import Context
 from actors.compat.rclpy.exceptions import NotInitializedException
 from actors.compat.rclpy.guard_condition import GuardCondition
-import actors.compat.rclpy.logging  # noqa: F401 - as rclpy's node does: `rclpy.logging` is then set
 from actors.compat.rclpy.publisher import Publisher
 from actors.compat.rclpy.service import Service
 from actors.compat.rclpy.subscription import Subscription
 from actors.compat.rclpy.timer import Rate, Timer
 from actors.compat.rclpy.utilities import get_default_context
+from actors.launch.rosargs import RosArgs, parse
 from actors.ros.log import NodeLogger
 from actors.ros.node import Node as NativeNode
 from actors.ros.node import SpawnRequest, spawning
-from actors.launch.rosargs import RosArgs, parse
 from actors.system.supervisor import RestartType
 
 if TYPE_CHECKING:
@@ -57,9 +57,7 @@ class _ScriptChild:
     restarts = crashes = 0
     last_error = None
 
-    def __init__(
-        self, cls: type, name: str, namespace: str, params: dict[str, Any], remap: dict[str, str]
-    ) -> None:
+    def __init__(self, cls: type, name: str, namespace: str, params: dict[str, Any], remap: dict[str, str]) -> None:
         self.cls = cls
         self.name = name
         self.namespace = namespace
@@ -106,9 +104,7 @@ class ScriptNodeState:
         with self.lock:
             work = self.native_work.get(entity)
             if work is None:
-                work = self.native_work[entity] = NativeWork(
-                    entity, self.default_callback_group, self.session.block
-                )
+                work = self.native_work[entity] = NativeWork(entity, self.default_callback_group, self.session.block)
             work.scheduled = True
             self.notify()
 
@@ -166,8 +162,11 @@ class Node(NativeNode):
             key: value
             for key, value, default in (
                 ("allow_undeclared_parameters", allow_undeclared_parameters, False),
-                ("automatically_declare_parameters_from_overrides",
-                 automatically_declare_parameters_from_overrides, False),
+                (
+                    "automatically_declare_parameters_from_overrides",
+                    automatically_declare_parameters_from_overrides,
+                    False,
+                ),
                 ("start_parameter_services", start_parameter_services, True),
                 ("enable_logger_service", enable_logger_service, False),
             )
@@ -309,8 +308,9 @@ class Node(NativeNode):
         """
         subscription = Subscription(self, msg_type, callback, None, raw)
         subscription.callback_group = self._group(callback_group, subscription)
-        self._create(subscription, NativeNode.create_subscription, msg_type, topic, subscription.catcher,
-                     qos_profile, **options)
+        self._create(
+            subscription, NativeNode.create_subscription, msg_type, topic, subscription.catcher, qos_profile, **options
+        )
         self._rclpy.subscriptions.append(subscription)
         self._wake_executor()
         return subscription
@@ -411,6 +411,7 @@ class Node(NativeNode):
             self._rclpy.notify()
         native = getattr(entity, "_native", None)
         if destroy is not None and native is not None and not self._rclpy.destroyed:
+
             def drop() -> None:
                 destroy(self, native)
                 if entity.catcher is not None:
@@ -460,8 +461,15 @@ class Node(NativeNode):
             state.session.call(NativeNode.destroy_node, self)
         with state.lock:
             state.destroyed = True
-            for kind in (state.publishers, state.subscriptions, state.clients, state.services, state.timers,
-                         state.guards, state.waitables):
+            for kind in (
+                state.publishers,
+                state.subscriptions,
+                state.clients,
+                state.services,
+                state.timers,
+                state.guards,
+                state.waitables,
+            ):
                 kind.clear()
             state.native_work.clear()
         state.context.untrack_node(self)

@@ -7,7 +7,13 @@ from pathlib import Path
 from typing import Any
 
 from actors.codec import load_yaml
-from actors.ros.parameter_store import PARAMETER_SEPARATOR_STRING, Parameter, ParameterType, value_from_msg, value_to_msg
+from actors.ros.parameter_store import (
+    PARAMETER_SEPARATOR_STRING,
+    Parameter,
+    ParameterType,
+    value_from_msg,
+    value_to_msg,
+)
 from interfaces.rcl_interfaces.msg import Parameter as ParameterMsg
 from interfaces.rcl_interfaces.msg import ParameterValue
 

@@ -6,7 +6,6 @@ from typing import Any
 
 from actors.compat.dispatch import NativeProxy, ScriptNode
 
-
 __all__ = ["Publisher"]
 
 
@@ -57,4 +56,3 @@ class Publisher(NativeProxy):
     def destroy(self) -> None:
         """Stop publishing."""
         self._node.destroy_publisher(self)
-

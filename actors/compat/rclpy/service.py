@@ -15,7 +15,6 @@ from typing import Any
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
 from actors.compat.rclpy.task import await_or_execute
 
-
 __all__ = ["Service"]
 
 

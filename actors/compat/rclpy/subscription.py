@@ -14,11 +14,10 @@ from collections import deque
 from collections.abc import Callable
 from typing import Any, TypedDict
 
-from actors.messages import cdr
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
 from actors.compat.rclpy.task import await_or_execute
+from actors.messages import cdr
 from actors.ros.qos import HistoryPolicy
-
 
 __all__ = ["Subscription", "MessageInfo", "serialized"]
 
@@ -115,7 +114,6 @@ class Subscription(WorkSource, NativeProxy):
     def destroy(self) -> None:
         """Stop receiving."""
         self._node.destroy_subscription(self)
-
 
 
 def serialized(msg: Any) -> bytes:

@@ -18,7 +18,6 @@ from actors.compat.rclpy.exceptions import ROSInterruptException
 from actors.compat.rclpy.task import await_or_execute
 from actors.ros.timers import TimerInfo
 
-
 __all__ = ["Timer", "Rate", "TimerInfo"]
 
 
@@ -62,8 +61,11 @@ class Timer(WorkSource, NativeProxy):
 
     def _restamped(self, info: TimerInfo) -> TimerInfo:
         expected = info.expected_call_time
-        return TimerInfo(expected_call_time=expected.nanoseconds, actual_call_time=self._native.clock.now_ns(),
-                         clock_type=expected.clock_type)
+        return TimerInfo(
+            expected_call_time=expected.nanoseconds,
+            actual_call_time=self._native.clock.now_ns(),
+            clock_type=expected.clock_type,
+        )
 
     @property
     def timer_period_ns(self) -> int:

@@ -43,9 +43,9 @@ RENDEZVOUS = "tcp/127.0.0.1:7447"
 def load_zenoh() -> ModuleType:
     """The ``zenoh`` module; TransportError with the install hint when it is missing."""
     try:
-        import zenoh
-        import zenoh.ext  # noqa: F401 - the advanced publisher and subscriber
         import xxhash  # noqa: F401 - GIDs (attachment.gid_of)
+        import zenoh
+        import zenoh.ext
     except ImportError:
         raise TransportError(INSTALL_HINT) from None
     return zenoh

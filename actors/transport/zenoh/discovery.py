@@ -38,7 +38,9 @@ def local_hash(ros_type: str) -> tuple[type | None, str]:
 class Discovery:
     """Tokens of other processes, by key; ``on_change(token, appeared)`` hears each change."""
 
-    def __init__(self, own_zid: str, on_change: Callable[[Token, bool], None], on_bad: Callable[[str, str], None]) -> None:
+    def __init__(
+        self, own_zid: str, on_change: Callable[[Token, bool], None], on_bad: Callable[[str, str], None]
+    ) -> None:
         self._own = own_zid
         self._tokens: dict[str, Token] = {}
         self._on_change = on_change

@@ -115,7 +115,7 @@ class Link:
         """Undeclare a Zenoh entity; one that is already gone (a closed session) is fine."""
         try:
             entity.undeclare()
-        except Exception:  # noqa: BLE001 - zenoh's ZError once the session is closed
+        except Exception:
             pass
 
     def warn_once(self, key: str, origin: str, text: str) -> None:

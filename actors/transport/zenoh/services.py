@@ -98,9 +98,15 @@ class ServiceBridge:
             sequence, _, gid = unpack(raw.to_bytes())
             origin = gid.hex()
             payload = query.payload
-            request = codec.decode_cdr(payload.to_bytes() if payload is not None else b"", served.service.srv_type.Request)
+            request = codec.decode_cdr(
+                payload.to_bytes() if payload is not None else b"", served.service.srv_type.Request
+            )
         except Exception as exc:  # anything a peer sends: answered with an error, logged once
-            link.warn_once(served.endpoint.key, origin, f"refused a malformed request on {served.endpoint.key} (client {origin}): {exc}")
+            link.warn_once(
+                served.endpoint.key,
+                origin,
+                f"refused a malformed request on {served.endpoint.key} (client {origin}): {exc}",
+            )
             _finish(query, error=f"malformed request: {exc}")
             return
         future: asyncio.Future[Any] = link.loop.create_future()
@@ -114,7 +120,9 @@ class ServiceBridge:
             _finish(query, error=str(future.exception()))
         else:
             payload = codec.encode_cdr(future.result())
-            _finish(query, key=served.endpoint.key, payload=payload, attachment=pack(sequence, self._link.now_ns(), gid))
+            _finish(
+                query, key=served.endpoint.key, payload=payload, attachment=pack(sequence, self._link.now_ns(), gid)
+            )
 
     def remove_service(self, service: Service) -> None:
         """Stop serving ``service`` elsewhere; a server elsewhere may stand in for it again."""
@@ -222,7 +230,9 @@ class ServiceBridge:
         standin, future = item
         if not future.done():
             future.set_exception(
-                ServiceError(f"service {standin.service_name}: no answer from {standin.provider} (did its process stop?)")
+                ServiceError(
+                    f"service {standin.service_name}: no answer from {standin.provider} (did its process stop?)"
+                )
             )
 
     def _fail_calls(self, standin: RemoteService, reason: str) -> None:
@@ -251,7 +261,7 @@ def _finish(query: Any, *, error: str = "", key: str = "", payload: bytes = b"",
             query.reply_err(error.encode())
         else:
             query.reply(key, payload, attachment=attachment)
-    except Exception:  # noqa: BLE001 - the querier or our session went away meanwhile
+    except Exception:
         pass
     finally:
         query.drop()

@@ -138,7 +138,7 @@ class TopicBridge:
         out.sequence += 1
         try:
             out.zpub.put(payload, attachment=pack(out.sequence, link.now_ns(), out.endpoint.gid))
-        except Exception as exc:  # noqa: BLE001 - the session closing under us
+        except Exception as exc:
             link.warn_once(out.endpoint.key, "put", f"cannot send {pub.topic_name}: {exc}")
 
     def remove_publisher(self, pub: Publisher) -> None:
@@ -190,7 +190,9 @@ class TopicBridge:
                 subscriber_detection=True,
             )
         else:
-            incoming.zsub = link.session.declare_subscriber(incoming.key, callback, allowed_origin=zenoh.Locality.REMOTE)
+            incoming.zsub = link.session.declare_subscriber(
+                incoming.key, callback, allowed_origin=zenoh.Locality.REMOTE
+            )
         incoming.history = history
 
     def _deliver(self, item: tuple[_In, Any]) -> None:

@@ -36,8 +36,8 @@ import anyio.abc
 
 from actors.errors import TransportError
 from actors.launch.graph_file import TransportSection
-from actors.services import Client, Service
 from actors.ros.topics import Publisher, Subscription, Topic
+from actors.services import Client, Service
 from actors.transport.seam import Hub, RemoteNode, is_proxy
 from actors.transport.zenoh.config import domain_id, load_zenoh, session_config
 from actors.transport.zenoh.discovery import Discovery

@@ -21,12 +21,12 @@ from collections.abc import Awaitable, Callable
 from functools import partial
 from typing import TYPE_CHECKING, Any
 
-from actors.ros.actions import ActionClient as NativeClient
-from actors.ros.actions import ClientGoalHandle as NativeGoal
 from actors.compat.activity import Waiter
 from actors.compat.dispatch import ScriptNode
 from actors.compat.rclpy.action.base import ActionWork, GoalHandle
 from actors.compat.rclpy.task import Future, await_or_execute
+from actors.ros.actions import ActionClient as NativeClient
+from actors.ros.actions import ClientGoalHandle as NativeGoal
 from actors.ros.node import Node as NativeNode
 from interfaces.action_msgs.msg import GoalStatus
 from interfaces.action_msgs.srv import CancelGoal
@@ -218,8 +218,9 @@ class ActionClient(ActionWork):
         self._session.call(drop)
 
 
-async def _complete(future: Future[Any], task: asyncio.Task[Any], convert: Callable[[Any], Any] | None,
-                    node: ScriptNode) -> None:
+async def _complete(
+    future: Future[Any], task: asyncio.Task[Any], convert: Callable[[Any], Any] | None, node: ScriptNode
+) -> None:
     # On the executor's thread: the answer completes the script's future, whose done callbacks
     # become tasks of this executor (as rclpy's futures of a waitable).
     future._set_executor(node.executor)

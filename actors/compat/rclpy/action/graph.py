@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from actors.system.introspection import ActionInfo
 from actors.ros.names import fully_qualified, normalize_namespace
+from actors.system.introspection import ActionInfo
 
 __all__ = [
     "get_action_client_names_and_types_by_node",

@@ -25,13 +25,13 @@ from collections.abc import Callable
 from functools import partial
 from typing import Any
 
-from actors.ros.actions import ActionServer as NativeServer
-from actors.ros.actions import CancelResponse, GoalEvent, GoalResponse
-from actors.ros.actions import ServerGoalHandle as NativeGoal
 from actors.compat.dispatch import ScriptNode
 from actors.compat.rclpy.action.base import ActionWork, GoalHandle
 from actors.compat.rclpy.task import Task, await_or_execute
 from actors.errors import ActionError
+from actors.ros.actions import ActionServer as NativeServer
+from actors.ros.actions import CancelResponse, GoalEvent, GoalResponse
+from actors.ros.actions import ServerGoalHandle as NativeGoal
 from actors.ros.node import Node as NativeNode
 from interfaces.action_msgs.msg import GoalStatus
 
@@ -186,8 +186,13 @@ class ActionServer(ActionWork):
         # On the runtime's thread: the native server, its entities driven before a request can come
         # (a goal parked before the server existed arrives as soon as it does).
         self._native = NativeNode.create_action_server(
-            self._node, self._action_type, action_name, self._executing_default,
-            goal=self._catch_goal, cancel=self._catch_cancel, accepted=self._catch_accepted,
+            self._node,
+            self._action_type,
+            action_name,
+            self._executing_default,
+            goal=self._catch_goal,
+            cancel=self._catch_cancel,
+            accepted=self._catch_accepted,
             result_timeout=result_timeout,
         )
 
@@ -320,4 +325,3 @@ def _settle_threadsafe(loop: asyncio.AbstractEventLoop, done: asyncio.Future[Any
         loop.call_soon_threadsafe(_settle, done, outcome, None)
     except RuntimeError:  # the loop closed meanwhile: nobody waits any more
         pass
-
