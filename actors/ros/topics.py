@@ -51,6 +51,14 @@ A subscription callback may refuse a message by raising
 (:mod:`actors.ros._refusals`), and the node keeps running; anything else a callback
 raises crashes the node, for its supervisor to restart.
 
+Each publisher is in one of the :class:`PublisherState` states and each
+subscription in one of the :class:`SubscriptionState` states.  The hot path
+keeps them in the fields it reads anyway (a state attribute would cost a read
+and a compare on every publish); ``state`` reads the fields back into the
+named state, and ``invariant_violations`` (per endpoint and for the whole
+table) checks that the fields agree with each other.  The tests call it after
+every step of their random graphs.
+
 Endpoints are kept in dicts used as insertion-ordered sets (``{endpoint: None}``):
 creation order is kept, and removing one endpoint costs O(1), so stopping a
 graph of 10,000 nodes that share a topic is linear, not quadratic.
@@ -61,6 +69,7 @@ from __future__ import annotations
 import sys
 from collections import deque
 from collections.abc import Awaitable, Callable, Iterator
+from enum import Enum
 from inspect import isawaitable
 from operator import length_hint
 from typing import Any, Protocol
@@ -84,6 +93,8 @@ from actors.ros.qos import (
 )
 
 __all__ = [
+    "PublisherState",
+    "SubscriptionState",
     "type_name",
     "warn_incompatible",
     "Expiring",
@@ -129,8 +140,47 @@ class Expiring:
         return repr(self.msg)  # what a dead letter shows
 
 
-#: A publisher's ``_pending`` when it feeds each queue directly but shares its topic with
-#: others: before it delivers, it closes the batch another may have open.
+class PublisherState(Enum):
+    """The path ``publish()`` takes, as the publisher's fields encode it (see :attr:`Publisher.state`).
+
+    ========================  ==========================  =========================================
+    state                     fields                      publish()
+    ========================  ==========================  =========================================
+    ``STALE``                 ``_feeds is None``          settles the path first (``_refeed``)
+    ``DIRECT``                ``_pending is None``        feeds each queue itself (``_only``: the
+                                                          one queue, inlined); alone on its topic
+    ``DIRECT_SHARED``         ``_pending is _SHARED``     the same, after closing the batch another
+                                                          publisher of its topic may hold open
+    ``BATCHING``              ``_pending == []``          opens a batch and wakes its feeds once
+    ``BATCH_OPEN``            ``_pending`` a non-empty    one append to the batch, which every feed
+                              list; ``topic.dirty`` is    holds (``Subscription._batch``)
+                              this publisher
+    ========================  ==========================  =========================================
+    """
+
+    STALE = "stale"
+    DIRECT = "direct"
+    DIRECT_SHARED = "direct, topic shared"
+    BATCHING = "batching, none open"
+    BATCH_OPEN = "batch open"
+
+
+class SubscriptionState(Enum):
+    """Where a subscription's messages wait, as its fields encode it (see :attr:`Subscription.state`).
+
+    ``_limit`` is the queue length at which an arriving message must go through
+    ``_evict``: the depth while ``IDLE``; 0 while a batch is held (what arrives
+    moves the batch into the queue first) and while a round's rest counts
+    against the depth.
+    """
+
+    IDLE = "idle"  # messages wait in _queue only; _limit is the depth
+    HOLDING_BATCH = "holding a batch"  # _batch is a publisher's list, after _queue; _limit is 0
+    IN_ROUND = "in a round"  # _round iterates the round's rest; _limit is 0 while the rest counts
+
+
+#: A publisher's ``_pending`` in :attr:`PublisherState.DIRECT_SHARED`.  An empty tuple, so that
+#: publish()'s ``if pending:`` stays a C-level truth test for every state.
 _SHARED: Any = ()
 
 
@@ -186,6 +236,45 @@ class Publisher:
         self._pending: list[Any] | None = None
         self._bound = 0  # the batch is closed when it holds this many: the deepest feed's depth
         self._only: Subscription | None = None  # see _refeed
+
+    @property
+    def state(self) -> PublisherState:
+        """The path the next ``publish()`` takes (:class:`PublisherState`), read off the fields."""
+        if self._feeds is None:
+            return PublisherState.STALE
+        pending = self._pending
+        if pending is None:
+            return PublisherState.DIRECT
+        if pending is _SHARED:
+            return PublisherState.DIRECT_SHARED
+        return PublisherState.BATCH_OPEN if pending else PublisherState.BATCHING
+
+    def invariant_violations(self) -> list[str]:
+        """What in this publisher's fields contradicts its state: empty when they agree (tests call it)."""
+        state, topic, feeds, pending = self.state, self._topic, self._feeds, self._pending
+        found = []
+        if state is PublisherState.STALE:
+            if pending is not None or self._only is not None:
+                found.append("stale, yet a path is set")
+            return found
+        assert feeds is not None
+        if self._only is not None and (feeds != (self._only,) or self._history is not None or self._tracked):
+            found.append("_only set, but it is not the one plain feed")
+        if state is PublisherState.DIRECT_SHARED and (topic is None or len(topic.publishers) < 2):
+            found.append("direct-shared, but alone on its topic")
+        if state in (PublisherState.BATCHING, PublisherState.BATCH_OPEN):
+            if topic is None or len(feeds) < 2 or self._history is not None or self._tracked:
+                found.append("batching, but not a publisher of several plain feeds")
+            elif any(type(s) is not Subscription or s._topic is not topic for s in feeds):
+                found.append("batching into a feed that is not a plain subscription of its topic")
+            elif self._bound != max(s._depth for s in feeds):
+                found.append("a batch bound other than the deepest feed's depth")
+        is_dirty = topic is not None and topic.dirty is self
+        if (state is PublisherState.BATCH_OPEN) != is_dirty:
+            found.append("a batch open but not the topic's dirty publisher, or the reverse")
+        if state is PublisherState.BATCH_OPEN and any(s._batch is not pending for s in feeds):
+            found.append("a batch open that a feed does not hold")
+        return [f"publisher on {self.topic_name} ({state.value}): {what}" for what in found]
 
     def publish(self, msg: Any) -> None:
         """Deliver a snapshot of ``msg`` to every matched subscription.  Never blocks.
@@ -441,6 +530,29 @@ class Subscription(Mailbox):
         self._batch: list[Any] | None = None
         self._topic: Topic | None = None  # set by the topic table
         self._senders: deque[tuple[Any, Publisher]] | None = None  # see track_senders
+
+    @property
+    def state(self) -> SubscriptionState:
+        """Where this subscription's messages wait (:class:`SubscriptionState`), read off the fields."""
+        if self._batch is not None:
+            return SubscriptionState.HOLDING_BATCH
+        return SubscriptionState.IDLE if self._round is None else SubscriptionState.IN_ROUND
+
+    def invariant_violations(self) -> list[str]:
+        """What in this subscription's fields contradicts its state: empty when they agree (tests call it)."""
+        state, limit = self.state, self._limit
+        found = []
+        if limit not in (0, self._depth):
+            found.append(f"_limit {limit} is neither 0 nor the depth")
+        if state is SubscriptionState.IDLE and limit != self._depth:
+            found.append("idle with _limit 0: an arrival would go through _evict for nothing")
+        if state is SubscriptionState.HOLDING_BATCH and limit != 0:
+            found.append("a batch held but _limit is the depth: an arrival would not move it first")
+        if state is SubscriptionState.IN_ROUND and limit != 0 and length_hint(self._round) > 0:  # type: ignore[arg-type]
+            found.append("a round's rest not counted against the depth")
+        if self._batch is not None and self._queue is None:
+            found.append("a batch held without a queue to move it into")
+        return [f"subscription {self.node.fqn} on {self.topic_name} ({state.value}): {what}" for what in found]
 
     @property
     def dropped(self) -> int:
@@ -709,6 +821,20 @@ class TopicTable:
             )
         return topic
 
+    def invariant_violations(self) -> list[str]:
+        """Every endpoint's :meth:`~Publisher.invariant_violations`, and each topic's: at most one
+        batch open, held by a publisher of the topic.  Empty when all agree (tests call it)."""
+        found = []
+        for topic in self.topics.values():
+            dirty = topic.dirty
+            if dirty is not None and (dirty not in topic.publishers or dirty.state is not PublisherState.BATCH_OPEN):
+                found.append(f"topic {topic.name}: its dirty publisher has no batch open here")
+            for pub in topic.publishers:
+                found += pub.invariant_violations()
+            for sub in topic.subscriptions:
+                found += sub.invariant_violations()
+        return found
+
     def add_publisher(self, pub: Publisher) -> None:
         """Register ``pub`` and connect it to every compatible subscription."""
         topic = self._topic_for(pub.topic_name, pub.msg_type, "a publisher", pub.node.fqn)
@@ -730,10 +856,10 @@ class TopicTable:
         topic.subscriptions[sub] = None
         sub._topic = topic
         for pub in topic.publishers:
-            if self._match(pub, sub) and replay and pub._history:
-                if sub.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL:
-                    for msg in pub._history:
-                        sub._push(msg)
+            latched = sub.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL
+            if self._match(pub, sub) and replay and pub._history and latched:
+                for msg in pub._history:
+                    sub._push(msg)
         for listener in self.listeners:
             listener.endpoint_added(topic, sub)
 
