@@ -333,7 +333,9 @@ class Publisher:
             sub._push(msg)
         if self._tracked:  # rare: subscriptions that refused messages (Subscription.track_senders)
             for sub in self._tracked:
-                sub._senders.append((msg, self))  # type: ignore[union-attr]
+                senders = sub._senders
+                assert senders is not None  # track_senders() made it before tracking
+                senders.append((msg, self))
 
     def _refeed(self) -> None:
         """The feeds, after a change: whether this publisher batches is settled here.
@@ -368,13 +370,13 @@ class Publisher:
         A publisher fed directly that shares its topic first closes another's open batch.
         """
         if pending is _SHARED:
-            dirty = self._topic.dirty  # type: ignore[union-attr]
+            dirty = self._topic.dirty  # type: ignore[union-attr]  # DIRECT_SHARED: a topic, shared
             if dirty is not None:
                 dirty._close()  # another publisher's batch comes first: it was published first
             return False
         if type(msg) is not self.msg_type:
             return False  # the usual path raises the TypeError
-        self._open(self._snapshot(msg), self._feeds)  # type: ignore[arg-type]
+        self._open(self._snapshot(msg), self._feeds)  # type: ignore[arg-type]  # BATCHING: feeds are settled
         return True
 
     def _open(self, msg: Any, feeds: tuple[Subscription, ...]) -> None:
@@ -516,8 +518,9 @@ class Subscription(Mailbox):
         self._expiring = False  # fed by a publisher with a lifespan: its queue may hold Expiring items
         super().__init__(node.actor)
         # The queue is made when a publisher first feeds it (TopicTable._match): an
-        # unmatched subscription's empty deque would cost 760 bytes.
-        self._queue: deque[Any] | None = None
+        # unmatched subscription's empty deque would cost 760 bytes.  Typed as always there,
+        # since every path that reads it runs after a match (the checks for None say so).
+        self._queue: deque[Any] = None  # type: ignore[assignment]
         self._depth = qos.depth if qos.history == HistoryPolicy.KEEP_LAST else sys.maxsize
         # The length at which an arriving message must go through _evict: the depth, or 0
         # while a round runs (the round's rest then counts against the depth too) or a batch
@@ -548,7 +551,8 @@ class Subscription(Mailbox):
             found.append("idle with _limit 0: an arrival would go through _evict for nothing")
         if state is SubscriptionState.HOLDING_BATCH and limit != 0:
             found.append("a batch held but _limit is the depth: an arrival would not move it first")
-        if state is SubscriptionState.IN_ROUND and limit != 0 and length_hint(self._round) > 0:  # type: ignore[arg-type]
+        rest = self._round
+        if rest is not None and limit != 0 and length_hint(rest) > 0:
             found.append("a round's rest not counted against the depth")
         if self._batch is not None and self._queue is None:
             found.append("a batch held without a queue to move it into")
@@ -599,24 +603,25 @@ class Subscription(Mailbox):
             self._unbatch()  # what arrives now comes after the batch
         rest = self._round
         left = length_hint(rest) if rest is not None else 0
-        if left + len(self._queue) < self._depth:  # type: ignore[arg-type]
+        if left + len(self._queue) < self._depth:
             return
-        if left:
-            next(rest)  # type: ignore[arg-type]
+        if rest is not None and left:
+            next(rest)
         else:
-            self._queue.popleft()  # type: ignore[union-attr]
+            self._queue.popleft()
         self._dropped += 1
 
     def _unbatch(self) -> None:
         """Move the batch held into the queue, after what waits there; drop (and count) what KEEP_LAST drops."""
         batch, self._batch = self._batch, None
+        assert batch is not None  # called only while a batch is held
         queue = self._queue
-        queue.extend(batch)  # type: ignore[union-attr, arg-type]
-        over = len(queue) - self._depth  # type: ignore[arg-type]
+        queue.extend(batch)
+        over = len(queue) - self._depth
         if over > 0:
             self._dropped += over  # as many as dropping one by one would have dropped
             for _ in range(over):
-                queue.popleft()  # type: ignore[union-attr]
+                queue.popleft()
         self._limit = self._depth  # no round runs while a batch is held (see _run)
 
     def _adopt(self, old: Mailbox) -> None:
@@ -687,15 +692,15 @@ class Subscription(Mailbox):
         # queues behind them, with the round's rest counted against the depth (see _evict).
         batch = self._batch
         if batch is None:  # an open batch, if any, is not for this subscription (Publisher._open)
-            batch = self._queue
-            if len(batch) == 1:  # type: ignore[arg-type]
-                rest = iter((batch.popleft(),))  # type: ignore[union-attr]
+            queue = self._queue
+            if len(queue) == 1:
+                rest = iter((queue.popleft(),))
             else:
                 self._queue = deque()
-                rest = iter(batch)  # type: ignore[arg-type]
+                rest = iter(queue)
                 self._limit = 0
         else:
-            dirty = self._topic.dirty  # type: ignore[union-attr]
+            dirty = self._topic.dirty  # type: ignore[union-attr]  # a batch held: a topic's
             if dirty is not None:
                 dirty._close()  # this round may read the open batch: nothing more joins it
             if self._queue or len(batch) > self._depth:
@@ -737,7 +742,7 @@ class Subscription(Mailbox):
         rest, self._round = self._round, None
         self._limit = self._depth
         if rest is not None:
-            self._queue.extendleft(reversed(list(rest)))  # type: ignore[union-attr]
+            self._queue.extendleft(reversed(list(rest)))
 
     async def _run_async(self, pending: Awaitable[Any], msg: Any) -> None:
         # An async callback: await it, then the rest of the round.
@@ -747,7 +752,9 @@ class Subscription(Mailbox):
             except MessageRefused as refusal:
                 self._refuse(msg, refusal)
             callback = self._call_unexpired if self._expiring else self.callback
-            for msg in self._round:  # type: ignore[union-attr]
+            rest = self._round
+            assert rest is not None  # the round this callback belongs to
+            for msg in rest:
                 try:
                     result = callback(msg)
                     if result is not None and isawaitable(result):
@@ -812,7 +819,9 @@ class TopicTable:
         if topic is None:
             topic = self.topics[name] = Topic(name, msg_type)
         elif topic.msg_type is not msg_type:
-            other = next(iter(topic.publishers or topic.subscriptions))
+            other: Publisher | Subscription = (
+                next(iter(topic.publishers)) if topic.publishers else next(iter(topic.subscriptions))
+            )
             raise TopicTypeError(
                 f"cannot create {endpoint} of {type_name(msg_type)} on {name} for node "
                 f"{node}: the topic already carries {type_name(topic.msg_type)} "
