@@ -26,7 +26,7 @@ import sys
 from collections.abc import Callable
 from pathlib import Path
 from types import ModuleType
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 import msgspec
 import msgspec.inspect as mi
@@ -61,9 +61,18 @@ __all__ = [
 
 T = TypeVar("T")
 
+if TYPE_CHECKING:
+    _F = TypeVar("_F", bound=Callable[..., Any])
+
+    # functools.cache, as mypy sees it: the function's own signature.  typeshed's wrapper takes
+    # Hashable arguments, and mypy counts no class object (type[T]) as Hashable.
+    def _cache(function: _F) -> _F: ...
+else:
+    _cache = functools.cache
+
 _roots: list[Path] = []  # user roots, newest first; the shipped root is implied last
-_registered: dict[str, type] = {}  # from register_module
-_types: dict[str, type] = {}  # every name already resolved, in the form it was asked for
+_registered: dict[str, type[Any]] = {}  # from register_module
+_types: dict[str, type[Any]] = {}  # every name already resolved, in the form it was asked for
 _msgpack_encoder = msgspec.msgpack.Encoder()
 _json_encoder = msgspec.json.Encoder()
 _msgpack_decoders: dict[Any, msgspec.msgpack.Decoder[Any]] = {}
@@ -73,7 +82,7 @@ _json_decoders: dict[Any, msgspec.json.Decoder[Any]] = {}
 # --------------------------------------------------------------------------- registry
 
 
-def get_type(name: str) -> type:
+def get_type(name: str) -> type[Any]:
     """The message, service or action class named ``pkg/msg/Name``, ``pkg/srv/Name``,
     ``pkg/action/Name`` or ``pkg/Name``.
 
@@ -168,16 +177,16 @@ def register_module(module: ModuleType | str) -> list[str]:
     if isinstance(module, str):
         module = importlib.import_module(module)
     found = {
-        value.__ros_type__: value
+        ros_type: value
         for value in vars(module).values()
-        if isinstance(value, type) and isinstance(getattr(value, "__ros_type__", None), str)
+        if isinstance(value, type) and isinstance(ros_type := getattr(value, "__ros_type__", None), str)
     }
     _registered.update(found)
     _types.clear()
     return sorted(found)
 
 
-def _import_type(full_name: str) -> type | None:
+def _import_type(full_name: str) -> type[Any] | None:
     pkg, kind, name = full_name.split("/")
     if not (pkg.isidentifier() and name.isidentifier()):
         return None
@@ -270,7 +279,7 @@ def decode_cdr(data: bytes | bytearray | memoryview, type_: type[T] | str) -> T:
     return cdr.decode(data, _resolve(type_))
 
 
-def type_hash(type_: type | str) -> str:
+def type_hash(type_: type[Any] | str) -> str:
     """``RIHS01_<64 hex>``: the hash ROS 2 names a message, service or action type by (REP 2016).
 
     Raises UnknownInterfaceError for an unknown name, TypeError for a class
@@ -360,7 +369,7 @@ def dump_yaml(data: Any) -> str:
     return yaml.safe_dump(data, sort_keys=False, default_flow_style=False, allow_unicode=True, width=sys.maxsize)
 
 
-@functools.cache
+@_cache
 def _info(cls: type) -> mi.Type:
     return mi.type_info(cls)
 
@@ -397,7 +406,7 @@ def _coerce(obj: Any, info: mi.Type) -> Any:
 # --------------------------------------------------------------------------- schemas
 
 
-def json_schema(type_: type | str) -> dict[str, Any]:
+def json_schema(type_: type[Any] | str) -> dict[str, Any]:
     """The JSON Schema of a message type: an ``object`` titled with its ROS name.
 
     Nested message types are under ``$defs``, each titled with its ROS name.
@@ -421,7 +430,7 @@ def json_schema(type_: type | str) -> dict[str, Any]:
     return {**top, "$defs": definitions} if definitions else top
 
 
-def definition_text(type_: type | str) -> str:
+def definition_text(type_: type[Any] | str) -> str:
     """The MCAP ``ros2msg`` schema text of a message type, exactly as rosbag2 writes it.
 
     Its own definition, then for each message type it names (in the order of
@@ -434,7 +443,7 @@ def definition_text(type_: type | str) -> str:
     cls = _resolve(type_)
     seen: set[str] = set()
 
-    def text_of(cls: type) -> str:
+    def text_of(cls: type[Any]) -> str:
         text = cls.__ros_definition__
         for name in sorted(_named_types(text, cls.__ros_type__.split("/")[0])):
             if name not in seen:
@@ -460,16 +469,16 @@ def _named_types(text: str, package: str) -> set[str]:
     return found
 
 
-def _dependencies(cls: type) -> list[type]:
+def _dependencies(cls: type[Any]) -> list[type[Any]]:
     """Message classes ``cls`` uses, transitively, each once, depth first."""
-    found: dict[type, None] = {}
+    found: dict[type[Any], None] = {}
 
-    def visit(info: mi.Type) -> None:
+    def visit(info: mi.StructType) -> None:
         for field in info.fields:
             nested = field.type.item_type if isinstance(field.type, mi.ListType) else field.type
             if isinstance(nested, mi.StructType) and nested.cls not in found:
                 found[nested.cls] = None
                 visit(nested)
 
-    visit(_info(cls))
+    visit(cast(mi.StructType, _info(cls)))  # a message class is a msgspec Struct
     return list(found)

@@ -43,7 +43,7 @@ from __future__ import annotations
 import asyncio
 import contextvars
 from collections.abc import Awaitable, Callable
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 from actors.core.loops import loop_clock
 
@@ -54,6 +54,12 @@ class Entity(Protocol):
     """Something a node runs: a subscription, a timer, a service."""
 
     def _run(self) -> Awaitable[None] | None: ...
+
+
+class _Schedules(Protocol):
+    """What a mailbox wakes: its node's Actor, or a stand-in that runs it at once (an action client's feedback)."""
+
+    def schedule(self, entity: Entity) -> None: ...
 
 
 class Owner(Protocol):
@@ -230,7 +236,7 @@ class Actor:
                 return
         self.current = None
         if self._ready:  # _next, inlined: a frame less per round
-            self._scheduler.wake(self)  # type: ignore[union-attr]
+            self._scheduler.wake(self)  # type: ignore[union-attr]  # a round runs under a scheduler, never after run()
         else:
             self._queued = False
 
@@ -273,7 +279,7 @@ class Actor:
 
     def _next(self) -> None:
         if self._ready:
-            self._scheduler.wake(self)  # type: ignore[union-attr]
+            self._scheduler.wake(self)  # type: ignore[union-attr]  # as in _round: only after a round
         else:
             self._queued = False
 
@@ -325,10 +331,14 @@ class Mailbox:
 
     __slots__ = ("_queue", "_scheduled", "_actor")
 
+    if TYPE_CHECKING:
+        # Each subclass's own: what makes a mailbox an Entity.
+        def _run(self) -> Awaitable[None] | None: ...
+
     def __init__(self, actor: Actor) -> None:
         self._queue: Any = None
         self._scheduled = False
-        self._actor = actor
+        self._actor: _Schedules = actor
 
     @property
     def queued(self) -> int:

@@ -19,11 +19,50 @@ import weakref
 from collections.abc import Callable
 from contextvars import copy_context
 from heapq import heapify, heappop, heappush
-from typing import Any
+from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from actors.errors import VirtualTimeDeadlock
 
 __all__ = ["VirtualTimeLoop", "loop_clock", "precise_loop", "uvloop_loop", "WALL_LOOPS"]
+
+if TYPE_CHECKING:
+    from collections import deque
+    from concurrent.futures import Executor
+    from contextvars import Context
+    from typing import TypeVarTuple
+
+    _T = TypeVar("_T")
+    _Ts = TypeVarTuple("_Ts")
+
+    # asyncio's private state that this module reads and writes, which typeshed leaves out
+    # (the loop's own fields, a timer handle's, a selector's).  Seen by mypy only: at run time
+    # the bases below are asyncio's and selectors' own classes.
+    class _Timer(asyncio.TimerHandle):
+        _when: float
+        _scheduled: bool
+        _callback: Callable[..., object]
+        _context: Context
+
+    class _Selector(selectors.DefaultSelector):
+        _selector: Any  # the epoll (or poll) object of an EpollSelector
+        _fd_to_key: dict[int, selectors.SelectorKey]
+
+    class _SelectorLoop(asyncio.SelectorEventLoop):
+        _debug: bool
+        _closed: bool
+        _stopping: bool
+        _clock_resolution: float
+        _ready: deque[asyncio.Handle]
+        _scheduled: list[_Timer]
+        _timer_cancelled_count: int
+        _selector: _JumpingSelector
+        _signal_handlers: dict[int, asyncio.Handle]
+
+        def _run_once(self) -> None: ...
+        def _process_events(self, event_list: list[tuple[selectors.SelectorKey, int]]) -> None: ...
+else:
+    _Selector = selectors.DefaultSelector
+    _SelectorLoop = asyncio.SelectorEventLoop
 
 
 def loop_clock(loop: asyncio.AbstractEventLoop) -> Callable[[], float]:
@@ -94,7 +133,7 @@ def _handle(
     cls: type, callback: Callable[..., object], args: tuple[Any, ...], loop: VirtualTimeLoop, context: Any
 ) -> Any:
     # Handle.__init__ outside debug mode, filled in by one call instead of two (TimerHandle's and Handle's).
-    handle = _new_handle(cls)
+    handle: Any = _new_handle(cls)
     handle._callback = callback
     handle._args = args
     handle._cancelled = False
@@ -109,7 +148,7 @@ _MAX_WAIT = 24 * 3600.0  # asyncio's longest wait in one select (MAXIMUM_SELECT_
 _MIN_SCHEDULED = 100  # asyncio's: below this many timers, cancelled ones are only popped at the head
 
 
-class _JumpingSelector(selectors.DefaultSelector):
+class _JumpingSelector(_Selector):
     """The selector of :class:`VirtualTimeLoop`: polls I/O, then jumps instead of sleeping."""
 
     def __init__(self, loop: VirtualTimeLoop) -> None:
@@ -178,7 +217,7 @@ class _JumpingSelector(selectors.DefaultSelector):
         return events
 
 
-class VirtualTimeLoop(asyncio.SelectorEventLoop):
+class VirtualTimeLoop(_SelectorLoop):
     """An asyncio event loop whose clock jumps to the next timer when nothing is ready.
 
     Use it anywhere a loop factory is taken::
@@ -214,7 +253,7 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
         return self._now
 
     def call_at(
-        self, when: float, callback: Callable[..., object], *args: Any, context: Any = None
+        self, when: float, callback: Callable[[*_Ts], object], *args: *_Ts, context: Context | None = None
     ) -> asyncio.TimerHandle:
         if self._debug or self._closed or when is None or not _LEAN_HANDLES:
             return super().call_at(when, callback, *args, context=context)
@@ -236,16 +275,20 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
         handle still waiting, and in debug mode.  ValueError for a cancelled
         handle (cancelling forgets the callback).
         """
-        if handle._cancelled:
+        # Every timer handle has _Timer's fields; typeshed declares only some of TimerHandle's.
+        timer: _Timer = handle  # type: ignore[assignment]  # see the comment above
+        if timer._cancelled:
             raise ValueError("a cancelled handle cannot be called again")
-        if self._debug or self._closed or handle._scheduled:
-            return self.call_at(when, handle._callback, *handle._args, context=handle._context)
-        handle._when = when
-        heappush(self._scheduled, handle)
-        handle._scheduled = True
-        return handle
+        if self._debug or self._closed or timer._scheduled:
+            return self.call_at(when, timer._callback, *timer._args, context=timer._context)
+        timer._when = when
+        heappush(self._scheduled, timer)
+        timer._scheduled = True
+        return timer
 
-    def call_soon(self, callback: Callable[..., object], *args: Any, context: Any = None) -> asyncio.Handle:
+    def call_soon(
+        self, callback: Callable[[*_Ts], object], *args: *_Ts, context: Context | None = None
+    ) -> asyncio.Handle:
         if self._debug or self._closed or not _LEAN_HANDLES:
             return super().call_soon(callback, *args, context=context)
         handle = _handle(asyncio.Handle, callback, args, self, context)
@@ -266,6 +309,7 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
             self._drop_cancelled()
         scheduled = self._scheduled
         ready = self._ready
+        events: list[tuple[selectors.SelectorKey, int]] | None
         if ready or self._stopping:
             events = self._selector.select(0)
         elif scheduled:
@@ -279,12 +323,13 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
         events = None  # no cycle through a handle's exception
         end = self._now + self._clock_resolution
         while scheduled and scheduled[0]._when < end:
-            handle = heappop(scheduled)
-            handle._scheduled = False
-            ready.append(handle)
+            timer = heappop(scheduled)
+            timer._scheduled = False
+            ready.append(timer)
         # Only what is ready now: callbacks scheduled by these run in the next iteration, after a poll.
         popleft = ready.popleft
         todo = len(ready)  # counted down: a range object costs more than the one or two handles of an instant
+        handle: asyncio.Handle | None
         while todo:
             todo -= 1
             handle = popleft()
@@ -348,7 +393,7 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
             raise ValueError("virtual time cannot go backwards")
         self._now += seconds
 
-    def run_in_executor(self, executor: Any, func: Any, *args: Any) -> asyncio.Future[Any]:
+    def run_in_executor(self, executor: Executor | None, func: Callable[[*_Ts], _T], *args: *_Ts) -> asyncio.Future[_T]:
         future = super().run_in_executor(executor, func, *args)
         self._threads.jobs += 1
         future.add_done_callback(self._executor_job_done)
@@ -396,4 +441,5 @@ def _anyio_run_vars() -> tuple[dict[Any, dict[Any, Any]], Any]:
         from anyio.lowlevel import _run_vars
     except ImportError:  # pragma: no cover - a future anyio
         return {}, None
-    return _run_vars.data, _default_thread_limiter
+    # .data: the WeakKeyDictionary's own dict, which typeshed does not declare.
+    return cast(Any, _run_vars).data, _default_thread_limiter

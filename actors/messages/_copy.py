@@ -421,7 +421,7 @@ def _sized(items: Any, path: str, shape: Shape) -> None:
     kind, size, spelled = shape
     if kind == "fixed" and len(items) != size:
         raise _Invalid(path, f"expected {size} items ({spelled}), got {len(items)}")
-    if kind == "bounded" and len(items) > size:  # type: ignore[operator]
+    if kind == "bounded" and len(items) > size:  # type: ignore[operator]  # a bounded shape has its size: no None test on the copy path
         raise _Invalid(path, f"expected at most {size} items ({spelled}), got {len(items)}")
 
 

@@ -16,7 +16,9 @@ into the type description, though the Python class has no such attribute.
 from __future__ import annotations
 
 import functools
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import msgspec.inspect as mi
 
@@ -24,6 +26,15 @@ from actors.errors import InterfaceError
 from actors.messages.idl import Field, FieldType, MessageSpec, parse_message
 
 __all__ = ["FieldLayout", "MessageLayout", "PLACEHOLDER", "layout"]
+
+if TYPE_CHECKING:
+    _F = TypeVar("_F", bound=Callable[..., Any])
+
+    # functools.cache, as mypy sees it: the function's own signature.  typeshed's wrapper takes
+    # Hashable arguments, and mypy counts no class object (type[T]) as Hashable.
+    def _cache(function: _F) -> _F: ...
+else:
+    _cache = functools.cache
 
 #: The field rosidl adds to a message that has none.
 PLACEHOLDER = Field("structure_needs_at_least_one_member", FieldType("uint8"), None, 0)
@@ -53,7 +64,7 @@ class MessageLayout:
     placeholder: bool
 
 
-@functools.cache
+@_cache
 def layout(cls: type) -> MessageLayout:
     """The layout of a generated message class (a ``Request``/``Response`` or action part too).
 

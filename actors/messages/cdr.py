@@ -129,6 +129,7 @@ def min_size(lay: MessageLayout) -> int:
             total += 4
             continue
         count = type_.size if type_.array == "fixed" else 1
+        assert count is not None  # a fixed array has its size
         if type_.is_nested:
             assert field.nested is not None
             total += count * min_size(field.nested)
@@ -260,6 +261,7 @@ def _run_items(items: list[tuple[str, int, int, str, str]], phase: int) -> list[
 def _scalar_item(type_: FieldType, argument: str, path: str) -> tuple[str, int, int, str, str]:
     code, size = _PRIMITIVES[type_.base]
     if type_.array == "fixed":
+        assert type_.size is not None  # a fixed array has its size
         if type_.base in OCTETS:
             return f"{type_.size}s", type_.size, 1, argument, path
         return f"{type_.size}{code}", size * type_.size, size, f"*{argument}", path
@@ -471,6 +473,7 @@ def _flush_decode(src: _Source) -> None:
     for token, type_, item in pending:
         start = starts[item]
         if type_.array == "fixed" and type_.base not in OCTETS:
+            assert type_.size is not None  # a fixed array has its size
             src.values[token] = f"list({values}[{start}:{start + type_.size}])"
         else:
             src.values[token] = f"{values}[{start}]"
@@ -619,7 +622,7 @@ def _problem(lay: MessageLayout, value: Any, path: str) -> tuple[str, str] | Non
             found = where, f"expected a sequence, got {type(item).__name__}"
         elif type_.array == "fixed" and len(item) != type_.size:
             found = where, f"expected exactly {type_.size} items, got {len(item)}"
-        elif type_.array == "bounded" and len(item) > type_.size:
+        elif type_.array == "bounded" and type_.size is not None and len(item) > type_.size:
             found = where, f"expected at most {type_.size} items, got {len(item)}"
         elif type_.base in OCTETS:
             found = None

@@ -30,7 +30,7 @@ import keyword
 import math
 from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeGuard, TypeVar, cast
 
 from actors.errors import IdlError, InterfaceError
 from actors.messages.idl import (
@@ -64,8 +64,15 @@ _PYTHON_TYPE = (
 )
 
 
+_S = TypeVar("_S")
+
+
+def _every(specs: Sequence[object], kind: type[_S]) -> TypeGuard[Sequence[_S]]:
+    return all(isinstance(spec, kind) for spec in specs)
+
+
 def render_module(
-    specs: Sequence[MessageSpec] | Sequence[ServiceSpec] | Sequence[ActionSpec],
+    specs: Sequence[MessageSpec | ServiceSpec | ActionSpec],
     *,
     modules: Mapping[str, str],
     sources: str,
@@ -77,19 +84,19 @@ def render_module(
     files in the docstring.  Raises IdlError for a message that (indirectly)
     contains itself.
     """
-    if all(isinstance(spec, MessageSpec) for spec in specs):
+    if _every(specs, MessageSpec):
         local = {spec.ros_type: spec for spec in specs}
         writer = _Writer(modules, {spec.name for spec in specs})
         for spec in _dependencies_first(local):
             writer.struct(spec)
-    elif all(isinstance(spec, ServiceSpec) for spec in specs):
+    elif _every(specs, ServiceSpec):
         suffixes = ("", "_Request", "_Response")
         writer = _Writer(modules, {spec.name + suffix for spec in specs for suffix in suffixes})
         for service in specs:
             writer.service(service)
     else:
         writer = _Writer(modules, {name for spec in specs for name in _action_names(spec)})
-        for action in specs:
+        for action in cast("Sequence[ActionSpec]", specs):  # neither messages nor services: actions
             writer.action(action)
     return writer.source(sources)
 

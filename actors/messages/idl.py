@@ -333,7 +333,10 @@ def _parse_lines(lines: list[str], offset: int, *, path: str, pkg: str, name: st
         if item.name in seen:
             raise IdlError(*where, f"duplicate name {item.name!r}")
         seen.add(item.name)
-        (constants if isinstance(item, Constant) else fields).append(item)
+        if isinstance(item, Constant):
+            constants.append(item)
+        else:
+            fields.append(item)
     text = "\n".join(lines) + "\n" if lines else ""
     return MessageSpec(pkg, name, tuple(fields), tuple(constants), text, path, kind)
 
@@ -354,13 +357,10 @@ def _parse_type(text: str, pkg: str, where: tuple[str, int]) -> FieldType:
     if upper and not size:
         raise IdlError(*where, f"a bounded array needs a size: {text!r}")
     array = None if size is None else "bounded" if upper else "fixed" if size else "unbounded"
-    bounds = {
-        "string_bound": int(string_bound) if string_bound else None,
-        "array": array,
-        "size": int(size) if size else None,
-    }
+    bound = int(string_bound) if string_bound else None
+    count = int(size) if size else None
     if base in PRIMITIVES:
-        return FieldType(base, **bounds)
+        return FieldType(base, string_bound=bound, array=array, size=count)
     parts = base.split("/")
     kind = "msg"
     if len(parts) == 3 and parts[1] in ("msg", "action"):
@@ -371,7 +371,7 @@ def _parse_type(text: str, pkg: str, where: tuple[str, int]) -> FieldType:
     name_form = _ACTION_PART if kind == "action" else TYPE_NAME
     if len(parts) != 2 or not PACKAGE_NAME.fullmatch(parts[0]) or not name_form.fullmatch(parts[1]):
         raise IdlError(*where, f"unknown type {text!r}")
-    return FieldType(parts[1], pkg=parts[0], kind=kind, **bounds)
+    return FieldType(parts[1], pkg=parts[0], kind=kind, string_bound=bound, array=array, size=count)
 
 
 def _parse_field(type_: FieldType, name: str, default: str, number: int, where: tuple[str, int]) -> Field:
@@ -404,7 +404,7 @@ def _parse_value(type_: FieldType, text: str, where: tuple[str, int]) -> Any:
     items = [_parse_scalar(type_, item, where) for item in _split_items(text[1:-1], where)]
     if type_.array == "fixed" and len(items) != type_.size:
         raise IdlError(*where, f"expected {type_.size} values, got {len(items)}")
-    if type_.array == "bounded" and len(items) > type_.size:
+    if type_.array == "bounded" and type_.size is not None and len(items) > type_.size:
         raise IdlError(*where, f"expected at most {type_.size} values, got {len(items)}")
     return bytes(items) if type_.base in OCTETS else items
 
@@ -436,14 +436,15 @@ def _parse_scalar(type_: FieldType, text: str, where: tuple[str, int]) -> Any:
         if type_.string_bound is not None and len(value) > type_.string_bound:
             raise IdlError(*where, f"string longer than its bound {type_.string_bound}: {text!r}")
         return value
+    number: float
     try:
-        value = float(text) if base in FLOATS else int(text)
+        number = float(text) if base in FLOATS else int(text)
     except ValueError:
         raise IdlError(*where, f"expected a {base} value, got {text!r}") from None
-    low, high = INTEGER_RANGES.get(base, (value, value))
-    if not low <= value <= high:
-        raise IdlError(*where, f"{value} is out of range for {base} [{low}, {high}]")
-    return value
+    low, high = INTEGER_RANGES.get(base, (number, number))
+    if not low <= number <= high:
+        raise IdlError(*where, f"{number} is out of range for {base} [{low}, {high}]")
+    return number
 
 
 def _unquote(text: str) -> str:

@@ -55,7 +55,7 @@ _EVENT_INFO = "service_msgs/msg/ServiceEventInfo"
 Description = dict[str, Any]
 
 
-def type_hash(type_: type) -> str:
+def type_hash(type_: type[Any]) -> str:
     """``RIHS01_<64 hex digits>``, the hash ROS 2 gives ``type_`` (a message, service or action class).
 
     Raises TypeError for a class that is not a generated interface type.
@@ -64,7 +64,7 @@ def type_hash(type_: type) -> str:
     return "RIHS01_" + hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
-def type_description(type_: type) -> Description:
+def type_description(type_: type[Any]) -> Description:
     """The hashed form of ``type_``'s description: ``type_description`` and ``referenced_type_descriptions``.
 
     Field dicts hold ``name`` and ``type`` (``type_id``, ``capacity``,
@@ -86,7 +86,7 @@ def _nested_names(description: Description) -> list[str]:
     return [f["type"]["nested_type_name"] for f in description["fields"] if f["type"]["nested_type_name"]]
 
 
-def _describe(type_: type, known: dict[str, Description]) -> Description:
+def _describe(type_: type[Any], known: dict[str, Description]) -> Description:
     """``type_``'s own description; those of every type it uses go into ``known``."""
     if hasattr(type_, "Goal"):
         impl = type_.Impl
@@ -104,7 +104,7 @@ def _describe(type_: type, known: dict[str, Description]) -> Description:
     return _message(layout(type_), known)
 
 
-def _composite(name: str, parts: list[tuple[str, type]], known: dict[str, Description]) -> Description:
+def _composite(name: str, parts: list[tuple[str, type[Any]]], known: dict[str, Description]) -> Description:
     """A type whose fields are whole interfaces (a service's or an action's own description)."""
     fields = []
     for field_name, part in parts:
@@ -114,7 +114,7 @@ def _composite(name: str, parts: list[tuple[str, type]], known: dict[str, Descri
     return known[name]
 
 
-def _service(service: type, known: dict[str, Description]) -> Description:
+def _service(service: type[Any], known: dict[str, Description]) -> Description:
     from interfaces.service_msgs.msg import ServiceEventInfo  # the shipped type every service's event uses
 
     name = service.__ros_type__
