@@ -17,12 +17,12 @@ import gc
 from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from types import TracebackType
-from typing import Any, Protocol, TypeVar
+from typing import Any, Protocol, TypeVar, cast
 
 import anyio
 import anyio.abc
 
-from actors.core._actor import Scheduler
+from actors.core._actor import Owner, Scheduler
 from actors.errors import InvalidNameError
 from actors.ros.log import NodeLogger, console_unless_configured
 from actors.ros.node import Node, NodeCore, SpawnRequest, spawning
@@ -74,7 +74,8 @@ class Runtime:
         self.policy = supervisor or SupervisorPolicy()
         self.topics = TopicTable()
         self.services = ServiceTable()
-        self._owner = _RuntimeEndpointOwner(self)
+        # A partial owner: its publishers read only its fqn, and are never destroyed.
+        self._owner = cast(Owner, _RuntimeEndpointOwner(self))
         self.nodes: dict[str, NodeCore] = {}
         self.graph = GraphView(self)
         self._state = "unopened"
@@ -207,7 +208,7 @@ class Runtime:
                     entity.destroy()
             raise
         self.supervisor.children[child] = None
-        return core.node  # type: ignore[return-value]
+        return cast(N, core.node)  # built from cls
 
     def _begin_burst(self) -> None:
         # The spawns made before the loop runs again are one burst, during which the cyclic
@@ -250,7 +251,8 @@ class Runtime:
     async def stop(self, name: str) -> None:
         """Stop the node ``name`` (full or plain name) for good, running its shutdown hooks."""
         core = self._find(name)
-        await self.supervisor.stop(core.child)
+        # A script node's _ScriptChild has what stop() uses of a Child (state, core).
+        await self.supervisor.stop(cast(Child, core.child))
 
     def node(self, name: str) -> Node:
         """The current instance of the node ``name`` (full ``/ns/name`` or plain name)."""
@@ -273,8 +275,8 @@ class Runtime:
         except BaseException:
             # A constructor that raised half-way: unregister what it built, and keep its
             # mailboxes (and those it inherited) for the next attempt.
-            for core in [c for c in self.nodes.values() if c.child is child]:
-                child.give_back(core.abandon())
+            for built in [c for c in self.nodes.values() if c.child is child]:
+                child.give_back(built.abandon())
             raise
         core = getattr(node, "_core", None)
         if not isinstance(core, NodeCore):

@@ -80,7 +80,7 @@ class Service(Mailbox):
     )
     remote = False  # a transport's stand-in for a server elsewhere, which a local server replaces
 
-    def __init__(self, node: Owner, service_name: str, srv_type: type, handler: Callable[..., Any]) -> None:
+    def __init__(self, node: Owner, service_name: str, srv_type: type[Any], handler: Callable[..., Any]) -> None:
         _check_srv_type(srv_type, "create_service")
         if not callable(handler):
             raise TypeError(f"service handler must be callable, got {handler!r}")
@@ -156,7 +156,7 @@ class Service(Mailbox):
             self._scheduled = False
         return None
 
-    async def _run_async(self, pending: Awaitable[Any], call: _Call, last: _Call) -> None:
+    async def _run_async(self, pending: Awaitable[Any], call: _Call, last: _Call | None) -> None:
         # An async handler: await its response, then serve the calls still due this round, up to ``last``.
         try:
             self._answer(call, await pending)
@@ -217,7 +217,7 @@ class Client:
         "_server",
     )
 
-    def __init__(self, node: Owner, service_name: str, srv_type: type, table: ServiceTable) -> None:
+    def __init__(self, node: Owner, service_name: str, srv_type: type[Any], table: ServiceTable) -> None:
         _check_srv_type(srv_type, "create_client")
         table.want(service_name)
         self.node = node
@@ -408,7 +408,7 @@ class CallTimeouts:
             self._arm(heads[0][0])
 
 
-class _Lane(deque):  # type: ignore[type-arg]
+class _Lane(deque):
     """The calls of one timeout value, in deadline order: ``(deadline, future, client)``."""
 
     __slots__ = ("sweep_at",)
@@ -492,8 +492,11 @@ class Deferred(Protocol):
     creates and registers them for real (through ``ServiceTable.add``).
     """
 
-    owner: Owner
-    kinds: Mapping[str, type]
+    @property
+    def owner(self) -> Owner: ...
+
+    @property
+    def kinds(self) -> Mapping[str, type[Any]]: ...
 
     def build(self) -> None: ...
 

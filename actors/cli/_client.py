@@ -18,7 +18,7 @@ import socket
 import time
 from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import Any, TypeVar, overload
 
 import msgspec
 
@@ -118,7 +118,13 @@ class Connection:
         """The socket's descriptor, so that a selector can wait on several connections."""
         return self._sock.fileno()
 
-    def request(self, request: Request, result_type: type[T] | Any = Any, *, timeout: float | None = 10.0) -> T:
+    @overload
+    def request(self, request: Request, result_type: type[T], *, timeout: float | None = 10.0) -> T: ...
+
+    @overload
+    def request(self, request: Request, result_type: Any = Any, *, timeout: float | None = 10.0) -> Any: ...
+
+    def request(self, request: Request, result_type: Any = Any, *, timeout: float | None = 10.0) -> Any:
         """Send ``request``; return its result as ``result_type``.
 
         Raises ControlError with the graph's reason when the request failed,
@@ -143,7 +149,7 @@ class Connection:
             if not reply.ok:
                 raise ControlError(reply.error)
             if result_type is Any:
-                return reply.result  # type: ignore[no-any-return]
+                return reply.result
             return msgspec.convert(reply.result, result_type)
 
     def _reconnect(self) -> bool:
@@ -276,7 +282,15 @@ def connect(graph: str | Path | None) -> Connection:
     raise ControlError(f"several actors graphs are running ({', '.join(live)}): choose one with --graph NAME")
 
 
-def query(args: argparse.Namespace, request: Request, result_type: type[T] | Any = Any) -> T:
+@overload
+def query(args: argparse.Namespace, request: Request, result_type: type[T]) -> T: ...
+
+
+@overload
+def query(args: argparse.Namespace, request: Request, result_type: Any = Any) -> Any: ...
+
+
+def query(args: argparse.Namespace, request: Request, result_type: Any = Any) -> Any:
     """Connect to ``args.graph``, make one request and return its result; raises ControlError."""
     with connect(args.graph) as conn:
         return conn.request(request, result_type)
@@ -288,7 +302,7 @@ def graph_snapshot(args: argparse.Namespace) -> GraphSnapshot:
         return conn.graph()
 
 
-def call_service(conn: Connection, service: str, srv_type: type, request: Any, *, timeout: float = 10.0) -> Any:
+def call_service(conn: Connection, service: str, srv_type: type[Any], request: Any, *, timeout: float = 10.0) -> Any:
     """Call ``service`` of ``srv_type`` with the ``request`` message; return the response message.
 
     Raises ControlError for an unknown service, another type, a handler that

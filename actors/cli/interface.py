@@ -152,7 +152,7 @@ def generate_modules(args: argparse.Namespace) -> None:
         print("generated modules are up to date")
 
 
-def _expand(cls: type, comments: bool, depth: int = 0) -> list[str]:
+def _expand(cls: type[Any], comments: bool, depth: int = 0) -> list[str]:
     """The lines of ``cls``'s definition, each nested type's fields under its field, one tab deeper.
 
     As ``ros2 interface show`` does, nested types are shown without comments.

@@ -153,7 +153,7 @@ def import_node_class(use: str, graph: Path | None = None) -> type[Node]:
     if not sep or not module_name or not attr:
         raise ValueError(f"expected 'module:Class', got {use!r}")
     module = import_use(module_name, graph)
-    cls = module
+    cls: Any = module
     for part in attr.split("."):
         cls = getattr(cls, part, None)
         if cls is None:

@@ -52,14 +52,14 @@ import struct
 from collections.abc import Iterable, Iterator
 from contextlib import contextmanager, suppress
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any, cast
 
 import anyio
 import anyio.abc
 import msgspec
 
 from actors import codec
-from actors.core._actor import Actor, CallbackFailed
+from actors.core._actor import Actor, CallbackFailed, Owner
 from actors.core.explain import explain
 from actors.core.tomlfile import MAX_SECONDS
 from actors.errors import ActorsError, ControlError, InterfaceError
@@ -401,7 +401,9 @@ class _Session:
     """One connection's hidden owner of publishers, subscriptions and clients.
 
     It quacks like the NodeCore its entities expect (``fqn``, ``runtime``,
-    ``loop``, ``actor``) without being a node of the graph.
+    ``loop``, ``actor``) without being a node of the graph: a partial
+    :class:`~actors.core._actor.Owner` (cast to one where its entities are
+    made), with no ``destroy_*``, as the session removes its entities itself.
     """
 
     def __init__(self, server: ControlServer, connection: Connection) -> None:
@@ -541,7 +543,7 @@ class _Session:
             clients=pairs("client"),
         )
 
-    def _topic(self, name: str, asked: str) -> tuple[Any, type]:
+    def _topic(self, name: str, asked: str) -> tuple[Any, type[Any]]:
         """The topic ``name`` (None if it does not exist yet) and its type, ``asked`` or its own.
 
         A topic only other processes use (seen through a transport) has the type they give it.
@@ -555,7 +557,10 @@ class _Session:
             raise ControlError(f"unknown topic {name}")
         if topic is not None and msg_type is not None and topic.msg_type is not msg_type:
             raise ControlError(f"topic {name} carries {type_name(topic.msg_type)}, not {asked}")
-        return topic, msg_type or topic.msg_type
+        if msg_type is None:
+            assert topic is not None  # one of them is, as checked above
+            msg_type = topic.msg_type
+        return topic, msg_type
 
     async def _publish(self, request: Publish) -> dict[str, int]:
         name = expand(request.topic, "/", "_")
@@ -563,7 +568,7 @@ class _Session:
         msg = codec.convert(request.msg, msg_type)  # before anything is made: a bad one leaves no trace
         pub = self._publishers.get(name)
         if pub is None:
-            pub = Publisher(self, name, msg_type, QoSProfile(depth=10))  # type: ignore[arg-type]
+            pub = Publisher(cast(Owner, self), name, msg_type, QoSProfile(depth=10))  # see _Session
             self.runtime.topics.add_publisher(pub)
             self._publishers[name] = pub
             await self._reach_other_processes(pub)
@@ -584,7 +589,7 @@ class _Session:
 
     def _subscribe(self, request: Subscribe) -> dict[str, str]:
         name = expand(request.topic, "/", "_")
-        topic, msg_type = self._topic(name, request.type)
+        _, msg_type = self._topic(name, request.type)
         # Best effort and volatile match every publisher; transient local when all
         # publishers keep history, so that a latched topic's last message shows up.
         # Those of other processes count too (a transport's graph view has them).
@@ -606,7 +611,7 @@ class _Session:
         def forward(msg: Any) -> None:  # encoded at once: the outbox bounds what waits
             post(frame(Sample(stamp=clock.monotonic(), msg=msg if content else None)))
 
-        sub = Subscription(self, name, msg_type, forward, qos)  # type: ignore[arg-type]
+        sub = Subscription(cast(Owner, self), name, msg_type, forward, qos)  # see _Session
         self.runtime.topics.add_subscription(sub)
         self._subscriptions.append(sub)
         self.connection.streaming = True
@@ -622,7 +627,7 @@ class _Session:
             raise ControlError(f"service {name} has type {type_name(server.srv_type)}, not {request.type}")
         client = self._clients.get(name)
         if client is None:
-            client = Client(self, name, srv_type, self.runtime.services)  # type: ignore[arg-type]
+            client = Client(cast(Owner, self), name, srv_type, self.runtime.services)  # see _Session
             self._clients[name] = client
         try:
             return await client.call(codec.convert(request.request, srv_type.Request), timeout=request.timeout)

@@ -23,6 +23,7 @@ __all__ = ["differences", "BagExpectation"]
 
 
 def _describe(message: BagMessage) -> str:
+    body: object
     try:
         body = codec.to_builtins(codec.decode_cdr(message.data, message.topic.type))
     except (ActorsError, TypeError, ValueError):

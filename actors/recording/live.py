@@ -27,12 +27,13 @@ from __future__ import annotations
 import asyncio
 import concurrent.futures
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
+from typing import TYPE_CHECKING, Any, Protocol, cast, runtime_checkable
 
 import anyio
 import anyio.abc
 
 from actors import codec
+from actors.core._actor import Owner
 from actors.errors import ActorsError
 from actors.recording.tap import Tap, TapOwner, TapSet, latched
 from actors.ros.names import is_hidden_name
@@ -233,8 +234,8 @@ class FoxgloveView:
     def _replay_latched(self, topic_name: str) -> None:
         tap, runtime = self._taps.taps.get(topic_name), self._runtime
         topic = None if runtime is None else runtime.topics.topics.get(topic_name)
-        if tap is not None and topic is not None:
-            for msg in latched(topic, runtime.loop.time()):  # type: ignore[union-attr]
+        if tap is not None and topic is not None and runtime is not None:
+            for msg in latched(topic, runtime.loop.time()):
                 self._deliver(tap, msg)
 
     def _deliver(self, tap: Tap, msg: Any) -> None:
@@ -270,7 +271,10 @@ class FoxgloveView:
         except Exception as exc:  # a type with no ROS definition: say so once, serve the rest
             service.node.logger.warning(f"foxglove: leaving out service {name}: {exc}")
             return
-        client = Client(self._owner, name, srv_type, self._runtime.services)  # type: ignore[arg-type, union-attr]
+        runtime, owner = self._runtime, self._owner
+        assert runtime is not None and owner is not None  # servers are heard of only while attached
+        # A partial owner: the view's clients are dropped, never destroyed through it.
+        client = Client(cast(Owner, owner), name, srv_type, runtime.services)
         self._services[name] = client
         schema = fox.ServiceSchema(type_name(srv_type), request=request, response=response)
         self._server.add_services([fox.Service(name, schema=schema, handler=lambda req: self._call(client, req))])

@@ -16,12 +16,12 @@ from __future__ import annotations
 import asyncio
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 import yaml
 
 from actors import codec
-from actors.core._actor import Actor
+from actors.core._actor import Actor, Owner
 from actors.errors import ActorsError, InterfaceError
 from actors.recording.reader import Bag
 from actors.ros.names import expand
@@ -42,7 +42,7 @@ class PlayTopic:
 
     name: str
     target: str
-    msg_type: type
+    msg_type: type[Any]
     qos: QoSProfile
 
 
@@ -188,7 +188,8 @@ async def play(
     playable, skipped = plan(bag, topics=topics, remap=remap)
     for line in skipped:
         runtime.logger.warning(f"bag play: {line}")
-    owner = _PlayerOwner(runtime)
+    # A partial owner: its publishers are destroyed through destroy_publisher only.
+    owner = cast(Owner, _PlayerOwner(runtime))
     publishers: dict[str, Publisher] = {}
     count = 0
     aio_loop = runtime.loop
@@ -214,7 +215,7 @@ async def play(
                 )
                 pub = publishers.get(name)
                 if pub is None:
-                    pub = publishers[name] = Publisher(owner, name, msg_type, qos)  # type: ignore[arg-type]
+                    pub = publishers[name] = Publisher(owner, name, msg_type, qos)
                     runtime.topics.add_publisher(pub)
                 pub.publish(msg)
                 count += topic is not None

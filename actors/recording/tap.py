@@ -17,11 +17,11 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from actors import codec
-from actors.core._actor import Actor
-from actors.ros.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from actors.core._actor import Actor, Owner
+from actors.ros.qos import DurabilityPolicy, QoSProfile, QoSSnapshot, ReliabilityPolicy
 from actors.ros.topics import Expiring, Publisher, Subscription, Topic, type_name
 
 if TYPE_CHECKING:
@@ -208,11 +208,12 @@ class Tap(Subscription):
         self.definition = codec.definition_text(topic.msg_type)
         self.type_hash = codec.type_hash(topic.msg_type)
         qos = QoSProfile(depth=depth, reliability=ReliabilityPolicy.BEST_EFFORT, durability=DurabilityPolicy.VOLATILE)
-        super().__init__(owner, topic.name, topic.msg_type, _no_callback, qos)  # type: ignore[arg-type]
+        # A partial owner: a tap is destroyed through destroy_subscription only.
+        super().__init__(cast(Owner, owner), topic.name, topic.msg_type, _no_callback, qos)
         self.channel: Any = None
-        self.offers: tuple[QoSProfile, ...] = tuple(p.qos for p in topic.publishers)
+        self.offers: tuple[QoSSnapshot, ...] = tuple(p.qos for p in topic.publishers)
         self.failed = False
-        self._queue = _Handover(self, deliver)  # type: ignore[assignment]
+        self._queue = _Handover(self, deliver)  # type: ignore[assignment]  # stands in for the deque: only append() is used
         self._limit = sys.maxsize
         self._scheduled = True  # never on the actor's ready queue
 

@@ -17,7 +17,8 @@ __all__ = ["ParameterMethods"]
 
 
 class _HasParams(Protocol):
-    params: ParameterStore
+    @property
+    def params(self) -> ParameterStore: ...
 
 
 class ParameterMethods:

@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from typing import Any, Protocol
+from typing import Any, ClassVar, Protocol
 
+from actors.core._actor import Owner
 from actors.errors import ParameterNotDeclaredException
 from actors.ros.parameter_store import Parameter, ParameterStore
 from interfaces.rcl_interfaces.msg import Parameter as ParameterMsg
@@ -24,10 +25,10 @@ __all__ = ["ServiceHost", "DeferringHost", "ParameterServices", "serve"]
 class ServiceHost(Protocol):
     """Who serves them: a node (``~/`` names resolve under it)."""
 
-    def create_service(self, srv_type: type, name: str, handler: Callable[[Any, Any], Any]) -> Any: ...
+    def create_service(self, srv_type: type[Any], name: str, handler: Callable[[Any, Any], Any]) -> Any: ...
 
 
-class DeferringHost(ServiceHost, Protocol):
+class DeferringHost(ServiceHost, Owner, Protocol):
     """A node that may register services now and build them when first needed."""
 
     fqn: str
@@ -61,7 +62,7 @@ class ParameterServices:
     __slots__ = ("owner",)
 
     # Last name segment -> (type, handler), in the order rclpy creates them.
-    _SERVED: dict[str, tuple[type, str]] = {
+    _SERVED: ClassVar[dict[str, tuple[type[Any], str]]] = {
         "describe_parameters": (DescribeParameters, "describe"),
         "get_parameters": (GetParameters, "get"),
         "get_parameter_types": (GetParameterTypes, "get_types"),
@@ -69,7 +70,7 @@ class ParameterServices:
         "set_parameters": (SetParameters, "set_each"),
         "set_parameters_atomically": (SetParametersAtomically, "set_all"),
     }
-    kinds: dict[str, type] = {kind: srv_type for kind, (srv_type, _) in _SERVED.items()}
+    kinds: ClassVar[dict[str, type[Any]]] = {kind: srv_type for kind, (srv_type, _) in _SERVED.items()}
 
     def __init__(self, owner: DeferringHost) -> None:
         self.owner = owner

@@ -55,7 +55,7 @@ from typing import Any, Protocol
 
 import anyio
 
-from actors.core._actor import OneShot, Owner
+from actors.core._actor import Entity, OneShot, Owner
 from actors.errors import ActionError
 from actors.ros.qos import DurabilityPolicy, QoSProfile
 from actors.ros.time import Clock
@@ -174,18 +174,19 @@ def _short(goal_id: UUID) -> str:
 class ActionHost(Owner, Protocol):
     """What an action needs from its node: the node's entities and a place to run goals."""
 
-    clock: Clock
+    @property
+    def clock(self) -> Clock: ...
 
-    def create_service(self, srv_type: type, name: str, handler: Callable[..., Any]) -> Service: ...
+    def create_service(self, srv_type: type[Any], name: str, handler: Callable[..., Any]) -> Service: ...
 
     def add_service(self, service: Service) -> Service: ...
 
-    def create_client(self, srv_type: type, name: str) -> Client: ...
+    def create_client(self, srv_type: type[Any], name: str) -> Client: ...
 
-    def create_publisher(self, msg_type: type, topic: str, qos: QoSProfile | int) -> Publisher: ...
+    def create_publisher(self, msg_type: type[Any], topic: str, qos: QoSProfile | int) -> Publisher: ...
 
     def create_subscription(
-        self, msg_type: type, topic: str, callback: Callable[[Any], Any], qos: QoSProfile | int
+        self, msg_type: type[Any], topic: str, callback: Callable[[Any], Any], qos: QoSProfile | int
     ) -> Subscription: ...
 
     def start_task(self, fn: Callable[..., Awaitable[Any]], *args: Any, name: str) -> None: ...
@@ -332,7 +333,7 @@ class ActionServer:
         self,
         node: ActionHost,
         name: str,
-        action_type: type,
+        action_type: type[Any],
         execute: Callable[[ServerGoalHandle], Any],
         *,
         goal: Callable[[Any], Any] | None = None,
@@ -635,7 +636,7 @@ class _Router:
 
     __slots__ = ()
 
-    def schedule(self, subscription: Subscription) -> None:
+    def schedule(self, subscription: Entity) -> None:
         subscription._run()
 
 
@@ -650,7 +651,7 @@ class ActionClient:
     result, ``await handle.cancel()`` asks to cancel.
     """
 
-    def __init__(self, node: ActionHost, name: str, action_type: type) -> None:
+    def __init__(self, node: ActionHost, name: str, action_type: type[Any]) -> None:
         _check_action_type(action_type, "create_action_client")
         self.node = node
         self.name = name
@@ -662,7 +663,7 @@ class ActionClient:
         self._cancel = node.create_client(impl.CancelGoalService, names["cancel_goal"])
         self._results = node.create_client(impl.GetResultService, names["get_result"])
         feedback = node.create_subscription(impl.FeedbackMessage, names["feedback"], self._on_feedback, 10)
-        feedback._actor = _ROUTER  # type: ignore[assignment]
+        feedback._actor = _ROUTER
         self._subscriptions = [
             feedback,
             node.create_subscription(impl.GoalStatusMessage, names["status"], self._on_status, STATUS_QOS),

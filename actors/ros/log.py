@@ -68,7 +68,7 @@ DEBUG, INFO, WARN, ERROR, FATAL = (
     LoggingSeverity.FATAL,
 )
 LEVELS = {"debug": DEBUG, "info": INFO, "warn": WARN, "warning": WARN, "error": ERROR, "fatal": FATAL}
-_LEVEL_NAMES = {DEBUG: "DEBUG", INFO: "INFO", WARN: "WARN", ERROR: "ERROR", FATAL: "FATAL"}
+_LEVEL_NAMES: dict[int, str] = {DEBUG: "DEBUG", INFO: "INFO", WARN: "WARN", ERROR: "ERROR", FATAL: "FATAL"}
 
 ROOT_LOGGER = "actors"
 
@@ -179,7 +179,7 @@ class NodeLogger:
     def _passes(self, level: int, once: bool, skip_first: bool, throttle: float | None, source: Clock | None) -> bool:
         frame = sys._getframe(2)
         while frame.f_code.co_filename == __file__:  # from debug()/info()... to the user's call
-            frame = frame.f_back  # type: ignore[assignment]
+            frame = frame.f_back  # type: ignore[assignment]  # never None: the user's call is above
         key = (frame.f_code, frame.f_lasti)
         arguments = (level, once, skip_first, throttle, source)
         if self._sites is None:
@@ -276,15 +276,20 @@ def get_logging_severity_from_string(severity: str) -> LoggingSeverity:
     return _severity(severity)
 
 
+class _ConsoleHandler(logging.StreamHandler):
+    """The handler :func:`configure_console` installs, which a later call finds and replaces."""
+
+    _actors_console = True
+
+
 def configure_console(level: int = INFO, stream: Any = None) -> logging.Handler:
     """Print actors' records in ROS's form on ``stream`` (stdout by default), at ``level``."""
     root = logging.getLogger(ROOT_LOGGER)
     for handler in list(root.handlers):
         if getattr(handler, "_actors_console", False):
             root.removeHandler(handler)
-    handler = logging.StreamHandler(stream or sys.stdout)
+    handler = _ConsoleHandler(stream or sys.stdout)
     handler.setFormatter(RosFormatter())
-    handler._actors_console = True  # type: ignore[attr-defined]
     root.addHandler(handler)
     root.setLevel(level)
     root.propagate = False

@@ -73,10 +73,17 @@ class Host(Protocol):
 class ChildSpec(Protocol):
     """How the supervisor asks for a node: overrides, and the entities a restart hands over."""
 
-    name: str | None
-    namespace: str | None
-    params: dict[str, Any]
-    remap: dict[str, str]
+    @property
+    def name(self) -> str | None: ...  # read-only here, so a spec may say plain str
+
+    @property
+    def namespace(self) -> str | None: ...
+
+    @property
+    def params(self) -> Mapping[str, Any]: ...
+
+    @property
+    def remap(self) -> Mapping[str, str]: ...
 
     def take_inheritance(self) -> Mapping[tuple[str, str], list[Any]]: ...
 
@@ -191,7 +198,7 @@ class NodeCore:
 
     # -- entities -------------------------------------------------------------
 
-    def _take_inherited(self, kind: str, name: str, type_: type) -> Any:
+    def _take_inherited(self, kind: str, name: str, type_: type[Any]) -> Any:
         olds = self._inherited.get((kind, name))
         if olds:
             old = olds[0]
@@ -208,7 +215,11 @@ class NodeCore:
         return rest
 
     def create_publisher(
-        self, msg_type: type, topic: str, qos: QoSProfile | int, event_callbacks: PublisherEventCallbacks | None = None
+        self,
+        msg_type: type[Any],
+        topic: str,
+        qos: QoSProfile | int,
+        event_callbacks: PublisherEventCallbacks | None = None,
     ) -> Publisher:
         """See :meth:`Node.create_publisher`."""
         _check_type(msg_type, "create_publisher")
@@ -229,7 +240,7 @@ class NodeCore:
 
     def create_subscription(
         self,
-        msg_type: type,
+        msg_type: type[Any],
         topic: str,
         callback: Callable[[Any], Any],
         qos: QoSProfile | int,
@@ -264,7 +275,7 @@ class NodeCore:
         self.timers[timer] = None
         return timer
 
-    def create_service(self, srv_type: type, name: str, handler: Callable[[Any, Any], Any]) -> Service:
+    def create_service(self, srv_type: type[Any], name: str, handler: Callable[[Any, Any], Any]) -> Service:
         """See :meth:`Node.create_service`."""
         full = self.resolver.resolve(name, what="service name")
         return self.add_service(Service(self, full, srv_type, handler))
@@ -295,7 +306,7 @@ class NodeCore:
         return service
 
     def create_action_server(
-        self, action_type: type, name: str, execute: Callable[..., Any], **options: Any
+        self, action_type: type[Any], name: str, execute: Callable[..., Any], **options: Any
     ) -> ActionServer:
         """See :meth:`Node.create_action_server`."""
         full = self.resolver.resolve(name, what="action name")
@@ -303,7 +314,7 @@ class NodeCore:
         self.action_servers[server] = None
         return server
 
-    def create_action_client(self, action_type: type, name: str) -> ActionClient:
+    def create_action_client(self, action_type: type[Any], name: str) -> ActionClient:
         """See :meth:`Node.create_action_client`."""
         full = self.resolver.resolve(name, what="action name")
         client = ActionClient(self, full, action_type)
@@ -324,7 +335,7 @@ class NodeCore:
         """Run ``fn(*args)`` beside the node's actor, in the runtime's task group; it must not raise."""
         self.runtime._task_group.start_soon(fn, *args, name=name)
 
-    def create_client(self, srv_type: type, name: str) -> Client:
+    def create_client(self, srv_type: type[Any], name: str) -> Client:
         """See :meth:`Node.create_client`."""
         full = self.resolver.resolve(name, what="service name")
         client = Client(self, full, srv_type, self.runtime.services)
@@ -386,7 +397,7 @@ class NodeCore:
         kept: dict[tuple[str, str], list[Any]] = {}
         for kind, entities in (("pub", self.publishers), ("sub", self.subscriptions), ("srv", self.services)):
             for entity in entities:
-                name = entity.service_name if kind == "srv" else entity.topic_name
+                name = entity.service_name if isinstance(entity, Service) else entity.topic_name
                 kept.setdefault((kind, name), []).append(entity)
         self.runtime._unregister_node(self)
         return kept
@@ -501,7 +512,7 @@ class Node(ParameterMethods, GraphQueries):
 
     def create_publisher(
         self,
-        msg_type: type,
+        msg_type: type[Any],
         topic: str,
         qos_profile: QoSProfile | int,
         *,
@@ -519,7 +530,7 @@ class Node(ParameterMethods, GraphQueries):
 
     def create_subscription(
         self,
-        msg_type: type,
+        msg_type: type[Any],
         topic: str,
         callback: Callable[[Any], Any],
         qos_profile: QoSProfile | int,
@@ -551,7 +562,7 @@ class Node(ParameterMethods, GraphQueries):
 
     # -- services -------------------------------------------------------------
 
-    def create_service(self, srv_type: type, srv_name: str, callback: Callable[[Any, Any], Any]) -> Service:
+    def create_service(self, srv_type: type[Any], srv_name: str, callback: Callable[[Any, Any], Any]) -> Service:
         """Serve ``srv_name``: ``callback(request, response)`` fills and returns the response.
 
         The callback may be ``async def``.  If it raises, the caller's call fails
@@ -560,7 +571,7 @@ class Node(ParameterMethods, GraphQueries):
         """
         return self._core.create_service(srv_type, srv_name, callback)
 
-    def create_client(self, srv_type: type, srv_name: str) -> Client:
+    def create_client(self, srv_type: type[Any], srv_name: str) -> Client:
         """A client of ``srv_name``: ``await client.call(req, timeout=...)`` or ``call_async``."""
         return self._core.create_client(srv_type, srv_name)
 
@@ -578,7 +589,7 @@ class Node(ParameterMethods, GraphQueries):
 
     def create_action_server(
         self,
-        action_type: type,
+        action_type: type[Any],
         action_name: str,
         execute: Callable[..., Any],
         *,
@@ -609,7 +620,7 @@ class Node(ParameterMethods, GraphQueries):
             result_timeout=result_timeout,
         )
 
-    def create_action_client(self, action_type: type, action_name: str) -> ActionClient:
+    def create_action_client(self, action_type: type[Any], action_name: str) -> ActionClient:
         """A client of ``action_name``: ``handle = await client.send_goal(goal, feedback=cb)``."""
         return self._core.create_action_client(action_type, action_name)
 

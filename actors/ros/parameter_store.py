@@ -202,7 +202,12 @@ class ParameterStore:
         if already:
             raise ParameterAlreadyDeclaredException(f"parameters {already} of {self._core.fqn} are already declared")
         return [
-            self.declare(name, *entry[1:2], *entry[2:3], ignore_override=ignore_override)
+            self.declare(
+                name,
+                entry[1] if len(entry) > 1 else None,
+                entry[2] if len(entry) > 2 else None,
+                ignore_override=ignore_override,
+            )
             for name, entry in zip(names, parameters)
         ]
 
@@ -325,7 +330,8 @@ class ParameterStore:
                 return self._values[name].get_parameter_value()
             reason = problem
         raise InvalidParameterValueException(
-            f"parameter {name!r} of {self._core.fqn}: {candidates[-1].value!r} does not fit the new descriptor: {reason}"
+            f"parameter {name!r} of {self._core.fqn}: {candidates[-1].value!r} "
+            f"does not fit the new descriptor: {reason}"
         )
 
     # -- callbacks --------------------------------------------------------------
@@ -405,7 +411,9 @@ class ParameterStore:
                 raise TypeError(f"on-set parameters callback {callback!r} must return a SetParametersResult")
             if not result.successful:
                 return result
-        new, changed, deleted = [], [], []
+        new: list[Parameter] = []
+        changed: list[Parameter] = []
+        deleted: list[Parameter] = []
         for param in stored:
             name = param.name
             if param.type_ is ParameterType.NOT_SET and not allow_not_set:
@@ -423,8 +431,8 @@ class ParameterStore:
             (new if previous is None or previous.type_ is ParameterType.NOT_SET else changed).append(param)
             self._values[name] = param
         self._publish_event(new=new, changed=changed, deleted=deleted)
-        for callback in self._post:
-            callback(stored)
+        for after in self._post:
+            after(stored)
         return SetParametersResult(successful=True)
 
     def _check(self, param: Parameter, descriptor: ParameterDescriptor, *, check_read_only: bool) -> str | None:

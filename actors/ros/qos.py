@@ -301,7 +301,7 @@ class QoSProfile:
             return NotImplemented
         return all(getattr(self, slot) == getattr(other, slot) for slot in self.__slots__)
 
-    __hash__ = None  # type: ignore[assignment]  # mutable, as rclpy's
+    __hash__ = None  # type: ignore[assignment]  # mutable, as rclpy's: unhashable, which object types as hashable
 
     def __repr__(self) -> str:
         fields = ", ".join(f"{slot[1:]}={getattr(self, slot)!r}" for slot in self.__slots__)
@@ -620,7 +620,8 @@ def qos_incompatibility(offered: QoSSnapshot, requested: QoSSnapshot) -> str | N
         f"subscription requests {seconds(requested.deadline_ns)}",
         QoSPolicyKind.LIVELINESS: f"publisher offers {offered.liveliness.name} liveliness, "
         f"subscription requests {requested.liveliness.name}",
-        QoSPolicyKind.LIVELINESS_LEASE_DURATION: f"publisher offers a liveliness lease of {seconds(offered.liveliness_lease_duration_ns)}, "
+        QoSPolicyKind.LIVELINESS_LEASE_DURATION: "publisher offers a liveliness lease of "
+        f"{seconds(offered.liveliness_lease_duration_ns)}, "
         f"subscription requests {seconds(requested.liveliness_lease_duration_ns)}",
     }
     return "; ".join(reasons[kind] for kind in dict.fromkeys(kinds))

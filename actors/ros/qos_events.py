@@ -347,7 +347,7 @@ class WatchedPublisher(Publisher):
         self,
         node: Any,
         topic_name: str,
-        msg_type: type,
+        msg_type: type[Any],
         qos: QoSSnapshot,
         callbacks: PublisherEventCallbacks | None = None,
     ) -> None:

@@ -234,10 +234,10 @@ class Deadlines:
     def _compact(self) -> None:
         # Every live entry again, in order: each lane's first one its head, as add() would.
         live = [entry for entry in self._heap if entry[2]._when == entry[0]]
-        for lane in self._lanes.values():
-            live += [entry for entry in lane.queue if entry[2]._when == entry[0]]
-            lane.queue.clear()
-            lane.open = False
+        for each in self._lanes.values():
+            live += [entry for entry in each.queue if entry[2]._when == entry[0]]
+            each.queue.clear()
+            each.open = False
         live.sort()
         heap = self._heap
         heap.clear()  # the same list: _fire holds it in a local across its callbacks
@@ -332,7 +332,7 @@ class Deadlines:
                         break
                 if more:
                     scheduler.hold()  # the rounds run below, not from a loop callback of their own
-                    for due in (timer, *more):
+                    for due in (timer, *more):  # type: ignore[assignment]  # timer is set: more fills after it
                         due.node.actor.schedule(due)
                     scheduler.run_now()
                 elif timer is not None:
@@ -345,7 +345,7 @@ class Deadlines:
                 if not (skips and heap):
                     break
                 now = limit = heap[0][0]
-                if not skip_to(limit, skips < _SKIPS):  # type: ignore[misc]
+                if not skip_to(limit, skips < _SKIPS):  # type: ignore[misc]  # skips > 0: skip_to is set
                     break
                 skips -= 1
         finally:

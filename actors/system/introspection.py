@@ -11,8 +11,8 @@ of topics is enough to list them (:func:`action_infos`).
 
 from __future__ import annotations
 
-from collections.abc import Iterable
-from typing import Any, Protocol
+from collections.abc import Iterable, Mapping
+from typing import TYPE_CHECKING, Any, Protocol, cast
 
 import msgspec
 
@@ -24,6 +24,9 @@ from actors.ros.topics import Topic, TopicTable, type_name
 from actors.services import ServiceTable
 from actors.system.supervisor import Child, Supervisor
 from actors.transport.seam import GraphSource, RemoteNode, is_proxy
+
+if TYPE_CHECKING:
+    from actors.ros.node import NodeCore
 
 __all__ = [
     "EndpointInfo",
@@ -160,6 +163,9 @@ class Viewed(Protocol):
     services: ServiceTable
 
     @property
+    def nodes(self) -> Mapping[str, NodeCore]: ...
+
+    @property
     def attachments(self) -> tuple[Any, ...]: ...
 
 
@@ -176,7 +182,9 @@ class GraphView:
         outside the supervisor (an rclpy script's); then remote ones."""
         children = self._rt.supervisor.children
         local = [_node_info(c) for c in children if c.core is not None]
-        local += [_node_info(core.child) for core in list(self._rt.nodes.values()) if core.child not in children]
+        # Built outside the supervisor: an rclpy script's node, whose child spec shows the same fields as a Child.
+        outside = [core.child for core in list(self._rt.nodes.values()) if core.child not in children]
+        local += [_node_info(cast(Child, child)) for child in outside]
         return local + [_remote_node_info(n) for n in self.remote_nodes()]
 
     def remote_nodes(self) -> list[RemoteNode]:
@@ -203,8 +211,8 @@ class GraphView:
             for name, s in self._rt.services.servers.items()
             if not is_proxy(s)
         }
-        for name, srv_type, node in self._rt.services.deferred():
-            found[name] = ServiceInfo(name=name, type=type_name(srv_type), node=node.fqn, handled=0, queued=0)
+        for name, srv_type, owner in self._rt.services.deferred():
+            found[name] = ServiceInfo(name=name, type=type_name(srv_type), node=owner.fqn, handled=0, queued=0)
         for node in self.remote_nodes():
             for e in node.endpoints:
                 if e.kind == "server" and e.name not in found:
@@ -256,7 +264,7 @@ class GraphView:
         )
 
 
-def _hash_of(msg_type: type) -> str:
+def _hash_of(msg_type: type[Any]) -> str:
     try:
         return codec.type_hash(msg_type)
     except (ActorsError, TypeError, ValueError):

@@ -33,10 +33,10 @@ from __future__ import annotations
 import asyncio
 import inspect
 from collections import deque
-from collections.abc import Mapping
+from collections.abc import Coroutine, Mapping
 from enum import StrEnum
 from types import MappingProxyType
-from typing import Any, Protocol
+from typing import Any, Protocol, cast
 
 import anyio
 import msgspec
@@ -207,7 +207,8 @@ class Supervisor:
         actor.on_exit = None  # stopped by us: not an exit to handle
         task = actor.task
         if task is not None and not task.done() and task is not asyncio.current_task():
-            if inspect.getcoroutinestate(task.get_coro()) == inspect.CORO_CREATED:
+            coro = cast("Coroutine[Any, Any, None]", task.get_coro())  # Actor._finish's, a coroutine
+            if inspect.getcoroutinestate(coro) == inspect.CORO_CREATED:
                 # Its callback has not started yet: let it start (as it would have in its
                 # round) so that cancelling unwinds it, instead of leaving it never awaited.
                 await asyncio.sleep(0)
@@ -265,7 +266,7 @@ class Supervisor:
                 self._retire(child, "exited")
             return
         child.crashes += 1
-        self._report(core, error)
+        self._report(child, core, error)
         if child.restart is RestartType.TEMPORARY:
             core.destroy()
             self._retire(child, "crashed")
@@ -283,8 +284,7 @@ class Supervisor:
         child.state = state
         self.ended.append(child)
 
-    def _report(self, core: NodeCore, error: BaseException) -> None:
-        child = core.child
+    def _report(self, child: Child, core: NodeCore, error: BaseException) -> None:
         if isinstance(error, CallbackFailed):
             entity, cause = error.entity, error.error
             where = _describe(entity)

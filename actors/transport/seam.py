@@ -106,7 +106,7 @@ class Outlet(Subscription):
     def __init__(self, hub: Hub, publisher: Publisher, send: Callable[[Publisher, Any], None]) -> None:
         qos = publisher.qos
         super().__init__(
-            hub,  # type: ignore[arg-type]
+            hub,
             publisher.topic_name,
             publisher.msg_type,
             lambda msg: send(publisher, msg),
@@ -139,8 +139,8 @@ class Inlet(Publisher):
 
     __slots__ = ()
 
-    def __init__(self, hub: Hub, topic_name: str, msg_type: type) -> None:
-        super().__init__(hub, topic_name, msg_type, _OFFERS_ALL)  # type: ignore[arg-type]
+    def __init__(self, hub: Hub, topic_name: str, msg_type: type[Any]) -> None:
+        super().__init__(hub, topic_name, msg_type, _OFFERS_ALL)
         self._history = None
         self._snapshot = _fresh
 
@@ -160,11 +160,11 @@ class RemoteService(Service):
         self,
         hub: Hub,
         service_name: str,
-        srv_type: type,
+        srv_type: type[Any],
         provider: str,
         forward: Callable[[RemoteService, Any, asyncio.Future[Any]], None],
     ) -> None:
-        super().__init__(hub, service_name, srv_type, _unused_handler)  # type: ignore[arg-type]
+        super().__init__(hub, service_name, srv_type, _unused_handler)
         self.provider = provider  # the remote node's full name
         self._forward = forward
 

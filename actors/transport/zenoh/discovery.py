@@ -17,6 +17,7 @@ and the transport leaves its data alone.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 
 from actors import codec
 from actors.errors import ActorsError
@@ -26,7 +27,7 @@ from actors.transport.zenoh.keys import KINDS, Token, parse_token
 __all__ = ["Discovery", "local_hash"]
 
 
-def local_hash(ros_type: str) -> tuple[type | None, str]:
+def local_hash(ros_type: str) -> tuple[type[Any] | None, str]:
     """This process's class and RIHS01 hash for ``ros_type``, or ``(None, why not)``."""
     try:
         cls = codec.get_type(ros_type)

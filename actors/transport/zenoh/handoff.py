@@ -25,7 +25,7 @@ class Handoff:
 
     __slots__ = ("_loop", "_items", "_lock", "_pending", "_closed", "_on_error")
 
-    def __init__(self, loop: asyncio.AbstractEventLoop, on_error: Callable[[BaseException], None]) -> None:
+    def __init__(self, loop: asyncio.AbstractEventLoop, on_error: Callable[[BaseException], object]) -> None:
         self._loop = loop
         self._items: deque[tuple[Callable[[Any], None], Any]] = deque()
         self._lock = threading.Lock()

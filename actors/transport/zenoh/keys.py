@@ -21,6 +21,8 @@ Nothing here imports zenoh: these are plain strings, pinned by tests.
 
 from __future__ import annotations
 
+from typing import Any
+
 import msgspec
 
 from actors.ros.qos import DurabilityPolicy, HistoryPolicy, LivelinessPolicy, QoSSnapshot, ReliabilityPolicy
@@ -201,7 +203,14 @@ def parse_token(key: str) -> Token:
         raise ValueError(f"liveliness token with a domain that is not a number: {key!r}") from None
     namespace = demangle(parts[7])
     node = f"{namespace.rstrip('/')}/{parts[8]}"
-    common = {"domain": domain, "zid": parts[2], "node_id": parts[3], "entity_id": parts[4], "kind": kind, "node": node}
+    common: dict[str, Any] = {
+        "domain": domain,
+        "zid": parts[2],
+        "node_id": parts[3],
+        "entity_id": parts[4],
+        "kind": kind,
+        "node": node,
+    }
     if kind == "NN":
         if len(parts) != 9:
             raise ValueError(f"node token with {len(parts)} parts, expected 9: {key!r}")

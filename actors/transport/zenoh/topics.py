@@ -202,6 +202,7 @@ class TopicBridge:
         link = self._link
         raw = sample.attachment
         origin = "?"
+        msg: Any
         try:
             if raw is not None:
                 origin = unpack(raw.to_bytes())[2].hex()

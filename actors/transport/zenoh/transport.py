@@ -128,7 +128,8 @@ class ZenohTransport:
         runtime.topics.listeners.append(self)
         runtime.services.add_listener(self)
         for topic in list(runtime.topics.topics.values()):
-            for endpoint in (*topic.publishers, *topic.subscriptions):
+            endpoints: list[Publisher | Subscription] = [*topic.publishers, *topic.subscriptions]
+            for endpoint in endpoints:
                 self.endpoint_added(topic, endpoint)
         for service in list(runtime.services.servers.values()):
             self.service_added(service)
