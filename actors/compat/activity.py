@@ -129,15 +129,16 @@ class Activity:
             busy = [t for t in self._tokens if t.busy and t is not besides]
         if not busy:
             return False, False
-        fresh = [t for t in busy if t.fresh and t.thread is not None]
+        fresh = [(t, t.thread) for t in busy if t.fresh and t.thread is not None]
         if len(fresh) < len(busy):
             return True, False
         # Only threads that never waited on the runtime are busy: working, or parked?
         frames = sys._current_frames()
         now = time.monotonic()
         working = False
-        for token in fresh:
-            frame = frames.get(token.thread.ident)  # type: ignore[union-attr]
+        for token, thread in fresh:
+            ident = thread.ident  # set: the thread has started (its token is bound to it when it runs)
+            frame = frames.get(ident) if ident is not None else None
             if frame is None or token.warned or _parked(frame):
                 token.held_since = None
                 continue
@@ -147,7 +148,7 @@ class Activity:
                 # Blocked in a C call, most likely (a socket, input()): named, and let go, so
                 # that a run with --duration still ends.
                 token.warned = True
-                _warn_holding(token.thread, frame)  # type: ignore[arg-type]
+                _warn_holding(thread, frame)
                 continue
             working = True
         if working:
@@ -181,7 +182,7 @@ class Activity:
         token = Token(None, fresh=True)
         with self.lock:
             self._tokens.add(token)
-        thread.run = functools.partial(run_as, self, token, thread.run)  # type: ignore[method-assign]
+        thread.run = functools.partial(run_as, self, token, thread.run)  # type: ignore[method-assign]  # this thread's run, wrapped
         return token
 
     def current(self) -> Token:

@@ -52,6 +52,8 @@ class NodeState(Protocol):
     clock: Any
     context: Any
 
+    destroyed: bool
+
     def notify(self) -> None: ...
 
     def work_sources(self) -> list[WorkSource]: ...
@@ -72,7 +74,8 @@ class SpinningExecutor(Protocol):
 class ScriptNode(Protocol):
     """A script node, as its entities and executors use it (``rclpy.node.Node``)."""
 
-    _rclpy: NodeState
+    @property
+    def _rclpy(self) -> NodeState: ...  # read-only here, so a node's own state class may be a subtype
 
     @property
     def executor(self) -> SpinningExecutor | None: ...
@@ -82,6 +85,15 @@ class ScriptNode(Protocol):
 
     @property
     def context(self) -> Any: ...
+
+    @property
+    def default_callback_group(self) -> Any: ...
+
+    def get_logger(self) -> Any: ...
+
+    def add_waitable(self, waitable: WorkSource) -> None: ...
+
+    def remove_waitable(self, waitable: WorkSource) -> None: ...
 
     def destroy_node(self) -> None: ...
 

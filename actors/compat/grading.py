@@ -22,10 +22,11 @@ import logging
 import runpy
 import sys
 import threading
+from collections.abc import Callable
 from contextlib import ExitStack
 from pathlib import Path
 from types import TracebackType
-from typing import Any
+from typing import Any, cast
 
 from actors.codec import get_type
 from actors.compat.activity import Waiter
@@ -214,7 +215,7 @@ class ScriptRun:
         self._session.call(_nothing)  # after what the loop had due at this instant (it runs in order)
         self._settle()
 
-    def record(self, topic: str, msg_type: type | None = None) -> list[Any]:
+    def record(self, topic: str, msg_type: type[Any] | None = None) -> list[Any]:
         """A list that receives every message on ``topic`` from now on, in order.
 
         ``msg_type`` is needed only for a topic nobody uses yet.  Raises
@@ -248,7 +249,7 @@ class ScriptRun:
         """The node ``name`` of the run (the student's or the graph's), for a closer look."""
         return self._session.call(self._session.runtime.node, name)
 
-    def _topic_type(self, topic: str) -> type:
+    def _topic_type(self, topic: str) -> type[Any]:
         name = topic if topic.startswith("/") else "/" + topic
         for info in self._session.call(self._session.runtime.graph.topics):
             if info.name == name:
@@ -268,7 +269,8 @@ def _spin_one(target: str | type) -> None:
     if not (isinstance(cls, type) and issubclass(cls, Node)):
         raise TypeError(f"{cls!r} is not an rclpy node class of the overlay: pass 'file.py:Class'")
     init(args=sys.argv)
-    spin(cls())
+    make = cast("Callable[[], Node]", cls)  # a user's subclass: its __init__ names the node itself
+    spin(make())
 
 
 def _load_class(target: str) -> Any:

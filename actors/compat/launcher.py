@@ -113,10 +113,12 @@ def run_script(
         return 1
     others = [Partner(session, partner, arguments, _print_script_traceback) for partner, arguments in scripts]
     # With partners, sys.argv shows each script its own command line.
-    command_line: MutableSequence[str] = [str(path), *argv]
+    main_line = [str(path), *argv]
+    command_line: MutableSequence[str] = main_line
     saved_argv = sys.argv
     if others:
-        sys.argv = command_line = ScriptArgv(command_line)  # type: ignore[assignment]
+        command_line = ScriptArgv(main_line)
+        _set_argv(command_line)
     try:
         with use_session(session), overlaid(), stop.handling_signals(), session.timekeeping():
             for partner in others:
@@ -157,7 +159,9 @@ class _Stop:
     def interrupt(self) -> None:
         """From any thread: stop the script as Ctrl-C would."""
         self.requested = True
-        signal.pthread_kill(self._main.ident, signal.SIGINT)  # type: ignore[arg-type]
+        ident = self._main.ident
+        assert ident is not None  # the main thread has started
+        signal.pthread_kill(ident, signal.SIGINT)
 
     def _on_sigint(self, signum: int, frame: FrameType | None) -> None:
         # As rclpy's handler: the context stops (spins raise ExternalShutdownException), then the
@@ -220,7 +224,7 @@ def _in_finaliser(frame: FrameType | None) -> bool:
 
 def _run(path: Path, command_line: MutableSequence[str], stop: _Stop) -> int:
     saved_argv, saved_path = sys.argv, sys.path[:]
-    sys.argv = command_line  # type: ignore[assignment]
+    _set_argv(command_line)
     sys.path.insert(0, str(path.resolve().parent))
     try:
         runpy.run_path(str(path), run_name="__main__")
@@ -266,3 +270,9 @@ def _one_line(exc: BaseException) -> str:
     if isinstance(exc, ActorsError):
         return str(exc)
     return f"{type(exc).__name__}: {exc}"
+
+
+def _set_argv(command_line: MutableSequence[str]) -> None:
+    # A script's sys.argv: a list, or with partners a ScriptArgv, which is not one on purpose
+    # (C code would read a list's own items), so not what sys.argv is typed as.
+    sys.argv = command_line  # type: ignore[assignment]  # see above: not a list on purpose

@@ -73,7 +73,7 @@ class OverlayFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
 
     def create_module(self, spec: importlib.machinery.ModuleSpec) -> ModuleType:
         module = importlib.import_module(spec.loader_state)
-        return _Alias(module, spec.name)  # type: ignore[return-value]
+        return _Alias(module, spec.name)  # type: ignore[return-value]  # a stand-in: exec_module swaps in the module
 
     def exec_module(self, module: ModuleType) -> None:
         sys.modules[object.__getattribute__(module, "_name")] = object.__getattribute__(module, "_target")

@@ -309,17 +309,17 @@ class Session:
             else:
                 real_start(thread)
 
-        time.sleep, threading.Thread.start = sleep, start  # type: ignore[method-assign]
+        _swap(sleep, start)
         try:
             yield
         finally:
-            time.sleep, threading.Thread.start = real_sleep, real_start  # type: ignore[method-assign]
+            _swap(real_sleep, real_start)
 
     def start_thread(self, target: Callable[[], Any], name: str) -> tuple[threading.Thread, Any]:
         """Start a daemon thread running ``target()``, busy from now until it first waits; its token."""
         token = self.activity.work()
-        thread = threading.Thread(target=run_as, args=(self.activity, token, target), name=name, daemon=True)
-        thread._actors_token = token  # type: ignore[attr-defined]
+        thread = _TokenThread(target=run_as, args=(self.activity, token, target), name=name, daemon=True)
+        thread._actors_token = token
         thread.start()
         return thread, token
 
@@ -380,3 +380,14 @@ def _wait_quietly(done: Future[None]) -> None:
         done.result()
     except BaseException:
         pass
+
+
+def _swap(sleep: Callable[[float], None], start: Callable[[threading.Thread], None]) -> None:
+    # Session.timekeeping's patch of the standard library, put in place and taken back.
+    time.sleep, threading.Thread.start = sleep, start  # type: ignore[method-assign, assignment]  # a patch, on purpose
+
+
+class _TokenThread(threading.Thread):
+    """A thread of :meth:`Session.start_thread`: it carries its token from the start."""
+
+    _actors_token: Any

@@ -70,8 +70,8 @@ class Client(WorkSource, NativeProxy):
             future._set_executor(executor)
             if done.cancelled():
                 future.cancel()
-            elif done.exception() is not None:
-                future.set_exception(done.exception())  # type: ignore[arg-type]
+            elif (error := done.exception()) is not None:
+                future.set_exception(error)
             else:
                 future.set_result(done.result())
 

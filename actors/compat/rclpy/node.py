@@ -276,9 +276,12 @@ class Node(NativeNode):
         with self._rclpy.lock:
             self._rclpy.notify()
 
-    def create_publisher(
+    # The create_* methods (and create_rate, destroy_rate) are rclpy's: their signatures and the
+    # overlay entities they return are not the native node's, which they call.  Hence each one's
+    # ignore[override]: a script sees rclpy's Node, the runtime the native one.
+    def create_publisher(  # type: ignore[override]  # rclpy's signature and entity
         self,
-        msg_type: type,
+        msg_type: type[Any],
         topic: str,
         qos_profile: Any,
         *,
@@ -291,9 +294,9 @@ class Node(NativeNode):
         self._rclpy.publishers.append(publisher)
         return publisher
 
-    def create_subscription(
+    def create_subscription(  # type: ignore[override]  # rclpy's signature and entity
         self,
-        msg_type: type,
+        msg_type: type[Any],
         topic: str,
         callback: Callable[..., Any],
         qos_profile: Any,
@@ -315,7 +318,7 @@ class Node(NativeNode):
         self._wake_executor()
         return subscription
 
-    def create_timer(
+    def create_timer(  # type: ignore[override]  # rclpy's signature and entity
         self,
         timer_period_sec: float,
         callback: Callable[..., Any] | None,
@@ -333,9 +336,9 @@ class Node(NativeNode):
         self._wake_executor()
         return timer
 
-    def create_service(
+    def create_service(  # type: ignore[override]  # rclpy's signature and entity
         self,
-        srv_type: type,
+        srv_type: type[Any],
         srv_name: str,
         callback: Callable[[Any, Any], Any],
         *,
@@ -350,9 +353,9 @@ class Node(NativeNode):
         self._wake_executor()
         return service
 
-    def create_client(
+    def create_client(  # type: ignore[override]  # rclpy's signature and entity
         self,
-        srv_type: type,
+        srv_type: type[Any],
         srv_name: str,
         *,
         qos_profile: Any = None,
@@ -375,7 +378,7 @@ class Node(NativeNode):
             self._rclpy.guards.append(guard)
         return guard
 
-    def create_rate(self, frequency: float, clock: Any = None) -> Rate:
+    def create_rate(self, frequency: float, clock: Any = None) -> Rate:  # type: ignore[override]  # rclpy's Rate
         """A Rate ticking ``frequency`` times per second; ``rate.sleep()`` needs the node spun."""
         if frequency <= 0:
             raise ValueError("frequency must be > 0")
@@ -395,8 +398,11 @@ class Node(NativeNode):
 
     def _create(self, source: WorkSource, create: Callable[..., Any], *args: Any, **options: Any) -> None:
         # On the runtime's thread: the native entity, its catcher driven before it can fire.
+        catcher = source.catcher
+        assert catcher is not None  # the entities made here (subscriptions, timers, services) have one
+
         def build() -> None:
-            self._rclpy.actor.drive(source.catcher)  # type: ignore[arg-type]
+            self._rclpy.actor.drive(catcher)
             source._attach(create(self, *args, **options))
 
         self._rclpy.session.call(build)
@@ -444,7 +450,7 @@ class Node(NativeNode):
         """Destroy ``guard``; whether it was the node's."""
         return self._destroy(self._rclpy.guards, guard, None)
 
-    def destroy_rate(self, rate: Rate) -> bool:
+    def destroy_rate(self, rate: Rate) -> bool:  # type: ignore[override]  # rclpy's Rate
         """Destroy ``rate`` and its timer."""
         rate.destroy()
         return self.destroy_timer(rate._timer)

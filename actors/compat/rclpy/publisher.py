@@ -33,9 +33,9 @@ class Publisher(NativeProxy):
         return str(self._native.topic_name)
 
     @property
-    def msg_type(self) -> type:
+    def msg_type(self) -> type[Any]:
         """The message type."""
-        return self._native.msg_type  # type: ignore[no-any-return]
+        return self._native.msg_type
 
     @property
     def qos_profile(self) -> Any:

@@ -21,7 +21,9 @@ __all__ = ["Service"]
 class Service(WorkSource, NativeProxy):
     """Answers requests while its node is spun (``Node.create_service``)."""
 
-    def __init__(self, node: ScriptNode, srv_type: type, callback: Callable[..., Any], callback_group: Any) -> None:
+    def __init__(
+        self, node: ScriptNode, srv_type: type[Any], callback: Callable[..., Any], callback_group: Any
+    ) -> None:
         self._node = node
         self._session = node._rclpy.session
         self.srv_type = srv_type

@@ -45,7 +45,12 @@ class Subscription(WorkSource, NativeProxy):
     """Receives one topic (``Node.create_subscription``); other attributes are the native one's."""
 
     def __init__(
-        self, node: ScriptNode, msg_type: type, callback: Callable[..., Any], callback_group: Any, raw: bool = False
+        self,
+        node: ScriptNode,
+        msg_type: type[Any],
+        callback: Callable[..., Any],
+        callback_group: Any,
+        raw: bool = False,
     ) -> None:
         self._node = node
         self._session = node._rclpy.session

@@ -13,7 +13,7 @@ __all__ = ["wait_for_message"]
 
 
 def wait_for_message(
-    msg_type: type, node: ScriptNode, topic: str, *, qos_profile: Any = 1, time_to_wait: float = -1
+    msg_type: type[Any], node: ScriptNode, topic: str, *, qos_profile: Any = 1, time_to_wait: float = -1
 ) -> tuple[bool, Any]:
     """``(True, msg)`` with the next message on ``topic``; ``(False, None)`` after ``time_to_wait``
     seconds of runtime clock (negative: no limit) or when the context shuts down.

@@ -47,9 +47,9 @@ class GoalHandle:
         return self._native.goal_id
 
     def __eq__(self, other: object) -> bool:
-        return type(other) is type(self) and self.goal_id == other.goal_id  # type: ignore[attr-defined]
+        return type(other) is type(self) and self.goal_id == other.goal_id
 
     def __ne__(self, other: object) -> bool:
         return not self == other
 
-    __hash__ = None  # type: ignore[assignment]
+    __hash__ = None  # type: ignore[assignment]  # unhashable, as rclpy's goal handles; object types it as hashable

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import asyncio
 import uuid
-from collections.abc import Awaitable, Callable
+from collections.abc import Callable, Coroutine
 from functools import partial
 from typing import TYPE_CHECKING, Any
 
@@ -29,7 +29,6 @@ from actors.ros.actions import ActionClient as NativeClient
 from actors.ros.actions import ClientGoalHandle as NativeGoal
 from actors.ros.node import Node as NativeNode
 from interfaces.action_msgs.msg import GoalStatus
-from interfaces.action_msgs.srv import CancelGoal
 from interfaces.unique_identifier_msgs.msg import UUID
 
 if TYPE_CHECKING:
@@ -87,7 +86,7 @@ class ActionClient(ActionWork):
     def __init__(
         self,
         node: ScriptNode,
-        action_type: type,
+        action_type: type[Any],
         action_name: str,
         *,
         callback_group: Any = None,
@@ -150,7 +149,7 @@ class ActionClient(ActionWork):
 
     def _cancel_goal_async(self, goal_handle: ClientGoalHandle) -> Future[Any]:
         _check_handle(goal_handle)
-        future: Future[CancelGoal.Response] = Future()
+        future: Future[Any] = Future()  # of a CancelGoal.Response
         self._session.call(self._launch, partial(self._native.cancel_goals, goal_id=goal_handle.goal_id), future)
         return future
 
@@ -166,9 +165,12 @@ class ActionClient(ActionWork):
     # -- on the runtime's thread --------------------------------------------------------------
 
     def _launch(
-        self, call: Callable[[], Awaitable[Any]], future: Future[Any], convert: Callable[[Any], Any] | None = None
+        self,
+        call: Callable[[], Coroutine[Any, Any, Any]],
+        future: Future[Any],
+        convert: Callable[[Any], Any] | None = None,
     ) -> None:
-        task = asyncio.get_running_loop().create_task(call())  # type: ignore[arg-type]
+        task = asyncio.get_running_loop().create_task(call())
         self._calls.add(task)
         task.add_done_callback(partial(self._answered, future, convert))
 
@@ -226,8 +228,8 @@ async def _complete(
     future._set_executor(node.executor)
     if task.cancelled():
         future.cancel()
-    elif task.exception() is not None:
-        future.set_exception(task.exception())  # type: ignore[arg-type]
+    elif (error := task.exception()) is not None:
+        future.set_exception(error)
     else:
         result = task.result()
         future.set_result(convert(result) if convert is not None else result)

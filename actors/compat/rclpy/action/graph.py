@@ -16,7 +16,7 @@ __all__ = [
 
 def _actions(node: Any) -> list[ActionInfo]:
     session = node._rclpy.session
-    return session.call(lambda: session.runtime.graph.actions())  # type: ignore[no-any-return]
+    return session.call(lambda: session.runtime.graph.actions())
 
 
 def get_action_names_and_types(node: Any) -> list[tuple[str, list[str]]]:

@@ -23,7 +23,7 @@ from __future__ import annotations
 import asyncio
 from collections.abc import Callable
 from functools import partial
-from typing import Any
+from typing import Any, cast
 
 from actors.compat.dispatch import ScriptNode
 from actors.compat.rclpy.action.base import ActionWork, GoalHandle
@@ -154,7 +154,7 @@ class ActionServer(ActionWork):
     def __init__(
         self,
         node: ScriptNode,
-        action_type: type,
+        action_type: type[Any],
         action_name: str,
         execute_callback: Callable[[ServerGoalHandle], Any],
         *,
@@ -186,7 +186,7 @@ class ActionServer(ActionWork):
         # On the runtime's thread: the native server, its entities driven before a request can come
         # (a goal parked before the server existed arrives as soon as it does).
         self._native = NativeNode.create_action_server(
-            self._node,
+            cast(NativeNode, self._node),  # a script node: an rclpy Node, so a native one
             self._action_type,
             action_name,
             self._executing_default,
@@ -197,7 +197,7 @@ class ActionServer(ActionWork):
         )
 
     @property
-    def action_type(self) -> type:
+    def action_type(self) -> type[Any]:
         """The action type served."""
         return self._action_type
 
