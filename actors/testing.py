@@ -113,8 +113,9 @@ def pytest_runtest_setup(item: pytest.Item) -> None:
 
 
 # pytest-asyncio's hook is firstresult: the first implementation to answer decides.  This
-# one (pytest reads only names starting with pytest_, hence the suffix) runs first and answers only for marked tests, so a project's own hook (uvloop, say)
-# still decides for every other test.
+# one (pytest reads only names starting with pytest_, hence the suffix) runs first and
+# answers only for marked tests, so a project's own hook (uvloop, say) still decides for
+# every other test.
 @pytest.hookimpl(optionalhook=True, tryfirst=True, specname="pytest_asyncio_loop_factories")
 def pytest_asyncio_loop_factories_virtual_time(
     config: pytest.Config, item: pytest.Item

@@ -191,7 +191,7 @@ class Robot:
     @property
     def in_contact(self) -> bool:
         """Whether the robot touches anything now."""
-        for near in self._near:  # a loop, not any(): no generator to make on every odometry tick
+        for near in self._near:  # noqa: SIM110 - a loop, not any(): no generator to make on every odometry tick
             if near.gap <= TOUCHING:
                 return True
         return False

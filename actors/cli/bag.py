@@ -235,7 +235,7 @@ def record_bag(args: argparse.Namespace) -> None:
                     stream = key.data
                     sample = stream.conn.sample(timeout=0.01)  # readable: at least one frame is coming
                     while sample is not None:
-                        stamp = int(round(sample.stamp * 1e9)) if virtual else time.time_ns()
+                        stamp = round(sample.stamp * 1e9) if virtual else time.time_ns()
                         msg = codec.convert(sample.msg, stream.msg_type)
                         bag.write(stream.channel, stamp, codec.encode_cdr(msg))
                         sample = stream.conn.sample(timeout=0)  # the rest already read
@@ -257,7 +257,7 @@ def record_bag(args: argparse.Namespace) -> None:
 class _Stream:
     """One topic's subscription connection and its channel in the bag."""
 
-    def __init__(self, conn: Any, msg_type: type, channel: int) -> None:
+    def __init__(self, conn: Any, msg_type: type[Any], channel: int) -> None:
         self.conn = conn
         self.msg_type = msg_type
         self.channel = channel

@@ -89,7 +89,7 @@ def explain(exc: msgspec.MsgspecError, type_: Any, data: Any, words: Words = MES
         return Explained(path, f"expected {_a(bound['want'], words)} {bound['op']} {limit}, got {shown(value, words)}")
     if length := _LENGTH.match(text):
         return Explained(path, _length_problem(length, value, words))
-    if choice := _CHOICE.match(text):
+    if _CHOICE.match(text):
         return Explained(path, _choice_problem(value, info))
     problem = re.sub(r"`(\w+)`", lambda m: _a(m[1], words), text)
     return Explained(path, problem[:1].lower() + problem[1:])

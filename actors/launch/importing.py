@@ -131,7 +131,7 @@ def _adopt(top: str, spec: importlib.machinery.ModuleSpec, place: Path) -> None:
 
 def _origin(spec: importlib.machinery.ModuleSpec) -> str:
     if spec.submodule_search_locations:
-        return os.path.realpath(list(spec.submodule_search_locations)[0])
+        return os.path.realpath(next(iter(spec.submodule_search_locations)))
     return os.path.realpath(spec.origin or "")
 
 

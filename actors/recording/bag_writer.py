@@ -40,7 +40,8 @@ class BagWriter:
         self.directory, self.path = output_paths(output)
         if self.directory is not None:
             self.directory.mkdir()
-        stream = open(self.path, "wb", buffering=0)  # whole chunks at a time: the writer buffers
+        # Whole chunks at a time: the writer buffers.  Not a with block: the writer keeps it, close() closes it.
+        stream = open(self.path, "wb", buffering=0)  # noqa: SIM115
         try:
             self.mcap = McapWriter(
                 stream, profile="ros2", library=LIBRARY, chunk_size=chunk_size, compression=compression

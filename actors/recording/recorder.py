@@ -126,8 +126,7 @@ class Recorder:
             task_status.started()
             await self._drain(runtime)
         finally:
-            with anyio.CancelScope(shield=True):
-                self._finish(runtime)
+            self._finish(runtime)  # synchronous: no cancellation can reach it
 
     async def _drain(self, runtime: Runtime) -> None:
         loop = runtime.loop
