@@ -157,19 +157,6 @@ class _JumpingSelector(_Selector):
         # epoll says whether anything is ready in one C call (it is level-triggered: what it
         # saw is still there for select()), where select() spends a microsecond in Python.
         self._peek = self._selector.poll if isinstance(self, selectors.EpollSelector) else None
-        # Whether a descriptor besides the loop's self-pipe is watched, kept by register and
-        # unregister: VirtualTimeLoop.skip_to asks it before every jump (a physics step's).
-        self.watching = False
-
-    def register(self, fileobj: Any, events: int, data: Any = None) -> selectors.SelectorKey:
-        key = super().register(fileobj, events, data)
-        self.watching = len(self._fd_to_key) > 1
-        return key
-
-    def unregister(self, fileobj: Any) -> selectors.SelectorKey:
-        key = super().unregister(fileobj)
-        self.watching = len(self._fd_to_key) > 1
-        return key
 
     def select(self, timeout: float | None = None) -> list[tuple[selectors.SelectorKey, int]]:
         peek = self._peek
@@ -181,7 +168,7 @@ class _JumpingSelector(_Selector):
         # all they handed over.  Polled first, a hand-off between the poll and the question
         # would be missed and time would jump past the work it brings.
         busy = loop.threads_busy()
-        if peek is None or self.watching or loop._signal_handlers:
+        if peek is None or len(self._fd_to_key) > 1 or loop._signal_handlers:
             if peek is None or peek(0, 1):  # real I/O, or a signal's byte in the self-pipe
                 events = super().select(0)
                 if events:
@@ -380,7 +367,7 @@ class VirtualTimeLoop(_SelectorLoop):
         if scheduled and scheduled[0]._when < when + self._clock_resolution:
             return False
         # What a callback can start without a task: a watched descriptor, a signal handler, an executor job.
-        if self._selector.watching or self._signal_handlers or self._threads.jobs:
+        if len(self._selector._fd_to_key) > 1 or self._signal_handlers or self._threads.jobs:
             return False
         if not again and (self._selector._peek is None or self.threads_busy()):
             return False

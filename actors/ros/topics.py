@@ -520,7 +520,7 @@ class Subscription(Mailbox):
         # The queue is made when a publisher first feeds it (TopicTable._match): an
         # unmatched subscription's empty deque would cost 760 bytes.  Typed as always there,
         # since every path that reads it runs after a match (the checks for None say so).
-        self._queue: deque[Any] = None  # type: ignore[assignment]
+        self._queue: deque[Any] = None  # type: ignore[assignment]  # None until matched (see above)
         self._depth = qos.depth if qos.history == HistoryPolicy.KEEP_LAST else sys.maxsize
         # The length at which an arriving message must go through _evict: the depth, or 0
         # while a round runs (the round's rest then counts against the depth too) or a batch
