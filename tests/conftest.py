@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import asyncio
+import io
 import os
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -42,6 +44,16 @@ def run_module():
 def live_loop_timers() -> list[asyncio.TimerHandle]:
     """The running loop's timers that are still armed (asyncio keeps cancelled ones until they come up)."""
     return [h for h in asyncio.get_running_loop()._scheduled if not h.cancelled()]  # type: ignore[attr-defined]
+
+
+def read_bag(path: Path) -> Any:
+    """An MCAP reader of the bag at ``path``, read whole into memory (a test's bags are small).
+
+    Synchronous on purpose: an async test calls it once its graph has stopped, with nothing left on
+    the loop to hold up, and a thread to read in would let a virtual-time loop move on meanwhile."""
+    from mcap.reader import make_reader
+
+    return make_reader(io.BytesIO(path.read_bytes()))
 
 
 def generated_package(root: Path, package: str, messages: dict[str, str]) -> None:

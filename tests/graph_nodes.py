@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import signal
+from typing import ClassVar
 
 from actors import Node
 from interfaces.std_msgs.msg import Int64
@@ -26,7 +27,7 @@ class Counter(Node):
 class PoisonEveryFifth(Node):
     """Records what it hears on ``numbers``; raises on every fifth message (4, 9, 14, ...)."""
 
-    heard: list[int] = []
+    heard: ClassVar[list[int]] = []
     instances = 0
 
     def __init__(self) -> None:

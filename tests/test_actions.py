@@ -160,7 +160,7 @@ async def test_an_aborted_goal_reports_aborted_with_its_result():
 
 async def test_cancel_an_executing_goal():
     async with Runtime() as rt:
-        server, node = await start(rt)
+        _server, node = await start(rt)
         handle = await node.client.send_goal(Fibonacci.Goal(order=10), feedback=node.on_feedback)
         await anyio.sleep(2.5)
         assert handle.status == GoalStatus.STATUS_EXECUTING

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from actors.cli._format import field, ros_repr, yaml_text
@@ -30,7 +32,7 @@ def test_yaml_text_of_a_message_a_field_and_a_scalar():
     assert yaml_text(msg).startswith("linear:\n  x: 0.0\n")
     assert yaml_text(field(msg, "angular")) == "x: 0.0\ny: 0.0\nz: 0.5\n"
     assert yaml_text(field(msg, "angular.z")) == "0.5\n"  # no end-of-document mark
-    with pytest.raises(ControlError, match="geometry_msgs/msg/Twist has no field 'angular.w'"):
+    with pytest.raises(ControlError, match=re.escape("geometry_msgs/msg/Twist has no field 'angular.w'")):
         field(msg, "angular.w")
 
 

@@ -57,7 +57,7 @@ async def actors(capsys, *argv: str) -> tuple[int, str, str]:
 
 
 async def test_describe_prints_type_description_and_constraints(endpoints, capsys):
-    async with tuned() as rt:
+    async with tuned():
         code, out, err = await actors(capsys, "param", "describe", "/tuned", "speed", "mode", "laps")
         assert (code, err) == (0, "")
         assert out == (
@@ -130,7 +130,7 @@ async def test_load_sets_what_the_file_gives_the_node_each_on_its_own(endpoints,
 
 
 async def test_load_without_the_wildcard_and_a_file_with_nothing_for_the_node(endpoints, capsys, tmp_path):
-    async with tuned() as rt:
+    async with tuned():
         params = tmp_path / "all.yaml"
         params.write_text("/**:\n  ros__parameters:\n    speed: 0.3\n")
         code, out, err = await actors(capsys, "param", "load", "/tuned", str(params), "--no-use-wildcard")
@@ -142,7 +142,7 @@ async def test_load_without_the_wildcard_and_a_file_with_nothing_for_the_node(en
 
 
 async def test_a_file_that_is_not_a_parameters_file_is_one_line_and_exit_2(endpoints, capsys, tmp_path):
-    async with tuned() as rt:
+    async with tuned():
         bad = tmp_path / "bad.yaml"
         bad.write_text("/tuned:\n  speed: 0.3\n")  # no ros__parameters
         code, out, err = await actors(capsys, "param", "load", "/tuned", str(bad))

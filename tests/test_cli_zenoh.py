@@ -95,27 +95,29 @@ async def test_topics_services_and_node_info_of_other_processes():
     port = free_port()
     env = zenoh_env(port)
     with anyio.fail_after(120):
-        async with spawned("-m", "actors.run", "graphs/talker.toml", env=env) as talker:
-            async with spawned("-m", "actors.run", "graphs/add_server.toml", env=env) as server:
-                await talker.wait_for("Publishing")
-                await node_up(port, "minimal_service")
-                code, out, err = await actors(port, "topic", "list", "-t")
-                assert "/topic [std_msgs/msg/String]" in out.splitlines(), err
-                code, out, err = await actors(port, "topic", "echo", "/topic", "--once")
-                assert code == 0 and out.startswith("data: 'Hello World: "), err
+        async with (
+            spawned("-m", "actors.run", "graphs/talker.toml", env=env) as talker,
+            spawned("-m", "actors.run", "graphs/add_server.toml", env=env),
+        ):
+            await talker.wait_for("Publishing")
+            await node_up(port, "minimal_service")
+            code, out, err = await actors(port, "topic", "list", "-t")
+            assert "/topic [std_msgs/msg/String]" in out.splitlines(), err
+            code, out, err = await actors(port, "topic", "echo", "/topic", "--once")
+            assert code == 0 and out.startswith("data: 'Hello World: "), err
+            code, out, err = await actors(
+                port, "service", "call", "/add_two_ints", "example_interfaces/srv/AddTwoInts", "{a: 2, b: 3}"
+            )
+            assert code == 0 and "sum=5" in out, err
+            code, out, err = await actors(port, "node", "info", "/minimal_publisher")
+            assert code == 0 and "    /topic: std_msgs/msg/String" in out.splitlines(), err
+            async with spawned("-m", "actors.run", "graphs/listener.toml", env=env) as listener:
+                await listener.wait_for("I heard")
                 code, out, err = await actors(
-                    port, "service", "call", "/add_two_ints", "example_interfaces/srv/AddTwoInts", "{a: 2, b: 3}"
+                    port, "topic", "pub", "/topic", "std_msgs/msg/String", "data: from the command line", "--once"
                 )
-                assert code == 0 and "sum=5" in out, err
-                code, out, err = await actors(port, "node", "info", "/minimal_publisher")
-                assert code == 0 and "    /topic: std_msgs/msg/String" in out.splitlines(), err
-                async with spawned("-m", "actors.run", "graphs/listener.toml", env=env) as listener:
-                    await listener.wait_for("I heard")
-                    code, out, err = await actors(
-                        port, "topic", "pub", "/topic", "std_msgs/msg/String", "data: from the command line", "--once"
-                    )
-                    assert code == 0, err
-                    await listener.wait_for('I heard: "from the command line"')
+                assert code == 0, err
+                await listener.wait_for('I heard: "from the command line"')
 
 
 async def test_the_transport_comes_from_the_environment_and_a_bad_value_is_one_line(monkeypatch):

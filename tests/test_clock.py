@@ -180,9 +180,11 @@ def test_waiting_on_nothing_is_a_clear_error():
     async def main() -> None:
         await asyncio.Event().wait()
 
-    with asyncio.Runner(loop_factory=lambda: VirtualTimeLoop(idle_timeout=0.05)) as runner:
-        with pytest.raises(VirtualTimeDeadlock, match="no timer is scheduled"):
-            runner.run(main())
+    with (
+        asyncio.Runner(loop_factory=lambda: VirtualTimeLoop(idle_timeout=0.05)) as runner,
+        pytest.raises(VirtualTimeDeadlock, match="no timer is scheduled"),
+    ):
+        runner.run(main())
 
 
 @pytest.mark.virtual_time
@@ -273,7 +275,7 @@ def test_times_compare_only_with_times_of_the_same_clock():
         with pytest.raises(TypeError):
             compare()
     duration = Duration(nanoseconds=1)
-    assert not (early == 1) and not (early == duration) and early != duration
+    assert (early == 1) is False and (early == duration) is False and early != duration
     for compare in (lambda: early < duration, lambda: early >= duration, lambda: duration > early):
         with pytest.raises(TypeError):
             compare()

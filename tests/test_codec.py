@@ -153,12 +153,12 @@ def test_decode_and_convert_errors_name_the_type_field_and_value_in_our_words(cl
 
 
 def test_malformed_bytes_say_so():
-    with pytest.raises(MessageValidationError, match="^std_msgs/msg/Bool: malformed data: "):
+    with pytest.raises(MessageValidationError, match=r"^std_msgs/msg/Bool: malformed data: "):
         codec.decode(b"\xc1", "std_msgs/msg/Bool")
 
 
 def test_malformed_bytes_are_validation_errors():
-    with pytest.raises(MessageValidationError, match="^std_msgs/msg/String: "):
+    with pytest.raises(MessageValidationError, match=r"^std_msgs/msg/String: "):
         codec.decode(b"\xc1", String)
 
 

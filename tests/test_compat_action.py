@@ -327,7 +327,7 @@ def test_wait_for_server_times_out_in_virtual_seconds_and_the_graph_lists_the_ac
 
 
 def test_wait_for_server_returns_when_the_context_shuts_down(rclpy_session, client):
-    node, action = client
+    _node, action = client
     threading.Timer(0.5, rclpy.get_default_context().interrupt).start()
     assert action.wait_for_server() is False
 

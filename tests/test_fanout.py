@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import asyncio
 import logging
-from typing import Any
+from typing import Any, ClassVar
 
 import anyio
 import pytest
@@ -286,7 +286,7 @@ async def test_a_callback_publishing_on_its_own_topic_counts_its_rounds_rest_aga
 class Fragile(Node):
     """Hears ``numbers``; crashes on 3 (once per instance)."""
 
-    heard: list[int] = []
+    heard: ClassVar[list[int]] = []
 
     def __init__(self) -> None:
         super().__init__("fragile")

@@ -1,4 +1,5 @@
-"""Tests for actors.messages.idl and actors.messages.generate: parsing .msg/.srv/.action text, generating modules, drift."""
+"""Tests for actors.messages.idl and actors.messages.generate: parsing .msg/.srv/.action text,
+generating modules, drift."""
 
 from __future__ import annotations
 

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import anyio
 import pytest
-from conftest import ROOT, python_env
+from conftest import ROOT, python_env, read_bag
 
 from actors import Node, Runtime, VirtualTimeLoop, codec
 from actors.errors import BagError
@@ -358,8 +358,7 @@ async def test_actors_bag_record_against_a_running_graph(tmp_path):
             finally:
                 if process.returncode is None:  # failed: leaving the block would wait for it forever
                     process.kill()
-    with open(out, "rb") as f:
-        reader = mcap_reader.make_reader(f)
-        values = [codec.decode_cdr(m.data, "std_msgs/msg/Int64").data for _, _, m in reader.iter_messages()]
-        assert reader.get_summary().statistics.message_count == len(values)
+    reader = read_bag(out)
+    values = [codec.decode_cdr(m.data, "std_msgs/msg/Int64").data for _, _, m in reader.iter_messages()]
+    assert reader.get_summary().statistics.message_count == len(values)
     assert len(values) >= 30 and values == list(range(values[0], values[0] + len(values)))

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import anyio
 import pytest
-from conftest import ROOT, python_env
+from conftest import ROOT, python_env, read_bag
 
 from actors import Node, Runtime, VirtualTimeLoop, codec
 from actors.ops.doctor import diagnose
@@ -158,11 +158,10 @@ async def test_topics_that_appear_later_are_recorded_from_their_first_message(tm
         await anyio.sleep(2.5)
         rt.spawn(Burst, 5)
         await anyio.sleep(2)
-    with open(path, "rb") as f:
-        got = [
-            (m.log_time, codec.decode_cdr(m.data, String).data)
-            for _, c, m in mcap_reader.make_reader(f).iter_messages(topics=["/burst"])
-        ]
+    got = [
+        (m.log_time, codec.decode_cdr(m.data, String).data)
+        for _, c, m in read_bag(path).iter_messages(topics=["/burst"])
+    ]
     assert got == [(3_500_000_000, f"m{i}") for i in range(5)]
 
 
@@ -181,8 +180,7 @@ async def test_a_full_buffer_drops_counts_and_doctor_says_so(tmp_path):
     assert not drops.passed and drops.reasons == (
         "/burst: the recorder dropped 30 message(s): the disk could not keep up",
     )
-    with open(path, "rb") as f:
-        assert mcap_reader.make_reader(f).get_summary().statistics.message_count == 20
+    assert read_bag(path).get_summary().statistics.message_count == 20
 
 
 @pytest.mark.virtual_time
@@ -198,8 +196,7 @@ async def test_topic_selection_and_exclusion(tmp_path):
         await anyio.sleep(2.1)
     topics = {}
     for name in ("only", "rest"):
-        with open(tmp_path / f"{name}.mcap", "rb") as f:
-            topics[name] = sorted(c.topic for c in mcap_reader.make_reader(f).get_summary().channels.values())
+        topics[name] = sorted(c.topic for c in read_bag(tmp_path / f"{name}.mcap").get_summary().channels.values())
     assert topics == {"only": ["/topic"], "rest": ["/parameter_events"]}
 
 
@@ -304,6 +301,5 @@ async def test_messages_with_a_lifespan_are_recorded_as_published(tmp_path):
     async with Runtime(attach=[Recorder(path, topics=["/short"])]) as rt:
         rt.spawn(ShortLived)
         await anyio.sleep(3.5)
-    with open(path, "rb") as f:
-        got = [codec.decode_cdr(m.data, String).data for _, _, m in mcap_reader.make_reader(f).iter_messages()]
+    got = [codec.decode_cdr(m.data, String).data for _, _, m in read_bag(path).iter_messages()]
     assert got == ["s0", "s1", "s2"]

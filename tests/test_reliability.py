@@ -95,7 +95,8 @@ async def test_1_a_thousand_nan_commands_from_the_command_line_are_refused_and_c
         assert rt.node("turtlebot").robot.commanded == (0.2, 0.2)  # the last valid command
     (reason,) = checks(report)["refused messages"]
     assert reason.startswith(
-        "/cmd_vel: /turtlebot refused 1000 message(s): linear.x and angular.z must be finite (1000); the last from /_actors_cli_"
+        "/cmd_vel: /turtlebot refused 1000 message(s): linear.x and angular.z must be finite (1000); "
+        "the last from /_actors_cli_"
     )
     refusals = [r for r in caplog.records if "refused a message" in r.getMessage()]
     assert 5 <= len(refusals) <= 6  # the burst, then the rate limit: not 1,000 lines
@@ -111,7 +112,7 @@ def open_fds() -> int:
 @pytest.mark.skipif(not Path("/proc/self/fd").is_dir(), reason="counts descriptors in /proc")
 async def test_2_more_connections_than_the_limit_are_refused_and_the_command_line_still_gets_in(name):
     limits = ConnectionLimits(connections=64)
-    async with Runtime(name=name, attach=[endpoint := ControlEndpoint(limits)]) as rt:
+    async with Runtime(name=name, attach=[endpoint := ControlEndpoint(limits)]):
         path = endpoint.server.path
         baseline = open_fds()
 
@@ -344,7 +345,7 @@ async def test_3_stalled_scan_readers_lose_scans_instead_of_growing_the_graph(na
         await anyio.sleep(60)
         pool = endpoint.server.pool
         assert all(c._outbox_bytes <= limits.outbox_bytes for c in pool.connections)
-        scans = [t for t in rt.graph.topics() if t.name == "/scan"][0]
+        scans = next(t for t in rt.graph.topics() if t.name == "/scan")
         assert all(s.queued <= 1 for s in scans.subscriptions)  # nothing piles up before the outbox
         assert pool.stats().dropped > 5 * 500  # 600 scans each, most of them lost
         for stream in readers:
@@ -379,7 +380,8 @@ async def test_4_malformed_requests_are_answered_and_logged_once_per_connection_
             errors.append(await ask(second, {"op": "reboot"}))
         assert rt.graph.nodes() == []  # and the graph is fine
     assert errors == [
-        "bad request: op: 'publsh' is not one of graph, node, publish, subscribe, call, doctor, play (did you mean 'publish'?)",
+        "bad request: op: 'publsh' is not one of graph, node, publish, subscribe, call, doctor, play "
+        "(did you mean 'publish'?)",
         "field 'data' of std_msgs/msg/Bool: expected a bool, got the string 'maybe'",
         "field 'data' of std_msgs/msg/UInt8: expected an integer <= 255, got the integer 18446744073709551615",
         "bad request: depth: expected an integer <= 10000, got the integer 9223372036854775808",

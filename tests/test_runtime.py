@@ -7,6 +7,7 @@ import json
 import subprocess
 import sys
 import warnings
+from typing import ClassVar
 
 import anyio
 import anyio.lowlevel
@@ -166,7 +167,7 @@ def test_frozen_startup_pauses_collection_then_freezes_what_was_built():
 class Spawned(Node):
     """Notes whether the cyclic collector could run while it was built."""
 
-    collecting: list[bool] = []
+    collecting: ClassVar[list[bool]] = []
 
     def __init__(self) -> None:
         super().__init__("spawned")

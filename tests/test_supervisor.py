@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import logging
+from typing import ClassVar
 
 import anyio
 import anyio.lowlevel
@@ -46,7 +47,7 @@ async def test_exceeding_the_intensity_escalates_with_one_clear_error():
 class Member(Node):
     """One of three siblings; counts its instances; crashes on a message to its name."""
 
-    started: dict[str, int] = {}
+    started: ClassVar[dict[str, int]] = {}
 
     def __init__(self) -> None:
         super().__init__("member")
@@ -194,7 +195,7 @@ async def test_a_constructor_that_raises_half_way_leaves_nothing_behind():
 async def test_messages_survive_a_restart_whose_first_constructor_attempt_fails():
     class Flaky(Node):
         attempts = 0
-        heard: list[int] = []
+        heard: ClassVar[list[int]] = []
 
         def __init__(self) -> None:
             super().__init__("flaky")

@@ -1,4 +1,5 @@
-"""Timers: absolute deadlines under virtual time, skipped ticks on overrun, cancel and reset, rclpy's TimerInfo, autostart, clock= and nanosecond times."""
+"""Timers: absolute deadlines under virtual time, skipped ticks on overrun, cancel and reset,
+rclpy's TimerInfo, autostart, clock= and nanosecond times."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""Where a graph's ``use`` comes from (issue 15, name clashes): the graph's folder, the working directory, installed code.
+"""Where a graph's ``use`` comes from (issue 15, name clashes): the graph's folder, the working
+directory, installed code.
 
 Each case runs in a child Python (one process can hold one ``nodes``), with
 nothing of the repository on its path: only the installed ``actors``.
@@ -139,7 +140,7 @@ def test_a_users_world_py_hiding_the_shipped_world_names_both_paths_and_exits_2(
 
 def test_a_shipped_graph_by_its_bare_name_and_an_unknown_one_listing_the_shipped(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    graph, classes = load_graph("pubsub")
+    _graph, classes = load_graph("pubsub")
     assert [c.__name__ for c in classes] == ["MinimalPublisher", "MinimalSubscriber", "Heartbeat"]
     with pytest.raises(GraphFileError) as caught:
         load_graph("turtlebt")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from itertools import pairwise
 
 import anyio
 import pytest
@@ -74,7 +75,7 @@ async def test_tf_carries_odom_to_base_footprint_with_each_odometry_stamp():
         assert moved.transform.translation.y == odom.pose.pose.position.y
         assert moved.transform.rotation == odom.pose.pose.orientation
     stamps = [_ns(tf.transforms[0].header.stamp) for _, tf in listener.tf]
-    assert [b - a for a, b in zip(stamps, stamps[1:])] == [50_000_000] * (len(stamps) - 1)
+    assert [b - a for a, b in pairwise(stamps)] == [50_000_000] * (len(stamps) - 1)
     assert listener.tf[-1][1].transforms[0].transform.translation.x != 0.0  # it moved
 
 

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+import re
+from itertools import pairwise
 
 import anyio
 import msgspec
@@ -174,7 +176,7 @@ async def test_odometry_and_ground_truth_turn_with_the_robot_message_by_message(
     assert truth[0] == pytest.approx(0.3) and 1.5 < truth[-1] < 0.3 + 0.5 * 3.0  # after its acceleration ramp
     # Each message kept its own heading: 0.5 rad/s for 50 ms, give or take the one physics step
     # that a tick and the World's step falling on the same instant may take in either order.
-    turning = [b - a for a, b in zip(odom[20:], odom[21:])]
+    turning = [b - a for a, b in pairwise(odom[20:])]
     assert all(step == pytest.approx(0.5 * 0.05, abs=0.5 * 0.01 + 1e-9) for step in turning)
 
 
@@ -205,14 +207,14 @@ async def test_namespaced_robots_have_their_own_topics():
 
 async def test_a_turtlebot_without_a_world_is_a_clear_error():
     async with Runtime() as rt:
-        with pytest.raises(WorldError, match="/turtlebot needs a world: start a world.sim:World node"):
+        with pytest.raises(WorldError, match=re.escape("/turtlebot needs a world: start a world.sim:World node")):
             rt.spawn(TurtleBot)
 
 
 async def test_a_robot_that_does_not_fit_is_a_clear_error():
     async with Runtime() as rt:
         rt.spawn(World)
-        with pytest.raises(WorldError, match="/turtlebot: .*outside"):
+        with pytest.raises(WorldError, match=r"/turtlebot: .*outside"):
             rt.spawn(TurtleBot, params={"x": 50.0})
 
 

@@ -43,10 +43,12 @@ async def test_a_service_in_one_process_answers_a_client_in_another():
     env = zenoh_env(free_port())
     with anyio.fail_after(60):
         # The client starts first and waits for the server, as in the tutorial.
-        async with spawned("-m", "actors.run", "graphs/add_client.toml", env=env) as client:
-            async with spawned("-m", "actors.run", "graphs/add_server.toml", env=env) as server:
-                await client.wait_for(r"Result of add_two_ints: for 41 \+ 1 = 42")
-                await server.wait_for("Incoming request")
+        async with (
+            spawned("-m", "actors.run", "graphs/add_client.toml", env=env) as client,
+            spawned("-m", "actors.run", "graphs/add_server.toml", env=env) as server,
+        ):
+            await client.wait_for(r"Result of add_two_ints: for 41 \+ 1 = 42")
+            await server.wait_for("Incoming request")
 
 
 async def test_a_transient_local_topic_reaches_a_subscriber_process_started_later(tmp_path):

@@ -102,14 +102,16 @@ async def test_a_server_process_killed_during_a_call_fails_the_call_at_once(tmp_
     port = free_port()
     graph = tmp_path / "slow.toml"
     graph.write_text('[transport]\nkind = "zenoh"\n\n[[nodes]]\nuse = "zenoh_nodes:SlowAdder"\n')
-    async with spawned("-m", "actors.run", str(graph), env=zenoh_env(port)) as server:
-        async with Runtime(attach=[ZenohTransport(section(port))]) as rt:
-            caller = rt.spawn(Caller)
-            with anyio.fail_after(30):
-                assert await caller.client.wait_for_service(timeout=30)
-                call = rt.loop.create_task(caller.client.call(AddTwoInts.Request(a=1, b=2), timeout=60))
-                await server.wait_for("Incoming request")
-            server.proc.kill()
-            with anyio.fail_after(10), pytest.raises(ServiceError, match="add_two_ints"):
-                await call
-            await until(lambda: not caller.client.service_is_ready(), 5)  # its stand-in leaves with its token
+    async with (
+        spawned("-m", "actors.run", str(graph), env=zenoh_env(port)) as server,
+        Runtime(attach=[ZenohTransport(section(port))]) as rt,
+    ):
+        caller = rt.spawn(Caller)
+        with anyio.fail_after(30):
+            assert await caller.client.wait_for_service(timeout=30)
+            call = rt.loop.create_task(caller.client.call(AddTwoInts.Request(a=1, b=2), timeout=60))
+            await server.wait_for("Incoming request")
+        server.proc.kill()
+        with anyio.fail_after(10), pytest.raises(ServiceError, match="add_two_ints"):
+            await call
+        await until(lambda: not caller.client.service_is_ready(), 5)  # its stand-in leaves with its token

@@ -91,8 +91,8 @@ def test_tokens_name_namespaces_enclaves_and_node_ids_as_rmw_zenoh_does():
         QoSSnapshot(depth=5),
     )
     assert (
-        token
-        == "@ros2_lv/3/ab12/5/9/MS/%/%robot1%nav/planner/%robot1%odom/nav_msgs::msg::dds_::Odometry_/RIHS01_h/::,5:,:,:,,"
+        token == "@ros2_lv/3/ab12/5/9/MS/%/%robot1%nav/planner/%robot1%odom/"
+        "nav_msgs::msg::dds_::Odometry_/RIHS01_h/::,5:,:,:,,"
     )
     assert node_token(3, "ab12", 5, "/planner") == "@ros2_lv/3/ab12/5/5/NN/%/%/planner"
 
