@@ -16,6 +16,14 @@ ROOT = Path(__file__).resolve().parent.parent
 TESTS = Path(__file__).resolve().parent
 
 
+def pytest_configure(config: pytest.Config) -> None:
+    config.addinivalue_line(
+        "markers",
+        "slow: a test that takes about a third of a second or more (a child Python, a wall-clock wait); "
+        "the quick lane leaves them out: pytest -m 'not slow'",
+    )
+
+
 def python_env() -> dict[str, str]:
     """The environment for a child Python: the repo and the test nodes importable."""
     env = dict(os.environ)

@@ -19,6 +19,8 @@ use = "nodes.fibonacci_action_client:FibonacciActionClient"
 params = { order = 2 }
 """
 
+pytestmark = pytest.mark.slow  # every test runs the command line as a child process, beside a graph in another
+
 
 @pytest.fixture(scope="module")
 def graph(tmp_path_factory: pytest.TempPathFactory) -> Iterator[GraphProcess]:

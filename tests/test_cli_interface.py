@@ -121,6 +121,7 @@ def test_generate_malformed_line_reports_file_and_line(tmp_path, capsys, text, l
     assert err.startswith(f"actors: {source}:{line}: ") and err.count("\n") == 1
 
 
+@pytest.mark.slow
 def test_python_dash_m_actors_interface_show(run_module):
     result = run_module("actors", "interface", "show", "tutorial_interfaces/msg/Sphere")
     assert result.returncode == 0, result.stderr

@@ -125,12 +125,14 @@ COURSE_NODES = {
 }
 
 
+@pytest.mark.slow
 def test_node_list_shows_every_node_and_no_hidden_one(graph):
     names = ok(graph, "node", "list").split()
     assert set(names) >= COURSE_NODES
     assert names == sorted(names) and not [n for n in names if n.rsplit("/", 1)[1].startswith("_")]
 
 
+@pytest.mark.slow
 def test_node_info_prints_ros2s_sections(graph):
     out = ok(graph, "node", "info", "/minimal_publisher")
     assert out.startswith("/minimal_publisher\n  Subscribers:\n\n  Publishers:\n    /topic: std_msgs/msg/String\n")
@@ -140,6 +142,7 @@ def test_node_info_prints_ros2s_sections(graph):
     assert out.endswith("  Service Clients:\n\n  Action Servers:\n\n  Action Clients:\n\n")
 
 
+@pytest.mark.slow
 def test_topic_list_and_info(graph):
     assert "/topic [std_msgs/msg/String]" in ok(graph, "topic", "list", "-t").splitlines()
     assert "/topic" in ok(graph, "topic", "list").splitlines()
@@ -152,6 +155,7 @@ def test_topic_list_and_info(graph):
     assert "Dropped: 0\n" in verbose
 
 
+@pytest.mark.slow
 def test_topic_echo_once_prints_one_yaml_document(graph):
     out = ok(graph, "topic", "echo", "/topic", "--once")
     document, rest = out.split("---\n")
@@ -161,6 +165,7 @@ def test_topic_echo_once_prints_one_yaml_document(graph):
     assert re.fullmatch(r"Hello World: \d+", yaml.safe_load(field.split("---\n")[0]))
 
 
+@pytest.mark.slow
 def test_topic_hz_reports_about_two_hertz(graph):
     out = ok(graph, "topic", "hz", "/topic", "--count", "2")
     rates = [float(r) for r in re.findall(r"^average rate: (\d+\.\d{3})$", out, re.MULTILINE)]
@@ -168,6 +173,7 @@ def test_topic_hz_reports_about_two_hertz(graph):
     assert re.search(r"^\tmin: 0\.\d{3}s max: 0\.\d{3}s std dev: \d\.\d{5}s window: \d+$", out, re.MULTILINE)
 
 
+@pytest.mark.slow
 def test_topic_type_and_find(graph):
     assert ok(graph, "topic", "type", "/topic") == "std_msgs/msg/String\n"
     found = ok(graph, "topic", "find", "std_msgs/msg/Bool").splitlines()
@@ -179,6 +185,7 @@ def test_topic_type_and_find(graph):
     assert count >= len(COURSE_NODES)  # every node has its parameter services
 
 
+@pytest.mark.slow
 def test_topic_echo_with_a_type_waits_for_a_topic_that_does_not_exist_yet(graph):
     echo = started(graph, "topic", "echo", "/cli_later", "std_msgs/msg/Int64", "--once")
     try:
@@ -192,12 +199,14 @@ def test_topic_echo_with_a_type_waits_for_a_topic_that_does_not_exist_yet(graph)
     assert (echo.returncode, out, err) == (0, "data: 7\n---\n", "")
 
 
+@pytest.mark.slow
 def test_topic_echo_no_arr_summarises_the_scan(graph):
     out = ok(graph, "topic", "echo", "/scan", "sensor_msgs/msg/LaserScan", "--once", "--no-arr")
     assert "\nranges: '<sequence type: float, length: 360>'\n" in out
     assert "\nintensities: '<sequence type: float, length: 0>'\n" in out
 
 
+@pytest.mark.slow
 def test_topic_bw_counts_the_scans_cdr_bytes(graph):
     out = ok(graph, "topic", "bw", "/scan", "--count", "1")
     lines = out.splitlines()
@@ -208,6 +217,7 @@ def test_topic_bw_counts_the_scans_cdr_bytes(graph):
     assert lines[2] == "\tMessage size mean: 1.50 KB min: 1.50 KB max: 1.50 KB"
 
 
+@pytest.mark.slow
 def test_topic_pub_once_and_times(graph):
     out = ok(graph, "topic", "pub", "/kill", "std_msgs/msg/Bool", "data: true", "--once")
     assert out == "publisher: beginning loop\npublishing #1: std_msgs.msg.Bool(data=True)\n\n"
@@ -215,6 +225,7 @@ def test_topic_pub_once_and_times(graph):
     assert re.findall(r"publishing #(\d): std_msgs\.msg\.Int64\(data=7\)", out) == ["1", "2", "3"]
 
 
+@pytest.mark.slow
 def test_service_list_type_and_call(graph):
     assert "/add_two_ints [example_interfaces/srv/AddTwoInts]" in ok(graph, "service", "list", "-t").splitlines()
     assert ok(graph, "service", "type", "/add_two_ints") == "example_interfaces/srv/AddTwoInts\n"
@@ -236,6 +247,7 @@ def test_service_list_type_and_call(graph):
     ]
 
 
+@pytest.mark.slow
 def test_param_set_reaches_the_node_and_get_list_dump_read_it(graph):
     mark = len(graph.lines)
     assert ok(graph, "param", "set", "/minimal_param_node", "my_parameter", "earth") == "Set parameter successful\n"
@@ -254,6 +266,7 @@ def test_param_set_reaches_the_node_and_get_list_dump_read_it(graph):
     assert dumped == {"/minimal_client_async": {"ros__parameters": {"a": 41, "b": 1, "use_sim_time": False}}}
 
 
+@pytest.mark.slow
 def test_a_refused_param_set_says_why_and_exits_1(graph):
     result = actors(graph, "param", "set", "/minimal_param_node", "my_parameter", "3")
     assert (result.returncode, result.stdout) == (1, "")
@@ -261,6 +274,7 @@ def test_a_refused_param_set_says_why_and_exits_1(graph):
     assert result.stderr == "Setting parameter failed: wrong type: expected STRING, got INTEGER (3)\n"
 
 
+@pytest.mark.slow
 def test_doctor_passes_the_demo_with_warnings_only(graph):
     # As ros2doctor: a publisher nobody subscribes to (the robot's /scan) is a warning.
     out = ok(graph, "doctor")
@@ -281,6 +295,7 @@ def test_doctor_passes_the_demo_with_warnings_only(graph):
         assert f"\n   {section}\n" in report
 
 
+@pytest.mark.slow
 def test_graph_writes_a_dot_file(graph, tmp_path):
     target = tmp_path / "x.dot"
     assert ok(graph, "graph", "--output", str(target)) == f"wrote {target}\n"
@@ -345,6 +360,7 @@ def test_graph_writes_a_dot_file(graph, tmp_path):
         ),
     ],
 )
+@pytest.mark.slow
 def test_user_errors_exit_2_with_one_line(graph, args, error):
     result = actors(graph, *args)
     assert result.returncode == 2, result
@@ -352,6 +368,7 @@ def test_user_errors_exit_2_with_one_line(graph, args, error):
     assert "Traceback" not in result.stdout + result.stderr
 
 
+@pytest.mark.slow
 def test_a_closed_stdout_pipe_ends_echo_quietly(graph):
     proc = started(graph, "topic", "echo", "/topic")
     try:
@@ -395,6 +412,7 @@ def turtlebot(tmp_path_factory: pytest.TempPathFactory) -> Iterator[GraphProcess
         running.stop()
 
 
+@pytest.mark.slow
 def test_a_kill_message_stops_the_robot(turtlebot):
     def odom_twist() -> tuple[float, float]:
         out = ok(turtlebot, "topic", "echo", "/odom", "--once", "--field", "twist.twist")
@@ -408,6 +426,7 @@ def test_a_kill_message_stops_the_robot(turtlebot):
     assert odom_twist() == (0.0, 0.0)  # the burger model brakes at once (no acceleration limit)
 
 
+@pytest.mark.slow
 def test_graph_draws_a_png_with_graphviz_or_pillow(graph, tmp_path):
     target = tmp_path / "graph.png"
     out = ok(graph, "graph", "-o", str(target))

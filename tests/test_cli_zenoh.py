@@ -13,6 +13,8 @@ from zenoh_procs import free_port, raw_config, spawned, zenoh_env
 
 zenoh = pytest.importorskip("zenoh", reason="the Zenoh transport's tests need eclipse-zenoh (the test extra has it)")
 
+pytestmark = pytest.mark.slow  # every test runs graphs and the command line as child processes
+
 
 def cli_env(port: int) -> dict[str, str]:
     """A command's environment: it connects to the graphs' meeting port and listens on a free one."""

@@ -326,6 +326,7 @@ def test_wait_for_server_times_out_in_virtual_seconds_and_the_graph_lists_the_ac
     assert get_action_client_names_and_types_by_node(node, "server", "/") == []
 
 
+@pytest.mark.slow
 def test_wait_for_server_returns_when_the_context_shuts_down(rclpy_session, client):
     _node, action = client
     threading.Timer(0.5, rclpy.get_default_context().interrupt).start()

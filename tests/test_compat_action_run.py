@@ -7,6 +7,8 @@ import pytest
 from conftest import ROOT
 from test_compat_launcher import actors_run, messages
 
+pytestmark = pytest.mark.slow  # every test runs the two scripts in a child process
+
 SERVER = str(ROOT / "scripts" / "fibonacci_action_server.py")
 CLIENT = str(ROOT / "scripts" / "fibonacci_action_client.py")
 

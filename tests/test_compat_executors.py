@@ -347,6 +347,7 @@ def test_virtual_time_stands_still_while_the_script_thread_is_busy(session):
     assert ticks == [pytest.approx(start + 0.01)]
 
 
+@pytest.mark.slow
 def test_a_thread_the_script_starts_holds_virtual_time_from_start_until_it_first_waits(session):
     # However late the OS gets to run it: this one works 0.4 s of real time before its first wait.
     start = now(session)

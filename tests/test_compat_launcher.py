@@ -30,6 +30,7 @@ def script(name: str) -> str:
     return str(SCRIPTS / name if (SCRIPTS / name).exists() else TEST_SCRIPTS / name)
 
 
+@pytest.mark.slow
 def test_a_publisher_on_the_virtual_clock_logs_on_stderr_with_virtual_stamps():
     done = actors_run("--clock", "virtual", "--duration", "1.1", script("talker.py"))
     assert done.returncode == 0, done.stderr
@@ -37,6 +38,7 @@ def test_a_publisher_on_the_virtual_clock_logs_on_stderr_with_virtual_stamps():
     assert done.stderr.splitlines() == [f"[INFO] [{0.25 * (i + 1):.9f}] [talker]: sent count {i}" for i in range(4)]
 
 
+@pytest.mark.slow
 def test_a_subscriber_beside_a_graph_hears_its_talker():
     done = actors_run(
         "--graph", str(SCRIPTS / "with_talker.toml"), "--clock", "virtual", "--duration", "1.6", script("listener.py")
@@ -46,6 +48,7 @@ def test_a_subscriber_beside_a_graph_hears_its_talker():
     assert heard == [f"[INFO] [{0.5 * (i + 1):.9f}] [listener]: got Hello World: {i}" for i in range(3)]
 
 
+@pytest.mark.slow
 def test_a_client_waits_for_a_late_service_then_uses_its_arguments():
     done = actors_run(
         "--graph", str(SCRIPTS / "with_server.toml"), "--clock", "virtual", script("add_two_ints_client.py"), "2", "3"
@@ -60,6 +63,7 @@ def test_a_client_waits_for_a_late_service_then_uses_its_arguments():
     assert lines[-1] == "[INFO] [2.500000000] [ask_adder]: 2 + 3 = 5"
 
 
+@pytest.mark.slow
 def test_a_service_answers_a_graph_client():
     done = actors_run(
         "--graph",
@@ -75,6 +79,7 @@ def test_a_service_answers_a_graph_client():
     assert "[minimal_client_async]: Result of add_two_ints: for 20 + 22 = 42" in done.stderr
 
 
+@pytest.mark.slow
 def test_the_wall_clock_works_too():
     done = actors_run("--duration", "1.0", script("talker.py"))
     assert done.returncode == 0, done.stderr
@@ -84,12 +89,14 @@ def test_the_wall_clock_works_too():
     assert float(done.stderr.split("] [")[1]) > 1e9  # wall-clock stamps: seconds since 1970
 
 
+@pytest.mark.slow
 def test_script_arguments_exit_code_and_ros_arguments():
     done = actors_run(script("exits.py"), "7", "x", "--ros-args", "-r", "__ns:=/robot", "--", "y")
     assert done.returncode == 7, done.stderr
     assert done.stdout.splitlines() == ["args: ['7', 'x', 'y']", "namespace: /robot"]
 
 
+@pytest.mark.slow
 def test_a_callback_that_raises_ends_the_script_with_its_traceback():
     done = actors_run("--clock", "virtual", "--duration", "5", script("broken.py"))
     assert done.returncode == 1
@@ -107,6 +114,7 @@ def test_a_callback_that_raises_ends_the_script_with_its_traceback():
         (["--duration", "-1", script("exits.py")], "error: --duration must be > 0 seconds, got -1.0"),
     ],
 )
+@pytest.mark.slow
 def test_bad_input_is_one_line_and_exit_2(args, problem):
     done = actors_run(*args)
     assert done.returncode == 2
@@ -114,6 +122,7 @@ def test_bad_input_is_one_line_and_exit_2(args, problem):
     assert problem in done.stderr
 
 
+@pytest.mark.slow
 def test_ctrl_c_stops_a_spinning_script_gracefully():
     # talker.py does not catch KeyboardInterrupt: the launcher still exits 0, without a traceback.
     proc = subprocess.Popen(
@@ -133,6 +142,7 @@ def test_ctrl_c_stops_a_spinning_script_gracefully():
     assert "Traceback" not in err
 
 
+@pytest.mark.slow
 def test_ros_arguments_give_parameters_names_and_log_levels(tmp_path):
     params = tmp_path / "params.yaml"
     params.write_text("/**:\n  ros__parameters: {speed: 0.5}\n/robot/tuned:\n  ros__parameters: {label: from_file}\n")
@@ -165,6 +175,7 @@ def messages(done: subprocess.CompletedProcess[str], node: str) -> list[str]:
 
 
 @pytest.mark.parametrize("style", ["closure", "sleep"])
+@pytest.mark.slow
 def test_publishing_from_a_closure_or_a_sleep_loop(style):
     # A reused message changed by a nested function, or time.sleep() between publishes: on the
     # virtual clock, time.sleep sleeps virtual time, so both publish every half second.
@@ -176,6 +187,7 @@ def test_publishing_from_a_closure_or_a_sleep_loop(style):
     ]
 
 
+@pytest.mark.slow
 def test_a_service_spun_once_at_a_time_from_a_module_level_node():
     done = actors_run(
         "--graph", str(SCRIPTS / "with_client.toml"), "--clock", "virtual", "--duration", "1", script("service_loop.py")
@@ -185,6 +197,7 @@ def test_a_service_spun_once_at_a_time_from_a_module_level_node():
 
 
 @pytest.mark.parametrize("style", ["until", "poll", "coroutine"])
+@pytest.mark.slow
 def test_three_ways_a_client_waits_for_its_answer(style):
     done = actors_run(
         "--graph", str(SCRIPTS / "with_server.toml"), "--clock", "virtual", script("client_styles.py"), style
@@ -197,12 +210,14 @@ def test_three_ways_a_client_waits_for_its_answer(style):
 
 
 @pytest.mark.parametrize("mode", ["multi", "composed"])
+@pytest.mark.slow
 def test_two_timers_in_a_mutually_exclusive_group_and_a_listener(mode):
     done = actors_run("--clock", "virtual", "--duration", "2.1", script("executors_demo.py"), mode)
     assert done.returncode == 0, done.stderr
     assert messages(done, "hearer") == [f"heard tick {i}" for i in range(6)]
 
 
+@pytest.mark.slow
 def test_a_callback_group_of_the_scripts_own_throttles_a_timer():
     done = actors_run("--clock", "virtual", "--duration", "1.6", script("executors_demo.py"), "throttled")
     assert done.returncode == 0, done.stderr
@@ -211,6 +226,7 @@ def test_a_callback_group_of_the_scripts_own_throttles_a_timer():
     assert stamps == ["0.100000000", "0.200000000", "0.300000000", "0.500000000", "1.000000000", "1.500000000"]
 
 
+@pytest.mark.slow
 def test_an_executor_subclass_of_the_scripts_own(tmp_path):
     graph = tmp_path / "alarm.toml"
     graph.write_text(
@@ -224,6 +240,7 @@ def test_an_executor_subclass_of_the_scripts_own(tmp_path):
     assert messages(done, "hearer") == ["heard tick 0", "heard tick 1", "heard tick 2"]
 
 
+@pytest.mark.slow
 def test_sigterm_stops_a_script_gracefully():
     # SIGTERM shuts the context down without a KeyboardInterrupt, as rclpy's handler does: the
     # listener's spin_once raises ExternalShutdownException, which it catches.
@@ -244,6 +261,7 @@ def test_sigterm_stops_a_script_gracefully():
     assert "Traceback" not in err
 
 
+@pytest.mark.slow
 def test_a_guard_condition_whose_callback_shuts_rclpy_down():
     done = actors_run("--clock", "virtual", script("guard.py"))
     assert done.returncode == 0, done.stderr
@@ -256,6 +274,7 @@ def test_a_guard_condition_whose_callback_shuts_rclpy_down():
     ]
 
 
+@pytest.mark.slow
 def test_qos_and_argparse_beside_ros_arguments():
     talker = actors_run("--clock", "virtual", script("qos_pair.py"), "talker", "-n", "3")
     assert talker.returncode == 0, talker.stderr
@@ -278,6 +297,7 @@ def test_qos_and_argparse_beside_ros_arguments():
     assert messages(listener, "ear") == ["reliable listener", "got Hello World: 0", "got Hello World: 1"]
 
 
+@pytest.mark.slow
 def test_ctrl_c_landing_in_a_finaliser_still_interrupts_the_script():
     # Python drops what a __del__ or a weakref finaliser raises: the KeyboardInterrupt is asked for
     # again, and the context stops with it (not before: the spin would return as if shut down).
@@ -308,6 +328,7 @@ def test_both_kinds_of_finaliser_are_recognised_where_the_signal_lands():
     assert not _in_finaliser(sys._getframe())
 
 
+@pytest.mark.slow
 def test_ctrl_c_while_the_main_thread_holds_the_overlays_lock_does_not_deadlock():
     # The handler runs between two bytecodes of whatever the main thread does: waking the context's
     # spins (here a second thread's) happens on a thread of its own, as in rclpy.

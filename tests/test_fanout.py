@@ -478,6 +478,7 @@ def _graph_trace(ops: list[tuple[Any, Any, Any]]) -> list[tuple[Any, ...]]:
 
 @settings(max_examples=150, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
 @given(GRAPH_OPS)
+@pytest.mark.slow
 def test_fan_out_delivers_exactly_what_per_message_delivery_does(ops):
     batched = _graph_trace(ops)
     refeed = Publisher._refeed

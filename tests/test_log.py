@@ -87,6 +87,7 @@ def test_formatter_without_a_ros_stamp_uses_the_record_time():
     assert RosFormatter().format(record) == "[ERROR] [12.250000000] [actors]: plain"
 
 
+@pytest.mark.slow
 def test_log_level_option_filters_the_demo(run_module):
     result = run_module("actors.run", "graph.toml", "--clock", "virtual", "--duration", "3", "--log-level", "warn")
     assert result.returncode == 0

@@ -58,6 +58,7 @@ def installed(tmp_path_factory) -> Path:
     return target
 
 
+@pytest.mark.slow
 def test_installed_shipped_graphs_and_a_users_own_graph_each_run_their_own_code(installed, tmp_path):
     student = tmp_path / "student"
     (student / "nodes").mkdir(parents=True)

@@ -148,6 +148,7 @@ def test_the_readme_has_examples_of_every_kind():
     assert blocks("python") and blocks("toml")
 
 
+@pytest.mark.slow
 def test_the_graph_commands_run_as_written(private_endpoints):
     seen = set()
     for words, expected, _, _ in commands():
@@ -216,6 +217,7 @@ def run_in_a_shell(line: str, env: dict[str, str], cwd: Path) -> tuple[int, str,
     return result.returncode, result.stdout, result.stderr
 
 
+@pytest.mark.slow
 def test_the_second_terminal_commands_run_as_written(private_endpoints, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)  # what they write (graph.dot, a new package) lands here
     verbs = [c for c in commands() if not runs_a_graph(c.words)]
@@ -238,6 +240,7 @@ def test_the_second_terminal_commands_run_as_written(private_endpoints, tmp_path
                 assert out or err or ">" in words, line  # it said something (or wrote a file)
 
 
+@pytest.mark.slow
 def test_the_graph_file_example_runs(private_endpoints, tmp_path):
     (example,) = blocks("toml")
     graph = tmp_path / "example.toml"
@@ -266,6 +269,7 @@ def test_the_fragments_are_python_inside_an_async_method(body):
 
 
 @pytest.mark.parametrize("body", python_blocks("script"))
+@pytest.mark.slow
 def test_the_scripts_run_and_their_nodes_are_heard(body, private_endpoints, tmp_path):
     script = tmp_path / "example.py"
     script.write_text(body)
@@ -277,6 +281,7 @@ def test_the_scripts_run_and_their_nodes_are_heard(body, private_endpoints, tmp_
 
 @pytest.mark.parametrize("mode", ["strict", "auto"])
 @pytest.mark.parametrize("body", python_blocks("test"))
+@pytest.mark.slow
 def test_the_test_examples_pass_in_any_asyncio_mode(body, mode, private_endpoints, tmp_path):
     (tmp_path / "test_example.py").write_text(body)
     options = ("-p", "no:cacheprovider", "-p", "no:hypothesispytest", "-o", f"asyncio_mode={mode}")

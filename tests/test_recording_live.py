@@ -133,6 +133,7 @@ def serving_turtlebot(clock: str) -> Any:
 
 
 @pytest.mark.parametrize("clock", ["wall", "virtual"])
+@pytest.mark.slow
 def test_foxglove_client_receives_odom_from_the_running_turtlebot_graph(clock):
     with serving_turtlebot(clock) as (proc, port):
 
@@ -170,6 +171,7 @@ def test_foxglove_client_receives_odom_from_the_running_turtlebot_graph(clock):
     assert proc.returncode == 0
 
 
+@pytest.mark.slow
 def test_foxglove_client_sees_the_turtlebot_world_as_a_3d_scene_tied_to_tf():
     pytest.importorskip("google.protobuf", reason="the scene is decoded with its protobuf schema (test extra)")
     with serving_turtlebot("virtual") as (proc, port):
@@ -299,6 +301,7 @@ async def test_nothing_is_encoded_while_no_client_subscribes(monkeypatch):
     assert switch.published > published > 0 and encoded == []
 
 
+@pytest.mark.slow
 def test_the_port_is_checked_and_a_port_in_use_is_one_line(run_module):
     bad = run_module("actors.run", "graphs/turtlebot.toml", "--foxglove", "http")
     assert bad.returncode == 2 and "not a port number" in bad.stderr
@@ -313,6 +316,7 @@ def test_the_port_is_checked_and_a_port_in_use_is_one_line(run_module):
     assert "Traceback" not in taken.stderr
 
 
+@pytest.mark.slow
 async def test_a_scene_is_drawn_only_while_watched_and_a_failing_one_is_dropped(caplog):
     import foxglove.messages as fm
 

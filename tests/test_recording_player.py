@@ -66,6 +66,7 @@ def actors_cli(*args: str) -> subprocess.CompletedProcess[str]:
 # --------------------------------------------------------------------------- bag info
 
 
+@pytest.mark.slow
 def test_bag_info_prints_as_ros2_bag_info(bag):
     done = actors_cli("bag", "info", str(bag))
     assert done.returncode == 0, done.stderr
@@ -93,6 +94,7 @@ def test_bag_info_prints_as_ros2_bag_info(bag):
     assert lines[-2:] == ["Service:           0", "Service information: "]
 
 
+@pytest.mark.slow
 def test_bag_info_reads_a_rosbag2_bag_directory(tmp_path):
     async def record() -> None:
         from nodes.talker import MinimalPublisher
@@ -115,6 +117,7 @@ def test_bag_info_reads_a_rosbag2_bag_directory(tmp_path):
 # --------------------------------------------------------------------------- damaged bags
 
 
+@pytest.mark.slow
 def test_a_truncated_bag_is_named_with_its_byte_and_recovered_when_asked(bag, tmp_path):
     data = bag.read_bytes()
     cut = tmp_path / "cut.mcap"
@@ -133,6 +136,7 @@ def test_a_truncated_bag_is_named_with_its_byte_and_recovered_when_asked(bag, tm
     assert done.returncode == 0 and "warning:" in done.stderr and "Topic: /odom" in done.stdout
 
 
+@pytest.mark.slow
 def test_a_corrupt_chunk_is_named_and_play_refuses_it(bag, tmp_path):
     data = bytearray(bag.read_bytes())
     with open(bag, "rb") as f:
@@ -148,6 +152,7 @@ def test_a_corrupt_chunk_is_named_and_play_refuses_it(bag, tmp_path):
     assert done.returncode == 2 and done.stderr.startswith(f"actors: {bad}: byte {first.chunk_start_offset}: ")
 
 
+@pytest.mark.slow
 def test_not_an_mcap_file(tmp_path):
     junk = tmp_path / "junk.mcap"
     junk.write_text("hello")
@@ -188,6 +193,7 @@ async def test_play_publishes_the_messages_in_order_at_their_offsets(bag):
 
 
 @pytest.mark.virtual_time
+@pytest.mark.slow
 async def test_actors_bag_play_into_a_running_graph(bag):
     # A real command line against a graph on virtual time: the graph plays the bag on its clock,
     # so 10 s of bag pass in the graph's virtual time, whatever the wall clock does meanwhile.
@@ -234,6 +240,7 @@ class ScanCounter(Node):
         self.count += 1
 
 
+@pytest.mark.slow
 def test_unknown_types_are_listed_and_skipped(tmp_path):
     from actors.recording.bag_writer import BagWriter
 
@@ -334,6 +341,7 @@ class Counting(Node):
         self.n += 1
 
 
+@pytest.mark.slow
 async def test_actors_bag_record_against_a_running_graph(tmp_path):
     import signal
 

@@ -46,6 +46,7 @@ def turtlebot_bag(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return path
 
 
+@pytest.mark.slow
 def test_rosbags_deserializes_every_message(turtlebot_bag):
     from rosbags.highlevel import AnyReader
     from rosbags.typesys import Stores, get_typestore
@@ -200,6 +201,7 @@ async def test_topic_selection_and_exclusion(tmp_path):
     assert topics == {"only": ["/topic"], "rest": ["/parameter_events"]}
 
 
+@pytest.mark.slow
 def test_an_existing_output_is_a_one_line_error(run_module, tmp_path):
     taken = tmp_path / "run.mcap"
     taken.write_bytes(b"keep me")
@@ -211,6 +213,7 @@ def test_an_existing_output_is_a_one_line_error(run_module, tmp_path):
 
 
 @pytest.mark.skipif(sys.platform != "linux", reason="needs RLIMIT_FSIZE and SIGXFSZ")
+@pytest.mark.slow
 def test_a_disk_that_fills_up_leaves_a_valid_bag_and_the_graph_running(tmp_path):
     # A file size limit stands in for a full disk: writes past it fail (EFBIG) as on a full disk.
     path = tmp_path / "full.mcap"

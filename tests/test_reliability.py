@@ -71,6 +71,7 @@ def checks(report: Report) -> dict[str, tuple[str, ...]]:
 
 
 @pytest.mark.virtual_time
+@pytest.mark.slow
 async def test_1_a_thousand_nan_commands_from_the_command_line_are_refused_and_counted(name, caplog):
     async with Runtime(name=name, attach=[ControlEndpoint()]) as rt:
         rt.spawn(World, params={"world": "signs"})
@@ -210,6 +211,7 @@ def descriptors_for_2600() -> Iterator[None]:
 
 
 @pytest.mark.skipif(not Path("/proc").is_dir(), reason="counts the graph's descriptors in /proc")
+@pytest.mark.slow
 def test_2_two_thousand_connections_at_once_and_500_idle_ones_the_command_line_still_gets_in(
     tmp_path, descriptors_for_2600
 ):
@@ -288,6 +290,7 @@ def test_2_a_graph_whose_queue_of_new_connections_is_full_is_busy_to_the_command
 
 
 @pytest.mark.skipif(not Path("/proc").is_dir(), reason="counts the graph's descriptors in /proc")
+@pytest.mark.slow
 def test_2_a_graph_that_runs_out_of_descriptors_refuses_connections_and_keeps_running(tmp_path):
     limit = 48
 

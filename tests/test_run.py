@@ -13,6 +13,7 @@ import pytest
 from conftest import ROOT, python_env
 
 
+@pytest.mark.slow
 def test_the_demo_graph_on_virtual_time_hears_every_message_in_order(run_module):
     result = run_module("actors.run", "graph.toml", "--clock", "virtual", "--duration", "10")
     assert result.returncode == 0, result.stderr
@@ -23,6 +24,7 @@ def test_the_demo_graph_on_virtual_time_hears_every_message_in_order(run_module)
     assert '[INFO] [0.500000000] [minimal_publisher]: Publishing: "Hello World: 0"' in result.stdout
 
 
+@pytest.mark.slow
 def test_a_malformed_graph_exits_2_with_one_line(run_module, tmp_path):
     bad = tmp_path / "bad.toml"
     bad.write_text('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nparms = {}\n')
@@ -32,12 +34,14 @@ def test_a_malformed_graph_exits_2_with_one_line(run_module, tmp_path):
     assert result.stdout == ""
 
 
+@pytest.mark.slow
 def test_bad_options_exit_2(run_module):
     result = run_module("actors.run", "graph.toml", "--clock", "sundial")
     assert result.returncode == 2
     assert "invalid choice: 'sundial'" in result.stderr
 
 
+@pytest.mark.slow
 def test_escalation_exits_1_with_the_cause_printed_once(run_module, tmp_path):
     graph = tmp_path / "crash.toml"
     graph.write_text(
@@ -86,6 +90,7 @@ def assert_only_users_frames(stderr: str, source: str) -> None:
 
 
 @pytest.mark.parametrize("delay", [0.0, 1.0])
+@pytest.mark.slow
 def test_a_constructor_that_raises_at_start_is_one_fatal_line_and_its_frames(run_module, tmp_path, delay):
     _, result = run_virtual(
         run_module,
@@ -101,6 +106,7 @@ def test_a_constructor_that_raises_at_start_is_one_fatal_line_and_its_frames(run
     assert '    raise ValueError("no calibration file")' in result.stderr.splitlines()
 
 
+@pytest.mark.slow
 def test_a_constructor_that_raises_on_restart_escalates_once_naming_node_class_and_error(run_module, tmp_path):
     _, result = run_virtual(
         run_module,
@@ -119,6 +125,7 @@ def test_a_constructor_that_raises_on_restart_escalates_once_naming_node_class_a
     assert "caused by" not in result.stderr  # each retry fails on its own, not chained
 
 
+@pytest.mark.slow
 def test_a_delayed_node_with_a_bad_override_is_a_graph_file_error_not_an_exception_group(run_module, tmp_path):
     graph, result = run_virtual(
         run_module,
@@ -157,6 +164,7 @@ def test_any_other_error_leaving_the_run_is_unwrapped_from_its_groups(capsys):
         ('[runtime]\nclock = "virtual"\n\n[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n', ()),
     ],
 )
+@pytest.mark.slow
 def test_virtual_time_without_a_duration_is_refused_with_a_hint(run_module, tmp_path, contents, args):
     graph = tmp_path / "endless.toml"
     graph.write_text(contents)
@@ -192,6 +200,7 @@ def running_demo(*options: str) -> Iterator[subprocess.Popen[str]]:
 
 
 @pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+@pytest.mark.slow
 def test_a_signal_on_the_wall_clock_stops_gracefully_without_traceback(signum):
     with running_demo() as proc:
         proc.send_signal(signum)
@@ -200,6 +209,7 @@ def test_a_signal_on_the_wall_clock_stops_gracefully_without_traceback(signum):
     assert "Traceback" not in out + err
 
 
+@pytest.mark.slow
 def test_ctrl_c_while_the_graph_is_still_spawning_stops_it_gracefully(run_module, tmp_path):
     # The signal receiver is in place before the first node is made: a Ctrl-C that comes as
     # soon as a node exists (the README's test sends it once every node shows) is a graceful stop.
@@ -210,6 +220,7 @@ def test_ctrl_c_while_the_graph_is_still_spawning_stops_it_gracefully(run_module
 
 
 @pytest.mark.parametrize("loop", ["uvloop", "asyncio"])
+@pytest.mark.slow
 def test_the_demo_runs_on_the_loop_asked_for_and_stops_gracefully(loop):
     pytest.importorskip(loop)
     with running_demo("--loop", loop) as proc:
@@ -219,6 +230,7 @@ def test_the_demo_runs_on_the_loop_asked_for_and_stops_gracefully(loop):
     assert "Traceback" not in out + err
 
 
+@pytest.mark.slow
 def test_a_loop_on_virtual_time_is_refused(run_module):
     result = run_module("actors.run", "graph.toml", "--clock", "virtual", "--duration", "1", "--loop", "uvloop")
     assert (result.returncode, result.stdout) == (2, "")
@@ -233,6 +245,7 @@ def test_uvloop_missing_is_exit_2_with_the_install_hint(monkeypatch, capsys):
     assert capsys.readouterr().err == "error: --loop uvloop: uvloop is not installed: pip install 'actors[fast]'\n"
 
 
+@pytest.mark.slow
 def test_the_services_graph_waits_for_its_servers_then_succeeds(run_module):
     result = run_module("actors.run", "graphs/services.toml", "--clock", "virtual", "--duration", "5")
     assert result.returncode == 0, result.stderr
@@ -243,6 +256,7 @@ def test_the_services_graph_waits_for_its_servers_then_succeeds(run_module):
     assert "[add_three_ints_client]: Result of add_three_ints: for 2 + 3 + 1 = 6" in out
 
 
+@pytest.mark.slow
 def test_a_parameter_override_of_the_wrong_type_exits_2(run_module, tmp_path):
     graph = tmp_path / "params.toml"
     graph.write_text('[[nodes]]\nuse = "nodes.param_talker:MinimalParam"\nparams = { my_parameter = 3 }\n')
@@ -254,6 +268,7 @@ def test_a_parameter_override_of_the_wrong_type_exits_2(run_module, tmp_path):
     )
 
 
+@pytest.mark.slow
 def test_the_params_graph_with_an_override(run_module, tmp_path):
     graph = tmp_path / "params.toml"
     graph.write_text('[[nodes]]\nuse = "nodes.param_talker:MinimalParam"\nparams = { my_parameter = "earth" }\n')
@@ -262,6 +277,7 @@ def test_the_params_graph_with_an_override(run_module, tmp_path):
     assert hellos == ["Hello earth!", "Hello world!"]
 
 
+@pytest.mark.slow
 def test_actors_launch_is_python_m_actors_run(run_module, tmp_path):
     args = ("--clock", "virtual", "graphs/services.toml", "--duration", "3")
     launched = run_module("actors", "launch", *args)

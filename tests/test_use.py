@@ -60,6 +60,7 @@ def graph_file(folder: Path, use: str) -> Path:
     return path
 
 
+@pytest.mark.slow
 def test_the_graph_folder_comes_before_the_working_directory(tmp_path):
     in_graph_folder = node_file(tmp_path / "project", "nodes.mine", "the graph folder's")
     node_file(tmp_path / "elsewhere", "nodes.mine", "the working directory's")
@@ -69,6 +70,7 @@ def test_the_graph_folder_comes_before_the_working_directory(tmp_path):
     assert done.stdout.split() == [f"nodes.mine={in_graph_folder}"]
 
 
+@pytest.mark.slow
 def test_the_working_directory_comes_before_installed_code(tmp_path):
     mine = node_file(tmp_path / "work", "nodes.talker", "a talker of my own")  # the shipped one has this name too
     graph = graph_file(tmp_path / "graphs", "nodes.talker:Mine")
@@ -77,6 +79,7 @@ def test_the_working_directory_comes_before_installed_code(tmp_path):
     assert done.stdout.split() == [f"nodes.talker={mine}"]
 
 
+@pytest.mark.slow
 def test_installed_nodes_and_world_are_the_shipped_ones_when_nothing_else_has_them(tmp_path):
     graph = tmp_path / "graph.toml"
     graph.write_text('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n[[nodes]]\nuse = "world.sim:World"\n')
@@ -91,6 +94,7 @@ def test_installed_nodes_and_world_are_the_shipped_ones_when_nothing_else_has_th
     ]
 
 
+@pytest.mark.slow
 def test_a_shipped_graph_uses_the_shipped_code_beside_a_users_own_nodes_and_world(tmp_path):
     node_file(tmp_path, "nodes.constant_control", "not the shipped controller")
     (tmp_path / "world.py").write_text("raise SystemExit('the student world.py was imported')\n")
@@ -101,6 +105,7 @@ def test_a_shipped_graph_uses_the_shipped_code_beside_a_users_own_nodes_and_worl
     assert str(tmp_path) not in done.stdout
 
 
+@pytest.mark.slow
 def test_a_module_missing_from_a_users_nodes_package_names_both_paths(tmp_path):
     (tmp_path / "nodes").mkdir()
     (tmp_path / "nodes" / "__init__.py").write_text("")
@@ -118,6 +123,7 @@ def test_a_module_missing_from_a_users_nodes_package_names_both_paths(tmp_path):
     )
 
 
+@pytest.mark.slow
 def test_a_users_world_py_hiding_the_shipped_world_names_both_paths_and_exits_2(tmp_path):
     (tmp_path / "world.py").write_text("raise SystemExit('never imported to find out')\n")
     graph = graph_file(tmp_path, "world.sim:World")
@@ -151,6 +157,7 @@ def test_a_shipped_graph_by_its_bare_name_and_an_unknown_one_listing_the_shipped
     )
 
 
+@pytest.mark.slow
 def test_the_repositorys_graph_toml_still_says_nodes_and_world_and_gets_the_repositorys():
     done = which(ROOT / "graph.toml", cwd=ROOT)
     assert done.returncode == 0, done.stderr

@@ -257,6 +257,7 @@ def test_robots_meeting_head_on_both_stop() -> None:
     assert a.pose.x == pytest.approx(-b.pose.x)
 
 
+@pytest.mark.slow
 def test_a_crowd_never_overlaps() -> None:
     sim = Simulation.from_file("signs")
     rows = (-2.5, 1.0, 2.2)

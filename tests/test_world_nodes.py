@@ -237,6 +237,7 @@ def test_the_same_graph_and_seed_give_identical_odometry_with_noise():
     assert first[10]["pose"]["pose"]["position"]["y"] != 0.0  # the noise is on
 
 
+@pytest.mark.slow
 def test_the_turtlebot_graph_draws_its_run(run_module, tmp_path):
     graph = tmp_path / "tb.toml"
     image = tmp_path / "run.png"
@@ -247,6 +248,7 @@ def test_the_turtlebot_graph_draws_its_run(run_module, tmp_path):
     assert image.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
+@pytest.mark.slow
 def test_a_bad_world_file_exits_2_naming_file_and_key(run_module, tmp_path):
     world = tmp_path / "w.toml"
     world.write_text("[[boxes]]\ncenter = [0, 0]\nsize = [1, 2, 3]\n")
@@ -326,6 +328,7 @@ async def test_the_world_says_when_a_robot_touches_something_and_when_it_is_free
 
 
 @pytest.mark.parametrize("path", ["graphs/turtlebot.toml", "graph.toml"])
+@pytest.mark.slow
 async def test_the_demo_robot_drives_a_minute_without_touching_anything_until_killed_then_stops(path):
     """The demo graphs as configured: /kill at any time in the first minute is visibly what stops it."""
     from actors.launch.graph_file import load_graph

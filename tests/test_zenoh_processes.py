@@ -18,6 +18,8 @@ from zenoh_procs import free_port, spawned, zenoh_env
 
 pytest.importorskip("zenoh", reason="the Zenoh transport's tests need eclipse-zenoh (the test extra has it)")
 
+pytestmark = pytest.mark.slow  # every test runs its graphs as child processes
+
 
 def graph_file(tmp_path: Path, name: str, *uses: str) -> str:
     path = tmp_path / f"{name}.toml"

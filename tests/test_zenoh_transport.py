@@ -66,6 +66,7 @@ async def test_malformed_samples_are_logged_once_per_publisher_and_dropped(caplo
     assert "attachment of 2 bytes" in warnings[1]
 
 
+@pytest.mark.slow
 async def test_a_token_with_an_unknown_type_hash_is_ignored_and_doctor_says_why(caplog):
     port = free_port()
     other_hash = "RIHS01_" + "ab" * 32
@@ -98,6 +99,7 @@ async def test_a_token_with_an_unknown_type_hash_is_ignored_and_doctor_says_why(
     assert sum("not rmw_zenoh's" in r.getMessage() for r in caplog.records) == 1
 
 
+@pytest.mark.slow
 async def test_a_server_process_killed_during_a_call_fails_the_call_at_once(tmp_path):
     port = free_port()
     graph = tmp_path / "slow.toml"
