@@ -10,6 +10,8 @@ from pathlib import Path
 import pytest
 from conftest import python_env
 
+from actors.cli import main
+
 
 def run(cwd: Path, *args: str) -> subprocess.CompletedProcess[str]:
     """``python ARGS`` in ``cwd`` as a user would run it: the installed actors, not the checkout's path."""
@@ -17,6 +19,14 @@ def run(cwd: Path, *args: str) -> subprocess.CompletedProcess[str]:
     return subprocess.run([sys.executable, *args], cwd=cwd, env=env, capture_output=True, text=True, timeout=120)
 
 
+def create(capsys, *args: str) -> tuple[int, str, str]:
+    """``actors pkg create ARGS`` in this process (the folder is the working directory): code, stdout, stderr."""
+    code = main(["pkg", "create", *args])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+@pytest.mark.slow
 def test_a_created_package_runs_its_node_and_passes_its_test(tmp_path):
     created = run(tmp_path, "-m", "actors", "pkg", "create", "my_pkg", "--node-name", "my_node")
     assert (created.returncode, created.stderr) == (0, ""), created.stderr
@@ -49,8 +59,9 @@ def test_a_created_package_runs_its_node_and_passes_its_test(tmp_path):
     assert "1 passed" in tested.stdout
 
 
-def test_the_package_readme_says_how_to_run_and_test_it(tmp_path):
-    assert run(tmp_path, "-m", "actors", "pkg", "create", "rover").returncode == 0
+def test_the_package_readme_says_how_to_run_and_test_it(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    assert create(capsys, "rover")[0] == 0
     readme = (tmp_path / "rover" / "README.md").read_text()
     assert "python -m actors.run graph.toml --clock virtual --duration 3" in readme
     assert "python -m pytest" in readme
@@ -68,17 +79,19 @@ def test_the_package_readme_says_how_to_run_and_test_it(tmp_path):
         (("twin", "--node-name", "twin"), "the node cannot be named as its package ('twin')"),
     ],
 )
-def test_a_bad_name_is_one_line_exit_2_and_writes_nothing(tmp_path, args, error):
-    result = run(tmp_path, "-m", "actors", "pkg", "create", *args)
-    assert result.returncode == 2 and result.stdout == ""
-    assert result.stderr.startswith(f"actors: {error}") and len(result.stderr.splitlines()) == 1
+def test_a_bad_name_is_one_line_exit_2_and_writes_nothing(tmp_path, monkeypatch, capsys, args, error):
+    monkeypatch.chdir(tmp_path)
+    code, out, err = create(capsys, *args)
+    assert code == 2 and out == ""
+    assert err.startswith(f"actors: {error}") and len(err.splitlines()) == 1
     assert os.listdir(tmp_path) == []
 
 
-def test_an_existing_folder_is_left_alone(tmp_path):
+def test_an_existing_folder_is_left_alone(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
     (tmp_path / "my_pkg").mkdir()
     (tmp_path / "my_pkg" / "mine.txt").write_text("keep")
-    result = run(tmp_path, "-m", "actors", "pkg", "create", "my_pkg")
-    assert result.returncode == 2
-    assert result.stderr.startswith("actors: my_pkg already exists")
+    code, _, err = create(capsys, "my_pkg")
+    assert code == 2
+    assert err.startswith("actors: my_pkg already exists")
     assert os.listdir(tmp_path / "my_pkg") == ["mine.txt"]
