@@ -391,6 +391,10 @@ def _find_packages(roots: Iterable[Path]) -> dict[str, tuple[Path, dict[str, lis
         for kind in ("msg", "srv", "action"):
             for source in sorted(root.glob(f"*/{kind}/*.{kind}")):
                 found.setdefault(source.parent.parent.name, {}).setdefault(kind, []).append(source)
+            for other in ("msg", "srv", "action"):
+                misplaced = next(iter(sorted(root.glob(f"*/{other}/*.{kind}"))), None) if other != kind else None
+                if misplaced is not None:
+                    raise InterfaceError(f"{misplaced}: a .{kind} file belongs in {kind}/, not {other}/")
         for pkg, kinds in found.items():
             if not PACKAGE_NAME.fullmatch(pkg) or keyword.iskeyword(pkg):
                 raise InterfaceError(f"{root / pkg}: invalid package name {pkg!r}")
@@ -404,10 +408,20 @@ _PARSERS = {"msg": parse_message, "srv": parse_service, "action": parse_action}
 def _parse_file(path: Path, pkg: str, kind: str) -> MessageSpec | ServiceSpec | ActionSpec:
     if not TYPE_NAME.fullmatch(path.stem):
         raise InterfaceError(f"{path}: a type name must be CamelCase letters and digits")
-    if path.stem in ("Annotated", "ClassVar"):  # generated modules import these from typing
-        raise InterfaceError(f"{path}: the type name {path.stem!r} is reserved")
+    # A class of that name cannot be written (None, True, False) or would hide what the
+    # generated module imports from typing.
+    if keyword.iskeyword(path.stem) or path.stem in ("Annotated", "ClassVar"):
+        raise InterfaceError(f"{path}: the type name {path.stem!r} is reserved in Python")
+    if not path.is_file():
+        raise InterfaceError(f"{path}: not a file (an interface is a .{kind} file)")
+    data = path.read_bytes()
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as error:
+        line = data.count(b"\n", 0, error.start) + 1
+        raise InterfaceError(f"{path}:{line}: not UTF-8 text (byte {data[error.start]:#04x})") from None
     parse: Any = _PARSERS[kind]
-    return parse(path.read_text(encoding="utf-8"), path=path, pkg=pkg, name=path.stem)
+    return parse(text, path=path, pkg=pkg, name=path.stem)
 
 
 def _parts(spec: MessageSpec | ServiceSpec | ActionSpec) -> tuple[MessageSpec, ...]:
