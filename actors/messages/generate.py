@@ -50,7 +50,7 @@ from actors.messages.idl import (
     shipped_root,
 )
 
-__all__ = ["generate", "render", "render_module"]
+__all__ = ["generate", "render", "render_module", "parse_file", "check_references"]
 
 # byte and char share uint8's alias: one range, one name.
 _ALIAS = {name: f"_{name}" for name in INTEGER_RANGES} | {"byte": "_uint8", "char": "_uint8"}
@@ -365,8 +365,8 @@ def render(roots: Sequence[str | Path] = ()) -> dict[Path, str]:
         if root not in given:
             continue
         for kind, sources in kinds.items():
-            specs = [_parse_file(source, pkg, kind) for source in sources]
-            _check_references(specs, modules)
+            specs = [parse_file(source, pkg, kind) for source in sources]
+            check_references(specs, modules)
             text = render_module(specs, modules=modules, sources=f"{pkg}/{kind}/*.{kind}")
             out[root / pkg / kind / "__init__.py"] = text
         doc = f"The {pkg} interface package: ``{root.name}.{pkg}.msg``, ``.srv`` and ``.action``."
@@ -405,7 +405,7 @@ def _find_packages(roots: Iterable[Path]) -> dict[str, tuple[Path, dict[str, lis
 _PARSERS = {"msg": parse_message, "srv": parse_service, "action": parse_action}
 
 
-def _parse_file(path: Path, pkg: str, kind: str) -> MessageSpec | ServiceSpec | ActionSpec:
+def parse_file(path: Path, pkg: str, kind: str) -> MessageSpec | ServiceSpec | ActionSpec:
     if not TYPE_NAME.fullmatch(path.stem):
         raise InterfaceError(f"{path}: a type name must be CamelCase letters and digits")
     # A class of that name cannot be written (None, True, False) or would hide what the
@@ -433,7 +433,7 @@ def _parts(spec: MessageSpec | ServiceSpec | ActionSpec) -> tuple[MessageSpec, .
     return (spec,)
 
 
-def _check_references(specs: Iterable[MessageSpec | ServiceSpec | ActionSpec], modules: dict[str, str]) -> None:
+def check_references(specs: Iterable[MessageSpec | ServiceSpec | ActionSpec], modules: dict[str, str]) -> None:
     for spec in specs:
         if isinstance(spec, ActionSpec):
             missing = [t for t in _ACTION_NEEDS if t not in modules]
