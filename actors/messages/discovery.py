@@ -14,8 +14,14 @@ A package of ``.msg``/``.srv``/``.action`` files is importable as
 - in a ROS install: ``share/<pkg>/msg|srv|action`` under each prefix of
   ``AMENT_PREFIX_PATH``.
 
+- in a bag: :func:`add_definitions` keeps the message types a bag's
+  ``ros2msg`` schemas define and nothing here knows, as ``.msg`` files in
+  the cache folder's ``bags/share``, read like a ROS install by every
+  process after (so a foreign bag plays, and its topics echo).
+
 A workspace's package wins over an installed one of the same name, as a
-colcon overlay does; a shipped package wins over both.  The rclpy overlay
+colcon overlay does, and an installed one over a bag's; a shipped package
+wins over all.  The rclpy overlay
 makes ``<pkg>.msg`` an alias of ``interfaces.<pkg>.msg``, so a type is one
 class whatever the route.  The generated source is kept in a cache folder
 (``ACTORS_INTERFACE_CACHE``, else ``$XDG_CACHE_HOME/actors/interfaces``, else
@@ -47,6 +53,7 @@ __all__ = [
     "InterfaceImportError",
     "add_workspace",
     "cache_dir",
+    "add_definitions",
     "discovered",
     "find_spec",
     "package_sources",
@@ -90,11 +97,12 @@ def discovered() -> dict[str, Path]:
     """
     env = (os.environ.get("ACTORS_WORKSPACE", ""), os.environ.get("AMENT_PREFIX_PATH", ""))
     starts = (*_starts, *(Path(p) for p in env[0].split(os.pathsep) if p), Path.cwd())
-    key = (starts, env)
+    bags = _bag_prefix()
+    key = (starts, env, bags, _bag_writes)
     with _lock:
         found = _found.get(key)
         if found is None:
-            found = {}
+            found = dict(_installed(bags))
             for prefix in reversed([p for p in env[1].split(os.pathsep) if p]):
                 found.update(_installed(Path(prefix)))
             for start in reversed(starts):  # the first start wins: it is updated last
@@ -118,6 +126,57 @@ def cache_dir() -> Path:
         return Path(explicit)
     base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
     return Path(base) / "actors" / "interfaces"
+
+
+_bag_writes = 0  # bumped when add_definitions writes a file: what discovered() found may change
+
+
+def _bag_prefix() -> Path:
+    return cache_dir() / "bags"
+
+
+def add_definitions(ros_type: str, schema: str) -> list[str]:
+    """Keep the message types of a bag's ``ros2msg`` schema (``ros_type``'s text, then
+    ``MSG: pkg/Name`` sections) that nothing here defines; returns their names.
+
+    A type a shipped, workspace or installed package defines is left alone (the
+    player then compares type hashes).  Raises InterfaceError for a schema that
+    is not ``ros2msg`` text.
+    """
+    rule = "\n" + "=" * 80 + "\n"
+    sections = schema.split(rule)
+    named = [(ros_type, sections[0])]
+    for section in sections[1:]:
+        head, _, text = section.partition("\n")
+        if not head.startswith("MSG: "):
+            raise InterfaceError(f"{ros_type}: its bag schema has a section without 'MSG: <type>': {head[:60]!r}")
+        named.append((head.removeprefix("MSG: ").strip(), text))
+    global _bag_writes
+    kept = []
+    known = {**discovered(), **{name: shipped_root() / name for name in _shipped()}}
+    for name, text in named:
+        parts = name.split("/")
+        if len(parts) == 2:
+            parts.insert(1, "msg")
+        if len(parts) != 3 or parts[1] != "msg" or not idl.PACKAGE_NAME.fullmatch(parts[0]):
+            continue  # services and actions are not topics' types; a malformed name defines nothing
+        pkg, _, type_name = parts
+        if not idl.TYPE_NAME.fullmatch(type_name):
+            continue
+        folder = known.get(pkg)
+        bag_folder = _bag_prefix() / "share" / pkg
+        if folder is not None and folder != bag_folder:
+            continue  # its package is here already: a type it lacks is not added to it
+        path = bag_folder / "msg" / f"{type_name}.msg"
+        if not path.is_file() or path.read_text(encoding="utf-8") != text:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            partial = path.with_suffix(f".{os.getpid()}.tmp")
+            partial.write_text(text, encoding="utf-8")
+            os.replace(partial, path)
+            with _lock:
+                _bag_writes += 1
+        kept.append(f"{pkg}/msg/{type_name}")
+    return kept
 
 
 def _shipped() -> frozenset[str]:
