@@ -229,3 +229,32 @@ async def test_the_command_line_carries_workspace_types_to_and_from_a_running_gr
         walked = await actors("action", "send_goal", "/walk", "course_interfaces/action/Walk", "{steps: 2}", "-f")
         assert "done: 2" in walked and "name: walker1" in walked
         assert "SUCCEEDED" in walked
+
+
+def test_the_command_line_takes_a_workspace_by_option(fresh, capsys):
+    assert main(["--workspace", str(WORKSPACE), "interface", "show", "course_interfaces/srv/Register"]) == 0
+    assert capsys.readouterr().out.endswith("---\nbool accepted\n")
+    assert main(["--workspace", str(fresh / "nowhere"), "interface", "list"]) == 2
+    assert capsys.readouterr().err == f"actors: {fresh / 'nowhere'}: no such workspace folder\n"
+
+
+@pytest.mark.virtual_time
+async def test_a_bag_of_workspace_types_records_lists_and_plays_back(fresh):
+    from actors.recording.player import plan, timeline
+    from actors.recording.reader import Bag
+    from actors.recording.recorder import Recorder
+
+    discovery.add_workspace(WORKSPACE)
+    path = fresh / "people.mcap"
+    async with Runtime(attach=[Recorder(path)]) as rt:
+        registry = rt.spawn(Registry)
+        await anyio.sleep(0.12)  # two ticks of its 0.05 s timer, and a third
+        registry.destroy_node()
+    bag = Bag(path)
+    topic = next(t for t in bag.topics if t.name == "/people")
+    assert (topic.type, topic.type_hash) == ("course_interfaces/msg/Person", ROS_HASHES["course_interfaces/msg/Person"])
+    assert "MSG: Address\n" in topic.definition or "MSG: course_interfaces/Address\n" in topic.definition
+    playable, skipped = plan(bag, topics=["/people"])
+    assert skipped == []
+    played = [msg for _, _, msg in timeline(bag, playable)]
+    assert [(p.name, p.age) for p in played] == [("grace", 85)] * len(played) and len(played) >= 2
