@@ -34,6 +34,7 @@ import msgspec.inspect as mi
 from actors.core.explain import explain
 from actors.errors import InterfaceError, MessageValidationError, UnknownInterfaceError
 from actors.messages import cdr, typehash
+from actors.messages.discovery import discovered, package_sources
 from actors.messages.idl import PRIMITIVES
 
 __all__ = [
@@ -128,7 +129,7 @@ def ros_name(type_: Any) -> str:
 
 
 def list_types() -> list[str]:
-    """The ROS names of every message, service and action known (all roots and modules), sorted.
+    """The ROS names of every message, service and action known (roots, modules, packages found), sorted.
 
     Services' ``_Request``/``_Response`` messages are not listed separately,
     nor the parts and wire types of an action.
@@ -145,6 +146,9 @@ def list_types() -> list[str]:
             names.update(
                 f"{source.parent.parent.name}/{kind}/{source.stem}" for source in root.glob(f"*/{kind}/*.{kind}")
             )
+    for pkg, folder in discovered().items():
+        for kind, sources in package_sources(folder).items():
+            names.update(f"{pkg}/{kind}/{source.stem}" for source in sources)
     return sorted(names)
 
 

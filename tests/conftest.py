@@ -92,3 +92,11 @@ def protobuf_class(name: str, file_descriptor_set: bytes) -> type:
 def rclpy_session(rclpy_overlay):
     """The virtual-clock Session under the plugin's rclpy_overlay: the test's thread is the script."""
     return rclpy_overlay.get_default_context().session
+
+
+@pytest.fixture(scope="session", autouse=True)
+def interface_cache(tmp_path_factory: pytest.TempPathFactory):
+    """Types made from workspaces and bags go to a folder of the test run (child processes too), not the user's."""
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("ACTORS_INTERFACE_CACHE", str(tmp_path_factory.mktemp("interface_cache")))
+        yield

@@ -175,7 +175,12 @@ def test_packages_and_package_list_what_each_defines(capsys):
     lines = run(capsys, "package", "example_interfaces")[1].splitlines()
     kinds = [line.split("/")[1] for line in lines]
     assert kinds == sorted(kinds, key=["msg", "srv", "action"].index) and "action" in kinds
-    assert run(capsys, "package", "example_interfaces", "-s")[1] == "example_interfaces/srv/AddTwoInts\n"
+    services = run(capsys, "package", "example_interfaces", "-s")[1].splitlines()
+    assert services == [
+        "example_interfaces/srv/AddTwoInts",
+        "example_interfaces/srv/SetBool",
+        "example_interfaces/srv/Trigger",
+    ]
     assert run(capsys, "package", "std_srvs", "-a") == (0, "", "")  # none of that kind, as ros2
 
 

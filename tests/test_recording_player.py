@@ -241,12 +241,12 @@ class ScanCounter(Node):
 
 
 @pytest.mark.slow
-def test_unknown_types_are_listed_and_skipped(tmp_path):
+def test_unknown_types_without_a_schema_are_listed_and_skipped(tmp_path):
     from actors.recording.bag_writer import BagWriter
 
     path = tmp_path / "foreign.mcap"
     writer = BagWriter(path)
-    odd = writer.add_topic("/odd", "no_such_msgs/msg/Thing", definition="int32 x\n", type_hash="")
+    odd = writer.add_topic("/odd", "no_such_msgs/msg/Thing", definition="", type_hash="")
     twist = writer.add_topic(
         "/cmd_vel",
         "geometry_msgs/msg/Twist",

@@ -9,6 +9,7 @@ import sys
 from collections.abc import Sequence
 
 from actors.errors import ActorsError
+from actors.messages.discovery import add_workspace
 
 __all__ = ["main"]
 
@@ -34,6 +35,14 @@ GROUPS = (
 def build_parser() -> argparse.ArgumentParser:
     """The full argument parser, every group registered."""
     parser = argparse.ArgumentParser(prog="actors", description="ros2-style command line for actors graphs")
+    parser.add_argument(
+        "--workspace",
+        action="append",
+        default=[],
+        metavar="DIR",
+        help="also find interface packages in this ROS workspace (repeatable; the working directory's is found "
+        "anyway, and ACTORS_WORKSPACE's)",
+    )
     groups = parser.add_subparsers(dest="group", metavar="GROUP", required=True)
     for group in GROUPS:
         importlib.import_module(f"actors.cli.{group}").register(groups)
@@ -51,6 +60,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
+        for folder in args.workspace:
+            add_workspace(folder)
         return args.func(args) or 0
     except ActorsError as exc:
         print(f"actors: {exc}", file=sys.stderr)

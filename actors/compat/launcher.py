@@ -45,6 +45,7 @@ from actors.compat.session import Session
 from actors.errors import ActorsError, GraphFileError, RosArgsError
 from actors.launch.graph_file import load_graph
 from actors.launch.rosargs import parse
+from actors.messages.discovery import add_workspace
 from actors.ops.control import ControlEndpoint
 from actors.ros.log import INFO, LEVELS, configure_console
 
@@ -80,6 +81,8 @@ def run_script(
         if not each.is_file():
             print(f"error: {each}: no such script", file=sys.stderr)
             return 2
+    for each in reversed((path, *(partner for partner, _ in scripts))):
+        add_workspace(each.parent)  # the script's own workspace: its interface packages import as rclpy's
     if duration is not None and not duration > 0:
         print(f"error: --duration must be > 0 seconds, got {duration}", file=sys.stderr)
         return 2

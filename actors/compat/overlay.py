@@ -24,6 +24,8 @@ from pathlib import Path
 from types import ModuleType
 from typing import Any
 
+from actors.messages.discovery import discovered
+
 __all__ = ["install", "uninstall", "installed", "overlaid", "OverlayFinder"]
 
 _RCLPY = "actors.compat.rclpy"
@@ -31,7 +33,11 @@ _INTERFACES = "interfaces"
 
 
 class OverlayFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
-    """Maps ``rclpy[.x]`` to ``actors.compat.rclpy[.x]`` and ``<pkg>[.x]`` to ``interfaces.<pkg>[.x]``."""
+    """Maps ``rclpy[.x]`` to ``actors.compat.rclpy[.x]`` and ``<pkg>[.x]`` to ``interfaces.<pkg>[.x]``.
+
+    ``<pkg>`` is a shipped interface package or one found in a workspace or a
+    ROS install (:mod:`actors.messages.discovery`).
+    """
 
     def __init__(self) -> None:
         self.packages = _interface_packages()
@@ -41,7 +47,7 @@ class OverlayFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         top, _, rest = fullname.partition(".")
         if top == "rclpy":
             return _RCLPY + (f".{rest}" if rest else "")
-        if top in self.packages:
+        if top in self.packages or (top.isidentifier() and top in discovered()):
             return f"{_INTERFACES}.{fullname}"
         return None
 

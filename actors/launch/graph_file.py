@@ -61,6 +61,7 @@ from actors.core.tomlfile import MAX_SECONDS, load_toml
 from actors.errors import GraphFileError, InvalidNameError, RosArgsError
 from actors.launch.importing import find_graph, import_use
 from actors.launch.rosargs import load_params_file, node_key_matches, values_for
+from actors.messages.discovery import add_workspace
 from actors.ros.names import expand, fully_qualified, normalize_namespace, validate_node_name
 from actors.ros.node import Node
 from actors.system.supervisor import RestartType, Strategy, SupervisorPolicy
@@ -175,6 +176,7 @@ def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
     except FileNotFoundError as exc:
         raise GraphFileError(str(exc)) from None
     graph = load_toml(path, GraphFile, GraphFileError)
+    add_workspace(Path(path).parent)  # the graph's workspace: its interface packages import by name
     if not graph.nodes:
         raise GraphFileError(f'{path}: no nodes: a graph needs at least one [[nodes]] table with use = "module:Class"')
     if graph.transport is not None and graph.transport.config:

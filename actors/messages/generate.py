@@ -50,7 +50,7 @@ from actors.messages.idl import (
     shipped_root,
 )
 
-__all__ = ["generate", "render", "render_module"]
+__all__ = ["generate", "render", "render_module", "parse_file", "check_references"]
 
 # byte and char share uint8's alias: one range, one name.
 _ALIAS = {name: f"_{name}" for name in INTEGER_RANGES} | {"byte": "_uint8", "char": "_uint8"}
@@ -365,8 +365,8 @@ def render(roots: Sequence[str | Path] = ()) -> dict[Path, str]:
         if root not in given:
             continue
         for kind, sources in kinds.items():
-            specs = [_parse_file(source, pkg, kind) for source in sources]
-            _check_references(specs, modules)
+            specs = [parse_file(source, pkg, kind) for source in sources]
+            check_references(specs, modules)
             text = render_module(specs, modules=modules, sources=f"{pkg}/{kind}/*.{kind}")
             out[root / pkg / kind / "__init__.py"] = text
         doc = f"The {pkg} interface package: ``{root.name}.{pkg}.msg``, ``.srv`` and ``.action``."
@@ -391,6 +391,10 @@ def _find_packages(roots: Iterable[Path]) -> dict[str, tuple[Path, dict[str, lis
         for kind in ("msg", "srv", "action"):
             for source in sorted(root.glob(f"*/{kind}/*.{kind}")):
                 found.setdefault(source.parent.parent.name, {}).setdefault(kind, []).append(source)
+            for other in ("msg", "srv", "action"):
+                misplaced = next(iter(sorted(root.glob(f"*/{other}/*.{kind}"))), None) if other != kind else None
+                if misplaced is not None:
+                    raise InterfaceError(f"{misplaced}: a .{kind} file belongs in {kind}/, not {other}/")
         for pkg, kinds in found.items():
             if not PACKAGE_NAME.fullmatch(pkg) or keyword.iskeyword(pkg):
                 raise InterfaceError(f"{root / pkg}: invalid package name {pkg!r}")
@@ -401,13 +405,23 @@ def _find_packages(roots: Iterable[Path]) -> dict[str, tuple[Path, dict[str, lis
 _PARSERS = {"msg": parse_message, "srv": parse_service, "action": parse_action}
 
 
-def _parse_file(path: Path, pkg: str, kind: str) -> MessageSpec | ServiceSpec | ActionSpec:
+def parse_file(path: Path, pkg: str, kind: str) -> MessageSpec | ServiceSpec | ActionSpec:
     if not TYPE_NAME.fullmatch(path.stem):
         raise InterfaceError(f"{path}: a type name must be CamelCase letters and digits")
-    if path.stem in ("Annotated", "ClassVar"):  # generated modules import these from typing
-        raise InterfaceError(f"{path}: the type name {path.stem!r} is reserved")
+    # A class of that name cannot be written (None, True, False) or would hide what the
+    # generated module imports from typing.
+    if keyword.iskeyword(path.stem) or path.stem in ("Annotated", "ClassVar"):
+        raise InterfaceError(f"{path}: the type name {path.stem!r} is reserved in Python")
+    if not path.is_file():
+        raise InterfaceError(f"{path}: not a file (an interface is a .{kind} file)")
+    data = path.read_bytes()
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as error:
+        line = data.count(b"\n", 0, error.start) + 1
+        raise InterfaceError(f"{path}:{line}: not UTF-8 text (byte {data[error.start]:#04x})") from None
     parse: Any = _PARSERS[kind]
-    return parse(path.read_text(encoding="utf-8"), path=path, pkg=pkg, name=path.stem)
+    return parse(text, path=path, pkg=pkg, name=path.stem)
 
 
 def _parts(spec: MessageSpec | ServiceSpec | ActionSpec) -> tuple[MessageSpec, ...]:
@@ -419,7 +433,7 @@ def _parts(spec: MessageSpec | ServiceSpec | ActionSpec) -> tuple[MessageSpec, .
     return (spec,)
 
 
-def _check_references(specs: Iterable[MessageSpec | ServiceSpec | ActionSpec], modules: dict[str, str]) -> None:
+def check_references(specs: Iterable[MessageSpec | ServiceSpec | ActionSpec], modules: dict[str, str]) -> None:
     for spec in specs:
         if isinstance(spec, ActionSpec):
             missing = [t for t in _ACTION_NEEDS if t not in modules]

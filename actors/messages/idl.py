@@ -79,6 +79,8 @@ _TYPE = re.compile(
 )
 #: What a package name and a type name may be.
 PACKAGE_NAME = re.compile(r"[a-z][a-z0-9_]*")
+#: The largest array size or string bound: CDR carries lengths as uint32.
+_MAX_BOUND = 2**32 - 1
 TYPE_NAME = re.compile(r"[A-Z][A-Za-z0-9]*")
 # The parts of an action other definitions may name: ``pkg/action/Name_Goal``.
 _ACTION_PART = re.compile(r"[A-Z][A-Za-z0-9]*_(?:Goal|Result|Feedback)")
@@ -357,6 +359,10 @@ def _parse_type(text: str, pkg: str, where: tuple[str, int]) -> FieldType:
     if upper and not size:
         raise IdlError(*where, f"a bounded array needs a size: {text!r}")
     array = None if size is None else "bounded" if upper else "fixed" if size else "unbounded"
+    for bound, what in ((string_bound, "a string's bound"), (size, "an array's size")):
+        # ROS refuses 0; CDR writes lengths as uint32, so nothing larger can cross the wire.
+        if bound and not 0 < int(bound) <= _MAX_BOUND:
+            raise IdlError(*where, f"{what} must be from 1 to {_MAX_BOUND}, got {int(bound)} in {text!r}")
     bound = int(string_bound) if string_bound else None
     count = int(size) if size else None
     if base in PRIMITIVES:

@@ -1,7 +1,7 @@
 """Playing a bag back: which topics can be played and as what, the messages in order, and an in-graph player.
 
 :func:`plan` decides, once per topic, whether it can be played here: its type
-must be known (``interfaces/``) and the same as recorded (its RIHS01 hash), and
+must be known (``interfaces/``, a workspace, or the bag's own schemas) and the same as recorded (its RIHS01 hash), and
 its encoding CDR; each topic that cannot is named in one line and skipped.
 :func:`timeline` gives the decoded messages in the bag's order with their
 times, and ``/clock`` ticks (``rosgraph_msgs/Clock``) when asked.  :func:`play`
@@ -23,6 +23,7 @@ import yaml
 from actors import codec
 from actors.core._actor import Actor, Owner
 from actors.errors import ActorsError, InterfaceError
+from actors.messages.discovery import add_definitions
 from actors.recording.reader import Bag
 from actors.ros.names import expand
 from actors.ros.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
@@ -78,6 +79,8 @@ def plan(
             reason = f"its messages are {topic.serialization_format!r}, not cdr"
         else:
             try:
+                if topic.definition:
+                    add_definitions(topic.type, topic.definition)  # a type of elsewhere: typed from the bag
                 msg_type = codec.get_type(topic.type)
                 if topic.type_hash and topic.type_hash != codec.type_hash(msg_type):
                     reason = f"{topic.type} here is not the type it was recorded with (its type hash differs)"

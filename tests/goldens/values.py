@@ -68,28 +68,53 @@ class RandomPick:
 
 
 class DrawPick:
-    """Leaves drawn by hypothesis (``st.data()``): shrinkable random values."""
+    """Leaves drawn by hypothesis (``st.data()``): shrinkable random values.
+
+    A type with more leaves than hypothesis can draw in one example (test_msgs'
+    MultiNested has thousands) gets its first ``BUDGET`` leaves drawn and the
+    rest from a :class:`RandomPick` seeded by one more draw: every example is
+    still hypothesis's to choose and replay, only the tail does not shrink.
+    """
+
+    BUDGET = 300
 
     def __init__(self, data: Any) -> None:
         from hypothesis import strategies as st
 
         self.data, self.st = data, st
+        self.drawn = 0
+        self.rest: RandomPick | None = None
+
+    def _tail(self) -> RandomPick | None:
+        if self.rest is None and self.drawn >= self.BUDGET:
+            self.rest = RandomPick(self.data.draw(self.st.integers(0, 2**32)))
+        self.drawn += 1
+        return self.rest
 
     def integer(self, low: int, high: int) -> int:
-        return self.data.draw(self.st.integers(low, high))
+        tail = self._tail()
+        return tail.integer(low, high) if tail else self.data.draw(self.st.integers(low, high))
 
     def real(self, bits: int) -> float:
+        tail = self._tail()
+        if tail:
+            return tail.real(bits)
         return self.data.draw(self.st.floats(allow_nan=False, allow_infinity=False, width=bits))
 
     def text(self, most: int) -> str:
+        tail = self._tail()
+        if tail:
+            return tail.text(most)
         alphabet = self.st.characters(blacklist_categories=("Cs",), blacklist_characters="\x00")
         return self.data.draw(self.st.text(alphabet, max_size=most))
 
     def count(self, most: int) -> int:
-        return self.data.draw(self.st.integers(0, most))
+        tail = self._tail()
+        return tail.count(most) if tail else self.data.draw(self.st.integers(0, most))
 
     def octets(self, count: int) -> bytes:
-        return self.data.draw(self.st.binary(min_size=count, max_size=count))
+        tail = self._tail()
+        return tail.octets(count) if tail else self.data.draw(self.st.binary(min_size=count, max_size=count))
 
 
 def message(cls: type, pick: Pick) -> Any:

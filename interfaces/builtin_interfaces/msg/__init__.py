@@ -25,10 +25,7 @@ class Duration(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
         "# Seconds component, range is valid over any possible int32 value.\n"
         "int32 sec\n"
         "\n"
-        "# Nanoseconds component in the range of [0, 1e9), to be added to the seconds component.\n"
-        "# e.g.\n"
-        "# The duration -1.7 seconds is represented as {sec: -2, nanosec: 3e8}\n"
-        "# The duration 1.7 seconds is represented as {sec: 1, nanosec: 7e8}\n"
+        "# Nanoseconds component in the range of [0, 1e9).\n"
         "uint32 nanosec\n"
     )
 
@@ -47,10 +44,7 @@ class Time(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
         "# The seconds component, valid over all int32 values.\n"
         "int32 sec\n"
         "\n"
-        "# The nanoseconds component, valid in the range [0, 1e9), to be added to the seconds component.\n"
-        "# e.g.\n"
-        "# The time -1.7 seconds is represented as {sec: -2, nanosec: 3e8}\n"
-        "# The time 1.7 seconds is represented as {sec: 1, nanosec: 7e8}\n"
+        "# The nanoseconds component, valid in the range [0, 1e9).\n"
         "uint32 nanosec\n"
     )
 

@@ -8,21 +8,40 @@ from interfaces.std_msgs.msg import Header
 
 __all__ = [
     "Accel",
+    "AccelStamped",
+    "AccelWithCovariance",
+    "AccelWithCovarianceStamped",
+    "Inertia",
+    "InertiaStamped",
     "Point",
     "Point32",
+    "PointStamped",
+    "Polygon",
+    "PolygonInstance",
+    "PolygonInstanceStamped",
+    "PolygonStamped",
     "Pose",
     "Pose2D",
+    "PoseArray",
     "PoseStamped",
     "PoseWithCovariance",
+    "PoseWithCovarianceStamped",
     "Quaternion",
+    "QuaternionStamped",
     "Transform",
     "TransformStamped",
     "Twist",
     "TwistStamped",
     "TwistWithCovariance",
+    "TwistWithCovarianceStamped",
     "Vector3",
+    "Vector3Stamped",
+    "VelocityStamped",
     "Wrench",
+    "WrenchStamped",
 ]
+
+_int64 = Annotated[int, msgspec.Meta(ge=-9223372036854775808, le=9223372036854775807)]
 
 
 class Vector3(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -58,6 +77,102 @@ class Accel(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     linear: Vector3 = msgspec.field(default_factory=Vector3)
     angular: Vector3 = msgspec.field(default_factory=Vector3)
+
+
+class AccelStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/AccelStamped``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/AccelStamped"
+    __ros_definition__: ClassVar[str] = (
+        "# An accel with reference coordinate frame and timestamp\n"
+        "std_msgs/Header header\n"
+        "Accel accel\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    accel: Accel = msgspec.field(default_factory=Accel)
+
+
+class AccelWithCovariance(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/AccelWithCovariance``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/AccelWithCovariance"
+    __ros_definition__: ClassVar[str] = (
+        "# This expresses acceleration in free space with uncertainty.\n"
+        "\n"
+        "Accel accel\n"
+        "\n"
+        "# Row-major representation of the 6x6 covariance matrix\n"
+        "# The orientation parameters use a fixed-axis representation.\n"
+        "# In order, the parameters are:\n"
+        "# (x, y, z, rotation about X axis, rotation about Y axis, rotation about Z axis)\n"
+        "float64[36] covariance\n"
+    )
+
+    accel: Accel = msgspec.field(default_factory=Accel)
+    covariance: Annotated[list[float], msgspec.Meta(min_length=36, max_length=36)] = msgspec.field(default_factory=lambda: [0.0] * 36)
+
+
+class AccelWithCovarianceStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/AccelWithCovarianceStamped``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/AccelWithCovarianceStamped"
+    __ros_definition__: ClassVar[str] = (
+        "# This represents an estimated accel with reference coordinate frame and timestamp.\n"
+        "std_msgs/Header header\n"
+        "AccelWithCovariance accel\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    accel: AccelWithCovariance = msgspec.field(default_factory=AccelWithCovariance)
+
+
+class Inertia(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/Inertia``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/Inertia"
+    __ros_definition__: ClassVar[str] = (
+        "# Mass [kg]\n"
+        "float64 m\n"
+        "\n"
+        "# Center of mass [m]\n"
+        "geometry_msgs/Vector3 com\n"
+        "\n"
+        "# Inertia Tensor [kg-m^2]\n"
+        "#     | ixx ixy ixz |\n"
+        "# I = | ixy iyy iyz |\n"
+        "#     | ixz iyz izz |\n"
+        "float64 ixx\n"
+        "float64 ixy\n"
+        "float64 ixz\n"
+        "float64 iyy\n"
+        "float64 iyz\n"
+        "float64 izz\n"
+    )
+
+    m: float = 0.0
+    com: Vector3 = msgspec.field(default_factory=Vector3)
+    ixx: float = 0.0
+    ixy: float = 0.0
+    ixz: float = 0.0
+    iyy: float = 0.0
+    iyz: float = 0.0
+    izz: float = 0.0
+
+
+class InertiaStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/InertiaStamped``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/InertiaStamped"
+    __ros_definition__: ClassVar[str] = (
+        "# An Inertia with a time stamp and reference frame.\n"
+        "\n"
+        "std_msgs/Header header\n"
+        "Inertia inertia\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    inertia: Inertia = msgspec.field(default_factory=Inertia)
 
 
 class Point(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -97,6 +212,81 @@ class Point32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     x: float = 0.0
     y: float = 0.0
     z: float = 0.0
+
+
+class PointStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/PointStamped``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/PointStamped"
+    __ros_definition__: ClassVar[str] = (
+        "# This represents a Point with reference coordinate frame and timestamp\n"
+        "\n"
+        "std_msgs/Header header\n"
+        "Point point\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    point: Point = msgspec.field(default_factory=Point)
+
+
+class Polygon(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/Polygon``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/Polygon"
+    __ros_definition__: ClassVar[str] = (
+        "# A specification of a polygon where the first and last points are assumed to be connected\n"
+        "\n"
+        "Point32[] points\n"
+    )
+
+    points: list[Point32] = msgspec.field(default_factory=list)
+
+
+class PolygonInstance(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/PolygonInstance``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/PolygonInstance"
+    __ros_definition__: ClassVar[str] = (
+        "# A specification of a polygon where the first and last points are assumed to be connected\n"
+        "# It includes a unique identification field for disambiguating multiple instances\n"
+        "\n"
+        "geometry_msgs/Polygon polygon\n"
+        "int64 id\n"
+    )
+
+    polygon: Polygon = msgspec.field(default_factory=Polygon)
+    id: _int64 = 0
+
+
+class PolygonInstanceStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/PolygonInstanceStamped``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/PolygonInstanceStamped"
+    __ros_definition__: ClassVar[str] = (
+        "# This represents a Polygon with reference coordinate frame and timestamp\n"
+        "# It includes a unique identification field for disambiguating multiple instances\n"
+        "\n"
+        "std_msgs/Header header\n"
+        "geometry_msgs/PolygonInstance polygon\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    polygon: PolygonInstance = msgspec.field(default_factory=PolygonInstance)
+
+
+class PolygonStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/PolygonStamped``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/PolygonStamped"
+    __ros_definition__: ClassVar[str] = (
+        "# This represents a Polygon with reference coordinate frame and timestamp\n"
+        "\n"
+        "std_msgs/Header header\n"
+        "Polygon polygon\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    polygon: Polygon = msgspec.field(default_factory=Polygon)
 
 
 class Quaternion(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -155,6 +345,22 @@ class Pose2D(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     theta: float = 0.0
 
 
+class PoseArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/PoseArray``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/PoseArray"
+    __ros_definition__: ClassVar[str] = (
+        "# An array of poses with a header for global reference.\n"
+        "\n"
+        "std_msgs/Header header\n"
+        "\n"
+        "Pose[] poses\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    poses: list[Pose] = msgspec.field(default_factory=list)
+
+
 class PoseStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     """``geometry_msgs/msg/PoseStamped``."""
 
@@ -188,6 +394,36 @@ class PoseWithCovariance(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tru
 
     pose: Pose = msgspec.field(default_factory=Pose)
     covariance: Annotated[list[float], msgspec.Meta(min_length=36, max_length=36)] = msgspec.field(default_factory=lambda: [0.0] * 36)
+
+
+class PoseWithCovarianceStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/PoseWithCovarianceStamped``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/PoseWithCovarianceStamped"
+    __ros_definition__: ClassVar[str] = (
+        "# This expresses an estimated pose with a reference coordinate frame and timestamp\n"
+        "\n"
+        "std_msgs/Header header\n"
+        "PoseWithCovariance pose\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    pose: PoseWithCovariance = msgspec.field(default_factory=PoseWithCovariance)
+
+
+class QuaternionStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/QuaternionStamped``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/QuaternionStamped"
+    __ros_definition__: ClassVar[str] = (
+        "# This represents an orientation with reference coordinate frame and timestamp.\n"
+        "\n"
+        "std_msgs/Header header\n"
+        "Quaternion quaternion\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    quaternion: Quaternion = msgspec.field(default_factory=Quaternion)
 
 
 class Transform(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -286,16 +522,85 @@ class TwistWithCovariance(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tr
     covariance: Annotated[list[float], msgspec.Meta(min_length=36, max_length=36)] = msgspec.field(default_factory=lambda: [0.0] * 36)
 
 
+class TwistWithCovarianceStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/TwistWithCovarianceStamped``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/TwistWithCovarianceStamped"
+    __ros_definition__: ClassVar[str] = (
+        "# This represents an estimated twist with reference coordinate frame and timestamp.\n"
+        "\n"
+        "std_msgs/Header header\n"
+        "TwistWithCovariance twist\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    twist: TwistWithCovariance = msgspec.field(default_factory=TwistWithCovariance)
+
+
+class Vector3Stamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/Vector3Stamped``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/Vector3Stamped"
+    __ros_definition__: ClassVar[str] = (
+        "# This represents a Vector3 with reference coordinate frame and timestamp\n"
+        "\n"
+        "# Note that this follows vector semantics with it always anchored at the origin,\n"
+        "# so the rotational elements of a transform are the only parts applied when transforming.\n"
+        "\n"
+        "std_msgs/Header header\n"
+        "Vector3 vector\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    vector: Vector3 = msgspec.field(default_factory=Vector3)
+
+
+class VelocityStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/VelocityStamped``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/VelocityStamped"
+    __ros_definition__: ClassVar[str] = (
+        "# This expresses the timestamped velocity vector of a frame 'body_frame_id' in the reference frame 'reference_frame_id' expressed from arbitrary observation frame 'header.frame_id'.\n"
+        "# - If the 'body_frame_id' and 'header.frame_id' are identical, the velocity is observed and defined in the local coordinates system of the body\n"
+        "#   which is the usual use-case in mobile robotics and is also known as a body twist.\n"
+        "\n"
+        "std_msgs/Header header\n"
+        "string body_frame_id\n"
+        "string reference_frame_id\n"
+        "Twist velocity\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    body_frame_id: str = ""
+    reference_frame_id: str = ""
+    velocity: Twist = msgspec.field(default_factory=Twist)
+
+
 class Wrench(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     """``geometry_msgs/msg/Wrench``."""
 
     __ros_type__: ClassVar[str] = "geometry_msgs/msg/Wrench"
     __ros_definition__: ClassVar[str] = (
-        "# This represents force in free space, separated into\n"
-        "# its linear and angular parts.\n"
+        "# This represents force in free space, separated into its linear and angular parts.\n"
+        "\n"
         "Vector3  force\n"
         "Vector3  torque\n"
     )
 
     force: Vector3 = msgspec.field(default_factory=Vector3)
     torque: Vector3 = msgspec.field(default_factory=Vector3)
+
+
+class WrenchStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``geometry_msgs/msg/WrenchStamped``."""
+
+    __ros_type__: ClassVar[str] = "geometry_msgs/msg/WrenchStamped"
+    __ros_definition__: ClassVar[str] = (
+        "# A wrench with reference coordinate frame and timestamp\n"
+        "\n"
+        "std_msgs/Header header\n"
+        "Wrench wrench\n"
+    )
+
+    header: Header = msgspec.field(default_factory=Header)
+    wrench: Wrench = msgspec.field(default_factory=Wrench)

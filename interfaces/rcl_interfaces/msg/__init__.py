@@ -15,6 +15,7 @@ __all__ = [
     "Parameter",
     "ParameterDescriptor",
     "ParameterEvent",
+    "ParameterEventDescriptors",
     "ParameterType",
     "ParameterValue",
     "SetLoggerLevelsResult",
@@ -41,7 +42,7 @@ class FloatingPointRange(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tru
         "float64 to_value\n"
         "\n"
         "# Size of valid steps between the from and to bound.\n"
-        "#\n"
+        "# \n"
         "# Step is considered to be a magnitude, therefore negative values are treated\n"
         "# the same as positive values, and a step value of zero implies a continuous\n"
         "# range of values.\n"
@@ -90,11 +91,11 @@ class IntegerRange(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
         "# between the two bounds, then the bounds will be the only valid values. e.g. if\n"
         "# the range is defined as {from_value: 1, to_value: 2, step: 5} then the valid\n"
         "# values will be 1 and 2.\n"
-        "#\n"
+        "# \n"
         "# If the step is less than the distance between the bounds, but the distance is\n"
         "# not a multiple of the step, then the \"to\" bound will always be a valid value,\n"
-        "# e.g. if the range is defined as {from_value: 2, to_value: 5, step: 2} then the\n"
-        "# valid values will be 2, 4, and 5.\n"
+        "# e.g. if the range is defined as {from_value: 2, to_value: 5, step: 2} then\n"
+        "# the valid values will be 2, 4, and 5.\n"
         "uint64 step\n"
     )
 
@@ -127,7 +128,7 @@ class Log(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     __ros_definition__: ClassVar[str] = (
         "##\n"
         "## Severity level constants\n"
-        "##\n"
+        "## \n"
         "## These logging levels follow the Python Standard\n"
         "## https://docs.python.org/3/library/logging.html#logging-levels\n"
         "## And are implemented in rcutils as well\n"
@@ -139,21 +140,21 @@ class Log(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
         "##\n"
         "\n"
         "# Debug is for pedantic information, which is useful when debugging issues.\n"
-        "byte DEBUG=10\n"
+        "uint8 DEBUG=10\n"
         "\n"
         "# Info is the standard informational level and is used to report expected\n"
         "# information.\n"
-        "byte INFO=20\n"
+        "uint8 INFO=20\n"
         "\n"
         "# Warning is for information that may potentially cause issues or possibly unexpected\n"
         "# behavior.\n"
-        "byte WARN=30\n"
+        "uint8 WARN=30\n"
         "\n"
         "# Error is for information that this node cannot resolve.\n"
-        "byte ERROR=40\n"
+        "uint8 ERROR=40\n"
         "\n"
         "# Information about a impending node shutdown.\n"
-        "byte FATAL=50\n"
+        "uint8 FATAL=50\n"
         "\n"
         "##\n"
         "## Fields\n"
@@ -200,7 +201,8 @@ class LoggerLevel(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/msg/LoggerLevel"
     __ros_definition__: ClassVar[str] = (
-        "# One logger and its level (the levels are rcutils' severities; 0 means not set).\n"
+        "# All available logger levels; these correspond to the enum in rcutils/logger.h\n"
+        "\n"
         "uint8 LOG_LEVEL_UNKNOWN = 0\n"
         "uint8 LOG_LEVEL_DEBUG = 10\n"
         "uint8 LOG_LEVEL_INFO = 20\n"
@@ -208,7 +210,10 @@ class LoggerLevel(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
         "uint8 LOG_LEVEL_ERROR = 40\n"
         "uint8 LOG_LEVEL_FATAL = 50\n"
         "\n"
+        "# The logger name.\n"
         "string name\n"
+        "\n"
+        "# The logger level\n"
         "uint32 level\n"
     )
     LOG_LEVEL_UNKNOWN: ClassVar[int] = 0
@@ -284,7 +289,8 @@ class Parameter(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/msg/Parameter"
     __ros_definition__: ClassVar[str] = (
-        "# This is the message to communicate a parameter's name and value.\n"
+        "# This is the message to communicate a parameter. It is an open struct with an enum in\n"
+        "# the descriptor to select which value is active.\n"
         "\n"
         "# The full name of the parameter.\n"
         "string name\n"
@@ -383,6 +389,25 @@ class ParameterEvent(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     deleted_parameters: list[Parameter] = msgspec.field(default_factory=list)
 
 
+class ParameterEventDescriptors(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/msg/ParameterEventDescriptors``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/msg/ParameterEventDescriptors"
+    __ros_definition__: ClassVar[str] = (
+        "# This message contains descriptors of a parameter event.\n"
+        "# It was an atomic update.\n"
+        "# A specific parameter name can only be in one of the three sets.\n"
+        "\n"
+        "ParameterDescriptor[] new_parameters\n"
+        "ParameterDescriptor[] changed_parameters\n"
+        "ParameterDescriptor[] deleted_parameters\n"
+    )
+
+    new_parameters: list[ParameterDescriptor] = msgspec.field(default_factory=list)
+    changed_parameters: list[ParameterDescriptor] = msgspec.field(default_factory=list)
+    deleted_parameters: list[ParameterDescriptor] = msgspec.field(default_factory=list)
+
+
 class ParameterType(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     """``rcl_interfaces/msg/ParameterType``."""
 
@@ -420,8 +445,10 @@ class SetLoggerLevelsResult(msgspec.Struct, kw_only=True, forbid_unknown_fields=
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/msg/SetLoggerLevelsResult"
     __ros_definition__: ClassVar[str] = (
-        "# Whether one logger's level was set, and if not why.\n"
+        "# True when succeed, false when failed.\n"
         "bool successful\n"
+        "\n"
+        "# Reason why the setting was either successful or a failure.\n"
         "string reason\n"
     )
 
@@ -438,8 +465,8 @@ class SetParametersResult(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tr
         "# successfully. A false value indicates the change was rejected.\n"
         "bool successful\n"
         "\n"
-        "# Reason why the setting was either successful or a failure. This should only be\n"
-        "# used for logging and user interfaces.\n"
+        "# Reason why the setting was a failure. On success, the contents of this field\n"
+        "# are undefined.  This should only be used for logging and user interfaces.\n"
         "string reason\n"
     )
 

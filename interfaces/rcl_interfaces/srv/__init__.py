@@ -94,8 +94,9 @@ class GetLoggerLevels_Request(msgspec.Struct, kw_only=True, forbid_unknown_field
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetLoggerLevels_Request"
     __ros_definition__: ClassVar[str] = (
-        "# The levels of the named loggers, in the same order.\n"
+        "# A list of logger names to get.\n"
         "string[] names\n"
+        "\n"
     )
 
     names: list[str] = msgspec.field(default_factory=list)
@@ -106,6 +107,8 @@ class GetLoggerLevels_Response(msgspec.Struct, kw_only=True, forbid_unknown_fiel
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetLoggerLevels_Response"
     __ros_definition__: ClassVar[str] = (
+        "# List of logger levels which is the same order as the provided names. If a\n"
+        "# logger was not yet set, the value will have 'unknown' as the value.\n"
         "LoggerLevel[] levels\n"
     )
 
@@ -117,9 +120,12 @@ class GetLoggerLevels:
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetLoggerLevels"
     __ros_definition__: ClassVar[str] = (
-        "# The levels of the named loggers, in the same order.\n"
+        "# A list of logger names to get.\n"
         "string[] names\n"
+        "\n"
         "---\n"
+        "# List of logger levels which is the same order as the provided names. If a\n"
+        "# logger was not yet set, the value will have 'unknown' as the value.\n"
         "LoggerLevel[] levels\n"
     )
     Request = GetLoggerLevels_Request
@@ -131,7 +137,8 @@ class GetParameterTypes_Request(msgspec.Struct, kw_only=True, forbid_unknown_fie
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameterTypes_Request"
     __ros_definition__: ClassVar[str] = (
-        "# Names of the parameters whose types are wanted.\n"
+        "# A list of parameter names.\n"
+        "# TODO(wjwwood): link to parameter naming rules.\n"
         "string[] names\n"
         "\n"
     )
@@ -144,7 +151,10 @@ class GetParameterTypes_Response(msgspec.Struct, kw_only=True, forbid_unknown_fi
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameterTypes_Response"
     __ros_definition__: ClassVar[str] = (
-        "# The type of each (rcl_interfaces/msg/ParameterType); PARAMETER_NOT_SET when unknown.\n"
+        "# List of types which is the same length and order as the provided names.\n"
+        "#\n"
+        "# The type enum is defined in ParameterType.msg. ParameterType.PARAMETER_NOT_SET\n"
+        "# indicates that the parameter is not currently set.\n"
         "uint8[] types\n"
     )
 
@@ -156,11 +166,15 @@ class GetParameterTypes:
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameterTypes"
     __ros_definition__: ClassVar[str] = (
-        "# Names of the parameters whose types are wanted.\n"
+        "# A list of parameter names.\n"
+        "# TODO(wjwwood): link to parameter naming rules.\n"
         "string[] names\n"
         "\n"
         "---\n"
-        "# The type of each (rcl_interfaces/msg/ParameterType); PARAMETER_NOT_SET when unknown.\n"
+        "# List of types which is the same length and order as the provided names.\n"
+        "#\n"
+        "# The type enum is defined in ParameterType.msg. ParameterType.PARAMETER_NOT_SET\n"
+        "# indicates that the parameter is not currently set.\n"
         "uint8[] types\n"
     )
     Request = GetParameterTypes_Request
@@ -290,8 +304,9 @@ class SetLoggerLevels_Request(msgspec.Struct, kw_only=True, forbid_unknown_field
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetLoggerLevels_Request"
     __ros_definition__: ClassVar[str] = (
-        "# Set each logger's level; one result per entry, in the same order.\n"
+        "# A list of loggers to set.\n"
         "LoggerLevel[] levels\n"
+        "\n"
     )
 
     levels: list[LoggerLevel] = msgspec.field(default_factory=list)
@@ -302,6 +317,7 @@ class SetLoggerLevels_Response(msgspec.Struct, kw_only=True, forbid_unknown_fiel
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetLoggerLevels_Response"
     __ros_definition__: ClassVar[str] = (
+        "# Indicates whether setting each logger succeeded or not and why.\n"
         "SetLoggerLevelsResult[] results\n"
     )
 
@@ -313,9 +329,11 @@ class SetLoggerLevels:
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetLoggerLevels"
     __ros_definition__: ClassVar[str] = (
-        "# Set each logger's level; one result per entry, in the same order.\n"
+        "# A list of loggers to set.\n"
         "LoggerLevel[] levels\n"
+        "\n"
         "---\n"
+        "# Indicates whether setting each logger succeeded or not and why.\n"
         "SetLoggerLevelsResult[] results\n"
     )
     Request = SetLoggerLevels_Request
@@ -368,7 +386,9 @@ class SetParametersAtomically_Request(msgspec.Struct, kw_only=True, forbid_unkno
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParametersAtomically_Request"
     __ros_definition__: ClassVar[str] = (
-        "# Parameters to set all together: either every one is set, or none is.\n"
+        "# A list of parameters to set atomically.\n"
+        "#\n"
+        "# This call will either set all values, or none of the values.\n"
         "Parameter[] parameters\n"
         "\n"
     )
@@ -381,7 +401,7 @@ class SetParametersAtomically_Response(msgspec.Struct, kw_only=True, forbid_unkn
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParametersAtomically_Response"
     __ros_definition__: ClassVar[str] = (
-        "# Whether they were set and, if not, why.\n"
+        "# Indicates whether setting all of the parameters succeeded or not and why.\n"
         "SetParametersResult result\n"
     )
 
@@ -393,11 +413,13 @@ class SetParametersAtomically:
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParametersAtomically"
     __ros_definition__: ClassVar[str] = (
-        "# Parameters to set all together: either every one is set, or none is.\n"
+        "# A list of parameters to set atomically.\n"
+        "#\n"
+        "# This call will either set all values, or none of the values.\n"
         "Parameter[] parameters\n"
         "\n"
         "---\n"
-        "# Whether they were set and, if not, why.\n"
+        "# Indicates whether setting all of the parameters succeeded or not and why.\n"
         "SetParametersResult result\n"
     )
     Request = SetParametersAtomically_Request

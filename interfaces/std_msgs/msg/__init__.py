@@ -9,25 +9,34 @@ from interfaces.builtin_interfaces.msg import Time
 __all__ = [
     "Bool",
     "Byte",
+    "ByteMultiArray",
     "Char",
     "ColorRGBA",
     "Empty",
     "Float32",
+    "Float32MultiArray",
     "Float64",
     "Float64MultiArray",
     "Header",
     "Int16",
+    "Int16MultiArray",
     "Int32",
+    "Int32MultiArray",
     "Int64",
     "Int64MultiArray",
     "Int8",
+    "Int8MultiArray",
     "MultiArrayDimension",
     "MultiArrayLayout",
     "String",
     "UInt16",
+    "UInt16MultiArray",
     "UInt32",
+    "UInt32MultiArray",
     "UInt64",
+    "UInt64MultiArray",
     "UInt8",
+    "UInt8MultiArray",
 ]
 
 _uint8 = Annotated[int, msgspec.Meta(ge=0, le=255)]
@@ -45,6 +54,11 @@ class Bool(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "std_msgs/msg/Bool"
     __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
         "bool data\n"
     )
 
@@ -56,67 +70,15 @@ class Byte(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "std_msgs/msg/Byte"
     __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
         "byte data\n"
     )
 
     data: _uint8 = 0
-
-
-class Char(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``std_msgs/msg/Char``."""
-
-    __ros_type__: ClassVar[str] = "std_msgs/msg/Char"
-    __ros_definition__: ClassVar[str] = (
-        "char data\n"
-    )
-
-    data: _uint8 = 0
-
-
-class ColorRGBA(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``std_msgs/msg/ColorRGBA``."""
-
-    __ros_type__: ClassVar[str] = "std_msgs/msg/ColorRGBA"
-    __ros_definition__: ClassVar[str] = (
-        "float32 r\n"
-        "float32 g\n"
-        "float32 b\n"
-        "float32 a\n"
-    )
-
-    r: float = 0.0
-    g: float = 0.0
-    b: float = 0.0
-    a: float = 0.0
-
-
-class Empty(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``std_msgs/msg/Empty``."""
-
-    __ros_type__: ClassVar[str] = "std_msgs/msg/Empty"
-    __ros_definition__: ClassVar[str] = ""
-
-
-class Float32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``std_msgs/msg/Float32``."""
-
-    __ros_type__: ClassVar[str] = "std_msgs/msg/Float32"
-    __ros_definition__: ClassVar[str] = (
-        "float32 data\n"
-    )
-
-    data: float = 0.0
-
-
-class Float64(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``std_msgs/msg/Float64``."""
-
-    __ros_type__: ClassVar[str] = "std_msgs/msg/Float64"
-    __ros_definition__: ClassVar[str] = (
-        "float64 data\n"
-    )
-
-    data: float = 0.0
 
 
 class MultiArrayDimension(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -124,6 +86,11 @@ class MultiArrayDimension(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tr
 
     __ros_type__: ClassVar[str] = "std_msgs/msg/MultiArrayDimension"
     __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
         "string label   # label of given dimension\n"
         "uint32 size    # size of given dimension (in type units)\n"
         "uint32 stride  # stride of given dimension\n"
@@ -176,6 +143,120 @@ class MultiArrayLayout(msgspec.Struct, kw_only=True, forbid_unknown_fields=True)
     data_offset: _uint32 = 0
 
 
+class ByteMultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/ByteMultiArray``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/ByteMultiArray"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "# Please look at the MultiArrayLayout message definition for\n"
+        "# documentation on all multiarrays.\n"
+        "\n"
+        "MultiArrayLayout  layout        # specification of data layout\n"
+        "byte[]            data          # array of data\n"
+    )
+
+    layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
+    data: bytes = b""
+
+
+class Char(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Char``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Char"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "char data\n"
+    )
+
+    data: _uint8 = 0
+
+
+class ColorRGBA(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/ColorRGBA``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/ColorRGBA"
+    __ros_definition__: ClassVar[str] = (
+        "float32 r\n"
+        "float32 g\n"
+        "float32 b\n"
+        "float32 a\n"
+    )
+
+    r: float = 0.0
+    g: float = 0.0
+    b: float = 0.0
+    a: float = 0.0
+
+
+class Empty(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Empty``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Empty"
+    __ros_definition__: ClassVar[str] = ""
+
+
+class Float32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Float32``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Float32"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "float32 data\n"
+    )
+
+    data: float = 0.0
+
+
+class Float32MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Float32MultiArray``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Float32MultiArray"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "# Please look at the MultiArrayLayout message definition for\n"
+        "# documentation on all multiarrays.\n"
+        "\n"
+        "MultiArrayLayout  layout        # specification of data layout\n"
+        "float32[]         data          # array of data\n"
+    )
+
+    layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
+    data: list[float] = msgspec.field(default_factory=list)
+
+
+class Float64(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Float64``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Float64"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "float64 data\n"
+    )
+
+    data: float = 0.0
+
+
 class Float64MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     """``std_msgs/msg/Float64MultiArray``."""
 
@@ -190,7 +271,7 @@ class Float64MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True
         "# documentation on all multiarrays.\n"
         "\n"
         "MultiArrayLayout  layout        # specification of data layout\n"
-        "float64[]    data          # array of data\n"
+        "float64[]         data          # array of data\n"
     )
 
     layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
@@ -222,10 +303,36 @@ class Int16(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "std_msgs/msg/Int16"
     __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
         "int16 data\n"
     )
 
     data: _int16 = 0
+
+
+class Int16MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Int16MultiArray``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Int16MultiArray"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "# Please look at the MultiArrayLayout message definition for\n"
+        "# documentation on all multiarrays.\n"
+        "\n"
+        "MultiArrayLayout  layout        # specification of data layout\n"
+        "int16[]           data          # array of data\n"
+    )
+
+    layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
+    data: list[_int16] = msgspec.field(default_factory=list)
 
 
 class Int32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -233,10 +340,36 @@ class Int32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "std_msgs/msg/Int32"
     __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
         "int32 data\n"
     )
 
     data: _int32 = 0
+
+
+class Int32MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Int32MultiArray``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Int32MultiArray"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "# Please look at the MultiArrayLayout message definition for\n"
+        "# documentation on all multiarrays.\n"
+        "\n"
+        "MultiArrayLayout  layout        # specification of data layout\n"
+        "int32[]           data          # array of data\n"
+    )
+
+    layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
+    data: list[_int32] = msgspec.field(default_factory=list)
 
 
 class Int64(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -244,6 +377,11 @@ class Int64(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "std_msgs/msg/Int64"
     __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
         "int64 data\n"
     )
 
@@ -264,7 +402,7 @@ class Int64MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
         "# documentation on all multiarrays.\n"
         "\n"
         "MultiArrayLayout  layout        # specification of data layout\n"
-        "int64[]      data          # array of data\n"
+        "int64[]           data          # array of data\n"
     )
 
     layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
@@ -276,10 +414,36 @@ class Int8(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "std_msgs/msg/Int8"
     __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
         "int8 data\n"
     )
 
     data: _int8 = 0
+
+
+class Int8MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/Int8MultiArray``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/Int8MultiArray"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "# Please look at the MultiArrayLayout message definition for\n"
+        "# documentation on all multiarrays.\n"
+        "\n"
+        "MultiArrayLayout  layout        # specification of data layout\n"
+        "int8[]            data          # array of data\n"
+    )
+
+    layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
+    data: list[_int8] = msgspec.field(default_factory=list)
 
 
 class String(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -287,6 +451,11 @@ class String(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "std_msgs/msg/String"
     __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
         "string data\n"
     )
 
@@ -298,10 +467,36 @@ class UInt16(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "std_msgs/msg/UInt16"
     __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
         "uint16 data\n"
     )
 
     data: _uint16 = 0
+
+
+class UInt16MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/UInt16MultiArray``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/UInt16MultiArray"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "# Please look at the MultiArrayLayout message definition for\n"
+        "# documentation on all multiarrays.\n"
+        "\n"
+        "MultiArrayLayout  layout        # specification of data layout\n"
+        "uint16[]            data        # array of data\n"
+    )
+
+    layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
+    data: list[_uint16] = msgspec.field(default_factory=list)
 
 
 class UInt32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -309,10 +504,36 @@ class UInt32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "std_msgs/msg/UInt32"
     __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
         "uint32 data\n"
     )
 
     data: _uint32 = 0
+
+
+class UInt32MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/UInt32MultiArray``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/UInt32MultiArray"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "# Please look at the MultiArrayLayout message definition for\n"
+        "# documentation on all multiarrays.\n"
+        "\n"
+        "MultiArrayLayout  layout        # specification of data layout\n"
+        "uint32[]          data          # array of data\n"
+    )
+
+    layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
+    data: list[_uint32] = msgspec.field(default_factory=list)
 
 
 class UInt64(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -320,10 +541,36 @@ class UInt64(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "std_msgs/msg/UInt64"
     __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
         "uint64 data\n"
     )
 
     data: _uint64 = 0
+
+
+class UInt64MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/UInt64MultiArray``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/UInt64MultiArray"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "# Please look at the MultiArrayLayout message definition for\n"
+        "# documentation on all multiarrays.\n"
+        "\n"
+        "MultiArrayLayout  layout        # specification of data layout\n"
+        "uint64[]          data          # array of data\n"
+    )
+
+    layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
+    data: list[_uint64] = msgspec.field(default_factory=list)
 
 
 class UInt8(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -331,7 +578,33 @@ class UInt8(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     __ros_type__: ClassVar[str] = "std_msgs/msg/UInt8"
     __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
         "uint8 data\n"
     )
 
     data: _uint8 = 0
+
+
+class UInt8MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``std_msgs/msg/UInt8MultiArray``."""
+
+    __ros_type__: ClassVar[str] = "std_msgs/msg/UInt8MultiArray"
+    __ros_definition__: ClassVar[str] = (
+        "# This was originally provided as an example message.\n"
+        "# It is deprecated as of Foxy\n"
+        "# It is recommended to create your own semantically meaningful message.\n"
+        "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+        "\n"
+        "# Please look at the MultiArrayLayout message definition for\n"
+        "# documentation on all multiarrays.\n"
+        "\n"
+        "MultiArrayLayout  layout        # specification of data layout\n"
+        "uint8[]           data          # array of data\n"
+    )
+
+    layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
+    data: bytes = b""

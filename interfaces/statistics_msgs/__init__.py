@@ -1,0 +1,1 @@
+"""The statistics_msgs interface package: ``interfaces.statistics_msgs.msg``, ``.srv`` and ``.action``."""

@@ -1,0 +1,375 @@
+"""Generated from test_msgs/action/*.action by `python -m actors interface generate`; do not edit."""
+
+from typing import Annotated, ClassVar
+
+import msgspec
+
+from interfaces.action_msgs.msg import GoalStatusArray
+from interfaces.action_msgs.srv import CancelGoal
+from interfaces.builtin_interfaces.msg import Time
+from interfaces.test_msgs.msg import BasicTypes, Builtins
+from interfaces.unique_identifier_msgs.msg import UUID
+
+__all__ = [
+    "Fibonacci",
+    "Fibonacci_Feedback",
+    "Fibonacci_FeedbackMessage",
+    "Fibonacci_GetResult",
+    "Fibonacci_GetResult_Request",
+    "Fibonacci_GetResult_Response",
+    "Fibonacci_Goal",
+    "Fibonacci_Result",
+    "Fibonacci_SendGoal",
+    "Fibonacci_SendGoal_Request",
+    "Fibonacci_SendGoal_Response",
+    "NestedMessage",
+    "NestedMessage_Feedback",
+    "NestedMessage_FeedbackMessage",
+    "NestedMessage_GetResult",
+    "NestedMessage_GetResult_Request",
+    "NestedMessage_GetResult_Response",
+    "NestedMessage_Goal",
+    "NestedMessage_Result",
+    "NestedMessage_SendGoal",
+    "NestedMessage_SendGoal_Request",
+    "NestedMessage_SendGoal_Response",
+]
+
+_int8 = Annotated[int, msgspec.Meta(ge=-128, le=127)]
+_int32 = Annotated[int, msgspec.Meta(ge=-2147483648, le=2147483647)]
+
+
+class Fibonacci_Goal(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/Fibonacci_Goal``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_Goal"
+    __ros_definition__: ClassVar[str] = (
+        "#goal definition\n"
+        "int32 order\n"
+    )
+
+    order: _int32 = 0
+
+
+class Fibonacci_Result(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/Fibonacci_Result``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_Result"
+    __ros_definition__: ClassVar[str] = (
+        "#result definition\n"
+        "int32[] sequence\n"
+    )
+
+    sequence: list[_int32] = msgspec.field(default_factory=list)
+
+
+class Fibonacci_Feedback(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/Fibonacci_Feedback``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_Feedback"
+    __ros_definition__: ClassVar[str] = (
+        "#feedback\n"
+        "int32[] sequence\n"
+    )
+
+    sequence: list[_int32] = msgspec.field(default_factory=list)
+
+
+class Fibonacci_SendGoal_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/Fibonacci_SendGoal_Request``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_SendGoal_Request"
+    __ros_definition__: ClassVar[str] = (
+        "unique_identifier_msgs/UUID goal_id\n"
+        "test_msgs/action/Fibonacci_Goal goal\n"
+    )
+
+    goal_id: UUID = msgspec.field(default_factory=UUID)
+    goal: Fibonacci_Goal = msgspec.field(default_factory=Fibonacci_Goal)
+
+
+class Fibonacci_SendGoal_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/Fibonacci_SendGoal_Response``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_SendGoal_Response"
+    __ros_definition__: ClassVar[str] = (
+        "bool accepted\n"
+        "builtin_interfaces/Time stamp\n"
+    )
+
+    accepted: bool = False
+    stamp: Time = msgspec.field(default_factory=Time)
+
+
+class Fibonacci_SendGoal:
+    """``test_msgs/action/Fibonacci_SendGoal``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_SendGoal"
+    __ros_definition__: ClassVar[str] = (
+        "unique_identifier_msgs/UUID goal_id\n"
+        "test_msgs/action/Fibonacci_Goal goal\n"
+        "---\n"
+        "bool accepted\n"
+        "builtin_interfaces/Time stamp\n"
+    )
+    Request = Fibonacci_SendGoal_Request
+    Response = Fibonacci_SendGoal_Response
+
+
+class Fibonacci_GetResult_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/Fibonacci_GetResult_Request``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_GetResult_Request"
+    __ros_definition__: ClassVar[str] = (
+        "unique_identifier_msgs/UUID goal_id\n"
+    )
+
+    goal_id: UUID = msgspec.field(default_factory=UUID)
+
+
+class Fibonacci_GetResult_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/Fibonacci_GetResult_Response``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_GetResult_Response"
+    __ros_definition__: ClassVar[str] = (
+        "int8 status\n"
+        "test_msgs/action/Fibonacci_Result result\n"
+    )
+
+    status: _int8 = 0
+    result: Fibonacci_Result = msgspec.field(default_factory=Fibonacci_Result)
+
+
+class Fibonacci_GetResult:
+    """``test_msgs/action/Fibonacci_GetResult``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_GetResult"
+    __ros_definition__: ClassVar[str] = (
+        "unique_identifier_msgs/UUID goal_id\n"
+        "---\n"
+        "int8 status\n"
+        "test_msgs/action/Fibonacci_Result result\n"
+    )
+    Request = Fibonacci_GetResult_Request
+    Response = Fibonacci_GetResult_Response
+
+
+class Fibonacci_FeedbackMessage(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/Fibonacci_FeedbackMessage``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_FeedbackMessage"
+    __ros_definition__: ClassVar[str] = (
+        "unique_identifier_msgs/UUID goal_id\n"
+        "test_msgs/action/Fibonacci_Feedback feedback\n"
+    )
+
+    goal_id: UUID = msgspec.field(default_factory=UUID)
+    feedback: Fibonacci_Feedback = msgspec.field(default_factory=Fibonacci_Feedback)
+
+
+class Fibonacci:
+    """``test_msgs/action/Fibonacci``: ``Goal``, ``Result``, ``Feedback``.
+
+    ``Impl`` holds the types its wire protocol uses.
+    """
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci"
+    __ros_definition__: ClassVar[str] = (
+        "#goal definition\n"
+        "int32 order\n"
+        "---\n"
+        "#result definition\n"
+        "int32[] sequence\n"
+        "---\n"
+        "#feedback\n"
+        "int32[] sequence\n"
+    )
+    Goal = Fibonacci_Goal
+    Result = Fibonacci_Result
+    Feedback = Fibonacci_Feedback
+
+    class Impl:
+        """The services and topic types of the action's wire protocol."""
+
+        SendGoalService = Fibonacci_SendGoal
+        GetResultService = Fibonacci_GetResult
+        FeedbackMessage = Fibonacci_FeedbackMessage
+        CancelGoalService = CancelGoal
+        GoalStatusMessage = GoalStatusArray
+
+
+class NestedMessage_Goal(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/NestedMessage_Goal``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_Goal"
+    __ros_definition__: ClassVar[str] = (
+        "# goal definition\n"
+        "Builtins nested_field_no_pkg\n"
+        "test_msgs/BasicTypes nested_field\n"
+        "builtin_interfaces/Time nested_different_pkg\n"
+    )
+
+    nested_field_no_pkg: Builtins = msgspec.field(default_factory=Builtins)
+    nested_field: BasicTypes = msgspec.field(default_factory=BasicTypes)
+    nested_different_pkg: Time = msgspec.field(default_factory=Time)
+
+
+class NestedMessage_Result(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/NestedMessage_Result``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_Result"
+    __ros_definition__: ClassVar[str] = (
+        "# result definition\n"
+        "Builtins nested_field_no_pkg\n"
+        "test_msgs/BasicTypes nested_field\n"
+        "builtin_interfaces/Time nested_different_pkg\n"
+    )
+
+    nested_field_no_pkg: Builtins = msgspec.field(default_factory=Builtins)
+    nested_field: BasicTypes = msgspec.field(default_factory=BasicTypes)
+    nested_different_pkg: Time = msgspec.field(default_factory=Time)
+
+
+class NestedMessage_Feedback(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/NestedMessage_Feedback``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_Feedback"
+    __ros_definition__: ClassVar[str] = (
+        "# feedback\n"
+        "Builtins nested_field_no_pkg\n"
+        "test_msgs/BasicTypes nested_field\n"
+        "builtin_interfaces/Time nested_different_pkg\n"
+    )
+
+    nested_field_no_pkg: Builtins = msgspec.field(default_factory=Builtins)
+    nested_field: BasicTypes = msgspec.field(default_factory=BasicTypes)
+    nested_different_pkg: Time = msgspec.field(default_factory=Time)
+
+
+class NestedMessage_SendGoal_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/NestedMessage_SendGoal_Request``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_SendGoal_Request"
+    __ros_definition__: ClassVar[str] = (
+        "unique_identifier_msgs/UUID goal_id\n"
+        "test_msgs/action/NestedMessage_Goal goal\n"
+    )
+
+    goal_id: UUID = msgspec.field(default_factory=UUID)
+    goal: NestedMessage_Goal = msgspec.field(default_factory=NestedMessage_Goal)
+
+
+class NestedMessage_SendGoal_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/NestedMessage_SendGoal_Response``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_SendGoal_Response"
+    __ros_definition__: ClassVar[str] = (
+        "bool accepted\n"
+        "builtin_interfaces/Time stamp\n"
+    )
+
+    accepted: bool = False
+    stamp: Time = msgspec.field(default_factory=Time)
+
+
+class NestedMessage_SendGoal:
+    """``test_msgs/action/NestedMessage_SendGoal``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_SendGoal"
+    __ros_definition__: ClassVar[str] = (
+        "unique_identifier_msgs/UUID goal_id\n"
+        "test_msgs/action/NestedMessage_Goal goal\n"
+        "---\n"
+        "bool accepted\n"
+        "builtin_interfaces/Time stamp\n"
+    )
+    Request = NestedMessage_SendGoal_Request
+    Response = NestedMessage_SendGoal_Response
+
+
+class NestedMessage_GetResult_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/NestedMessage_GetResult_Request``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_GetResult_Request"
+    __ros_definition__: ClassVar[str] = (
+        "unique_identifier_msgs/UUID goal_id\n"
+    )
+
+    goal_id: UUID = msgspec.field(default_factory=UUID)
+
+
+class NestedMessage_GetResult_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/NestedMessage_GetResult_Response``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_GetResult_Response"
+    __ros_definition__: ClassVar[str] = (
+        "int8 status\n"
+        "test_msgs/action/NestedMessage_Result result\n"
+    )
+
+    status: _int8 = 0
+    result: NestedMessage_Result = msgspec.field(default_factory=NestedMessage_Result)
+
+
+class NestedMessage_GetResult:
+    """``test_msgs/action/NestedMessage_GetResult``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_GetResult"
+    __ros_definition__: ClassVar[str] = (
+        "unique_identifier_msgs/UUID goal_id\n"
+        "---\n"
+        "int8 status\n"
+        "test_msgs/action/NestedMessage_Result result\n"
+    )
+    Request = NestedMessage_GetResult_Request
+    Response = NestedMessage_GetResult_Response
+
+
+class NestedMessage_FeedbackMessage(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/NestedMessage_FeedbackMessage``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_FeedbackMessage"
+    __ros_definition__: ClassVar[str] = (
+        "unique_identifier_msgs/UUID goal_id\n"
+        "test_msgs/action/NestedMessage_Feedback feedback\n"
+    )
+
+    goal_id: UUID = msgspec.field(default_factory=UUID)
+    feedback: NestedMessage_Feedback = msgspec.field(default_factory=NestedMessage_Feedback)
+
+
+class NestedMessage:
+    """``test_msgs/action/NestedMessage``: ``Goal``, ``Result``, ``Feedback``.
+
+    ``Impl`` holds the types its wire protocol uses.
+    """
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage"
+    __ros_definition__: ClassVar[str] = (
+        "# goal definition\n"
+        "Builtins nested_field_no_pkg\n"
+        "test_msgs/BasicTypes nested_field\n"
+        "builtin_interfaces/Time nested_different_pkg\n"
+        "---\n"
+        "# result definition\n"
+        "Builtins nested_field_no_pkg\n"
+        "test_msgs/BasicTypes nested_field\n"
+        "builtin_interfaces/Time nested_different_pkg\n"
+        "---\n"
+        "# feedback\n"
+        "Builtins nested_field_no_pkg\n"
+        "test_msgs/BasicTypes nested_field\n"
+        "builtin_interfaces/Time nested_different_pkg\n"
+    )
+    Goal = NestedMessage_Goal
+    Result = NestedMessage_Result
+    Feedback = NestedMessage_Feedback
+
+    class Impl:
+        """The services and topic types of the action's wire protocol."""
+
+        SendGoalService = NestedMessage_SendGoal
+        GetResultService = NestedMessage_GetResult
+        FeedbackMessage = NestedMessage_FeedbackMessage
+        CancelGoalService = CancelGoal
+        GoalStatusMessage = GoalStatusArray

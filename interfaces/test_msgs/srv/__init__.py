@@ -1,0 +1,381 @@
+"""Generated from test_msgs/srv/*.srv by `python -m actors interface generate`; do not edit."""
+
+from typing import Annotated, ClassVar
+
+import msgspec
+
+from interfaces.test_msgs.msg import BasicTypes as test_msgs_BasicTypes, Constants, Defaults
+
+__all__ = [
+    "Arrays",
+    "Arrays_Request",
+    "Arrays_Response",
+    "BasicTypes",
+    "BasicTypes_Request",
+    "BasicTypes_Response",
+    "Empty",
+    "Empty_Request",
+    "Empty_Response",
+]
+
+_uint8 = Annotated[int, msgspec.Meta(ge=0, le=255)]
+_int8 = Annotated[int, msgspec.Meta(ge=-128, le=127)]
+_int16 = Annotated[int, msgspec.Meta(ge=-32768, le=32767)]
+_uint16 = Annotated[int, msgspec.Meta(ge=0, le=65535)]
+_int32 = Annotated[int, msgspec.Meta(ge=-2147483648, le=2147483647)]
+_uint32 = Annotated[int, msgspec.Meta(ge=0, le=4294967295)]
+_int64 = Annotated[int, msgspec.Meta(ge=-9223372036854775808, le=9223372036854775807)]
+_uint64 = Annotated[int, msgspec.Meta(ge=0)]
+
+
+class Arrays_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/srv/Arrays_Request``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/srv/Arrays_Request"
+    __ros_definition__: ClassVar[str] = (
+        "bool[3] bool_values\n"
+        "byte[3] byte_values\n"
+        "char[3] char_values\n"
+        "float32[3] float32_values\n"
+        "float64[3] float64_values\n"
+        "int8[3] int8_values\n"
+        "uint8[3] uint8_values\n"
+        "int16[3] int16_values\n"
+        "uint16[3] uint16_values\n"
+        "int32[3] int32_values\n"
+        "uint32[3] uint32_values\n"
+        "int64[3] int64_values\n"
+        "uint64[3] uint64_values\n"
+        "string[3] string_values\n"
+        "BasicTypes[3] basic_types_values\n"
+        "Constants[3] constants_values\n"
+        "Defaults[3] defaults_values\n"
+        "bool[3] bool_values_default [false, true, false]\n"
+        "byte[3] byte_values_default [0, 1, 255]\n"
+        "char[3] char_values_default [0, 1, 127]\n"
+        "float32[3] float32_values_default [1.125, 0.0, -1.125]\n"
+        "float64[3] float64_values_default [3.1415, 0.0, -3.1415]\n"
+        "int8[3] int8_values_default [0, 127, -128]\n"
+        "uint8[3] uint8_values_default [0, 1, 255]\n"
+        "int16[3] int16_values_default [0, 32767, -32768]\n"
+        "uint16[3] uint16_values_default [0, 1, 65535]\n"
+        "int32[3] int32_values_default [0, 2147483647, -2147483648]\n"
+        "uint32[3] uint32_values_default [0, 1, 4294967295]\n"
+        "int64[3] int64_values_default [0, 9223372036854775807, -9223372036854775808]\n"
+        "uint64[3] uint64_values_default [0, 1, 18446744073709551615]\n"
+        "string[3] string_values_default [\"\", \"max value\", \"min value\"]\n"
+    )
+
+    bool_values: Annotated[list[bool], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [False] * 3)
+    byte_values: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = bytes(3)
+    char_values: Annotated[list[_uint8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    float32_values: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0.0] * 3)
+    float64_values: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0.0] * 3)
+    int8_values: Annotated[list[_int8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    uint8_values: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = bytes(3)
+    int16_values: Annotated[list[_int16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    uint16_values: Annotated[list[_uint16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    int32_values: Annotated[list[_int32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    uint32_values: Annotated[list[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    int64_values: Annotated[list[_int64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    uint64_values: Annotated[list[_uint64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    string_values: Annotated[list[str], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [""] * 3)
+    basic_types_values: Annotated[list[test_msgs_BasicTypes], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [test_msgs_BasicTypes() for _ in range(3)])
+    constants_values: Annotated[list[Constants], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [Constants() for _ in range(3)])
+    defaults_values: Annotated[list[Defaults], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [Defaults() for _ in range(3)])
+    bool_values_default: Annotated[list[bool], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [False, True, False])
+    byte_values_default: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = b'\x00\x01\xff'
+    char_values_default: Annotated[list[_uint8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 127])
+    float32_values_default: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [1.125, 0.0, -1.125])
+    float64_values_default: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [3.1415, 0.0, -3.1415])
+    int8_values_default: Annotated[list[_int8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 127, -128])
+    uint8_values_default: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = b'\x00\x01\xff'
+    int16_values_default: Annotated[list[_int16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 32767, -32768])
+    uint16_values_default: Annotated[list[_uint16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 65535])
+    int32_values_default: Annotated[list[_int32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 2147483647, -2147483648])
+    uint32_values_default: Annotated[list[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 4294967295])
+    int64_values_default: Annotated[list[_int64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 9223372036854775807, -9223372036854775808])
+    uint64_values_default: Annotated[list[_uint64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 18446744073709551615])
+    string_values_default: Annotated[list[str], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: ["", "max value", "min value"])
+
+
+class Arrays_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/srv/Arrays_Response``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/srv/Arrays_Response"
+    __ros_definition__: ClassVar[str] = (
+        "bool[3] bool_values\n"
+        "byte[3] byte_values\n"
+        "char[3] char_values\n"
+        "float32[3] float32_values\n"
+        "float64[3] float64_values\n"
+        "int8[3] int8_values\n"
+        "uint8[3] uint8_values\n"
+        "int16[3] int16_values\n"
+        "uint16[3] uint16_values\n"
+        "int32[3] int32_values\n"
+        "uint32[3] uint32_values\n"
+        "int64[3] int64_values\n"
+        "uint64[3] uint64_values\n"
+        "string[3] string_values\n"
+        "BasicTypes[3] basic_types_values\n"
+        "Constants[3] constants_values\n"
+        "Defaults[3] defaults_values\n"
+        "bool[3] bool_values_default [false, true, false]\n"
+        "byte[3] byte_values_default [0, 1, 255]\n"
+        "char[3] char_values_default [0, 1, 127]\n"
+        "float32[3] float32_values_default [1.125, 0.0, -1.125]\n"
+        "float64[3] float64_values_default [3.1415, 0.0, -3.1415]\n"
+        "int8[3] int8_values_default [0, 127, -128]\n"
+        "uint8[3] uint8_values_default [0, 1, 255]\n"
+        "int16[3] int16_values_default [0, 32767, -32768]\n"
+        "uint16[3] uint16_values_default [0, 1, 65535]\n"
+        "int32[3] int32_values_default [0, 2147483647, -2147483648]\n"
+        "uint32[3] uint32_values_default [0, 1, 4294967295]\n"
+        "int64[3] int64_values_default [0, 9223372036854775807, -9223372036854775808]\n"
+        "uint64[3] uint64_values_default [0, 1, 18446744073709551615]\n"
+        "string[3] string_values_default [\"\", \"max value\", \"min value\"]\n"
+    )
+
+    bool_values: Annotated[list[bool], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [False] * 3)
+    byte_values: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = bytes(3)
+    char_values: Annotated[list[_uint8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    float32_values: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0.0] * 3)
+    float64_values: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0.0] * 3)
+    int8_values: Annotated[list[_int8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    uint8_values: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = bytes(3)
+    int16_values: Annotated[list[_int16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    uint16_values: Annotated[list[_uint16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    int32_values: Annotated[list[_int32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    uint32_values: Annotated[list[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    int64_values: Annotated[list[_int64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    uint64_values: Annotated[list[_uint64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    string_values: Annotated[list[str], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [""] * 3)
+    basic_types_values: Annotated[list[test_msgs_BasicTypes], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [test_msgs_BasicTypes() for _ in range(3)])
+    constants_values: Annotated[list[Constants], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [Constants() for _ in range(3)])
+    defaults_values: Annotated[list[Defaults], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [Defaults() for _ in range(3)])
+    bool_values_default: Annotated[list[bool], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [False, True, False])
+    byte_values_default: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = b'\x00\x01\xff'
+    char_values_default: Annotated[list[_uint8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 127])
+    float32_values_default: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [1.125, 0.0, -1.125])
+    float64_values_default: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [3.1415, 0.0, -3.1415])
+    int8_values_default: Annotated[list[_int8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 127, -128])
+    uint8_values_default: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = b'\x00\x01\xff'
+    int16_values_default: Annotated[list[_int16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 32767, -32768])
+    uint16_values_default: Annotated[list[_uint16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 65535])
+    int32_values_default: Annotated[list[_int32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 2147483647, -2147483648])
+    uint32_values_default: Annotated[list[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 4294967295])
+    int64_values_default: Annotated[list[_int64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 9223372036854775807, -9223372036854775808])
+    uint64_values_default: Annotated[list[_uint64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 18446744073709551615])
+    string_values_default: Annotated[list[str], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: ["", "max value", "min value"])
+
+
+class Arrays:
+    """``test_msgs/srv/Arrays``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/srv/Arrays"
+    __ros_definition__: ClassVar[str] = (
+        "bool[3] bool_values\n"
+        "byte[3] byte_values\n"
+        "char[3] char_values\n"
+        "float32[3] float32_values\n"
+        "float64[3] float64_values\n"
+        "int8[3] int8_values\n"
+        "uint8[3] uint8_values\n"
+        "int16[3] int16_values\n"
+        "uint16[3] uint16_values\n"
+        "int32[3] int32_values\n"
+        "uint32[3] uint32_values\n"
+        "int64[3] int64_values\n"
+        "uint64[3] uint64_values\n"
+        "string[3] string_values\n"
+        "BasicTypes[3] basic_types_values\n"
+        "Constants[3] constants_values\n"
+        "Defaults[3] defaults_values\n"
+        "bool[3] bool_values_default [false, true, false]\n"
+        "byte[3] byte_values_default [0, 1, 255]\n"
+        "char[3] char_values_default [0, 1, 127]\n"
+        "float32[3] float32_values_default [1.125, 0.0, -1.125]\n"
+        "float64[3] float64_values_default [3.1415, 0.0, -3.1415]\n"
+        "int8[3] int8_values_default [0, 127, -128]\n"
+        "uint8[3] uint8_values_default [0, 1, 255]\n"
+        "int16[3] int16_values_default [0, 32767, -32768]\n"
+        "uint16[3] uint16_values_default [0, 1, 65535]\n"
+        "int32[3] int32_values_default [0, 2147483647, -2147483648]\n"
+        "uint32[3] uint32_values_default [0, 1, 4294967295]\n"
+        "int64[3] int64_values_default [0, 9223372036854775807, -9223372036854775808]\n"
+        "uint64[3] uint64_values_default [0, 1, 18446744073709551615]\n"
+        "string[3] string_values_default [\"\", \"max value\", \"min value\"]\n"
+        "---\n"
+        "bool[3] bool_values\n"
+        "byte[3] byte_values\n"
+        "char[3] char_values\n"
+        "float32[3] float32_values\n"
+        "float64[3] float64_values\n"
+        "int8[3] int8_values\n"
+        "uint8[3] uint8_values\n"
+        "int16[3] int16_values\n"
+        "uint16[3] uint16_values\n"
+        "int32[3] int32_values\n"
+        "uint32[3] uint32_values\n"
+        "int64[3] int64_values\n"
+        "uint64[3] uint64_values\n"
+        "string[3] string_values\n"
+        "BasicTypes[3] basic_types_values\n"
+        "Constants[3] constants_values\n"
+        "Defaults[3] defaults_values\n"
+        "bool[3] bool_values_default [false, true, false]\n"
+        "byte[3] byte_values_default [0, 1, 255]\n"
+        "char[3] char_values_default [0, 1, 127]\n"
+        "float32[3] float32_values_default [1.125, 0.0, -1.125]\n"
+        "float64[3] float64_values_default [3.1415, 0.0, -3.1415]\n"
+        "int8[3] int8_values_default [0, 127, -128]\n"
+        "uint8[3] uint8_values_default [0, 1, 255]\n"
+        "int16[3] int16_values_default [0, 32767, -32768]\n"
+        "uint16[3] uint16_values_default [0, 1, 65535]\n"
+        "int32[3] int32_values_default [0, 2147483647, -2147483648]\n"
+        "uint32[3] uint32_values_default [0, 1, 4294967295]\n"
+        "int64[3] int64_values_default [0, 9223372036854775807, -9223372036854775808]\n"
+        "uint64[3] uint64_values_default [0, 1, 18446744073709551615]\n"
+        "string[3] string_values_default [\"\", \"max value\", \"min value\"]\n"
+    )
+    Request = Arrays_Request
+    Response = Arrays_Response
+
+
+class BasicTypes_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/srv/BasicTypes_Request``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/srv/BasicTypes_Request"
+    __ros_definition__: ClassVar[str] = (
+        "bool bool_value\n"
+        "byte byte_value\n"
+        "char char_value\n"
+        "float32 float32_value\n"
+        "float64 float64_value\n"
+        "int8 int8_value\n"
+        "uint8 uint8_value\n"
+        "int16 int16_value\n"
+        "uint16 uint16_value\n"
+        "int32 int32_value\n"
+        "uint32 uint32_value\n"
+        "int64 int64_value\n"
+        "uint64 uint64_value\n"
+        "string string_value\n"
+    )
+
+    bool_value: bool = False
+    byte_value: _uint8 = 0
+    char_value: _uint8 = 0
+    float32_value: float = 0.0
+    float64_value: float = 0.0
+    int8_value: _int8 = 0
+    uint8_value: _uint8 = 0
+    int16_value: _int16 = 0
+    uint16_value: _uint16 = 0
+    int32_value: _int32 = 0
+    uint32_value: _uint32 = 0
+    int64_value: _int64 = 0
+    uint64_value: _uint64 = 0
+    string_value: str = ""
+
+
+class BasicTypes_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/srv/BasicTypes_Response``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/srv/BasicTypes_Response"
+    __ros_definition__: ClassVar[str] = (
+        "bool bool_value\n"
+        "byte byte_value\n"
+        "char char_value\n"
+        "float32 float32_value\n"
+        "float64 float64_value\n"
+        "int8 int8_value\n"
+        "uint8 uint8_value\n"
+        "int16 int16_value\n"
+        "uint16 uint16_value\n"
+        "int32 int32_value\n"
+        "uint32 uint32_value\n"
+        "int64 int64_value\n"
+        "uint64 uint64_value\n"
+        "string string_value\n"
+    )
+
+    bool_value: bool = False
+    byte_value: _uint8 = 0
+    char_value: _uint8 = 0
+    float32_value: float = 0.0
+    float64_value: float = 0.0
+    int8_value: _int8 = 0
+    uint8_value: _uint8 = 0
+    int16_value: _int16 = 0
+    uint16_value: _uint16 = 0
+    int32_value: _int32 = 0
+    uint32_value: _uint32 = 0
+    int64_value: _int64 = 0
+    uint64_value: _uint64 = 0
+    string_value: str = ""
+
+
+class BasicTypes:
+    """``test_msgs/srv/BasicTypes``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/srv/BasicTypes"
+    __ros_definition__: ClassVar[str] = (
+        "bool bool_value\n"
+        "byte byte_value\n"
+        "char char_value\n"
+        "float32 float32_value\n"
+        "float64 float64_value\n"
+        "int8 int8_value\n"
+        "uint8 uint8_value\n"
+        "int16 int16_value\n"
+        "uint16 uint16_value\n"
+        "int32 int32_value\n"
+        "uint32 uint32_value\n"
+        "int64 int64_value\n"
+        "uint64 uint64_value\n"
+        "string string_value\n"
+        "---\n"
+        "bool bool_value\n"
+        "byte byte_value\n"
+        "char char_value\n"
+        "float32 float32_value\n"
+        "float64 float64_value\n"
+        "int8 int8_value\n"
+        "uint8 uint8_value\n"
+        "int16 int16_value\n"
+        "uint16 uint16_value\n"
+        "int32 int32_value\n"
+        "uint32 uint32_value\n"
+        "int64 int64_value\n"
+        "uint64 uint64_value\n"
+        "string string_value\n"
+    )
+    Request = BasicTypes_Request
+    Response = BasicTypes_Response
+
+
+class Empty_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/srv/Empty_Request``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/srv/Empty_Request"
+    __ros_definition__: ClassVar[str] = ""
+
+
+class Empty_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/srv/Empty_Response``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/srv/Empty_Response"
+    __ros_definition__: ClassVar[str] = ""
+
+
+class Empty:
+    """``test_msgs/srv/Empty``: its ``Request`` and ``Response`` messages."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/srv/Empty"
+    __ros_definition__: ClassVar[str] = (
+        "---\n"
+    )
+    Request = Empty_Request
+    Response = Empty_Response

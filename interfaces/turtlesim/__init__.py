@@ -1,0 +1,1 @@
+"""The turtlesim interface package: ``interfaces.turtlesim.msg``, ``.srv`` and ``.action``."""
