@@ -72,25 +72,6 @@ async def test_no_jump_while_anyio_thread_work_runs():
     far_timer.cancel()
 
 
-@pytest.mark.virtual_time
-async def test_a_running_loop_keeps_few_enough_attributes_for_cpython_to_specialise_calls_on_it():
-    # CPython 3.11 keeps at most 30 of an object's attributes inline; past that every method
-    # call on the loop (each timer's loop.time()) took a generic lookup.  Counted once a graph,
-    # anyio and threads' work (the executor's, anyio's) have run on it, in case any of them adds some.
-    class Ticking(Node):
-        def __init__(self) -> None:
-            super().__init__("ticking")
-            self.create_timer(0.01, lambda: None)
-
-    loop = asyncio.get_running_loop()
-    async with Runtime() as rt:
-        rt.spawn(Ticking)
-        await loop.run_in_executor(None, sorted, [])
-        await anyio.to_thread.run_sync(sorted, [])
-        await anyio.sleep(0.1)
-        assert len(vars(loop)) <= 30, sorted(vars(loop))
-
-
 def test_work_a_thread_hands_over_as_it_goes_idle_runs_before_any_jump():
     # A thread hands work to the loop (call_soon_threadsafe) and then goes idle; that may happen
     # at the very moment the loop asks whether any thread is busy, just before it would jump.
