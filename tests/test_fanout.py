@@ -234,6 +234,7 @@ async def _replay(ops: list[tuple[str, int, int]]) -> None:
                 sources[x] = rt.spawn(Source, name=f"p{x}_{step}")
             for sink, model in pairs:
                 assert (sink.sub.queued, sink.sub.dropped) == (len(model.queue), model.dropped), (step, op)
+            assert rt.topics.invariant_violations() == [], (step, op)
         await settle()
         for sink, model in pairs:
             model.run()
@@ -470,6 +471,7 @@ def _graph_trace(ops: list[tuple[Any, Any, Any]]) -> list[tuple[Any, ...]]:
                 topic = rt.topics.topics.get(f"/{TOPIC}")
                 live = [] if topic is None else list(topic.subscriptions)
                 trace.append((step, [(s.node.fqn, s.queued, s.dropped, s.refusals and s.refusals.total) for s in live]))
+                assert rt.topics.invariant_violations() == [], (step, op)  # the publish/deliver states agree
             await asyncio.sleep(2)
 
     asyncio.Runner(loop_factory=VirtualTimeLoop).run(main())

@@ -86,6 +86,17 @@ async def test_a_second_publisher_makes_the_first_check_for_a_batch_and_a_joiner
         assert rt.topics.invariant_violations() == []
 
 
+async def test_a_publisher_left_alone_on_its_topic_stops_checking_for_another_batch():
+    async with Runtime() as rt:
+        rt.spawn(Ear)
+        first, second = rt.spawn(Mouth, name="first"), rt.spawn(Mouth, name="second")
+        first.say(1)
+        assert first.pub.state is PublisherState.DIRECT_SHARED
+        second.pub.destroy()
+        assert first.pub.state is PublisherState.DIRECT
+        assert rt.topics.invariant_violations() == []
+
+
 async def test_the_check_names_fields_that_disagree():
     async with Runtime() as rt:
         ears = [rt.spawn(Ear, name=f"ear{i}") for i in range(2)]

@@ -916,6 +916,10 @@ class TopicTable:
         if topic is not None and pub in topic.publishers:
             pub._settle()  # what it published before reaches its subscriptions all the same
             del topic.publishers[pub]
+            if len(topic.publishers) == 1:
+                (other,) = topic.publishers
+                if other._pending is _SHARED:  # alone again: nobody else can hold a batch open
+                    other._pending = None
             if pub._events is not None:
                 pub._events.stop()
             for sub in pub._subs:
