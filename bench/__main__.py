@@ -12,7 +12,20 @@ import time
 from collections.abc import Callable, Sequence
 from typing import NamedTuple
 
-from bench import cdr, memory, recording, scale, services, sim, startup, throughput, timer, topics_scale, transport
+from bench import (
+    cdr,
+    interfaces,
+    memory,
+    recording,
+    scale,
+    services,
+    sim,
+    startup,
+    throughput,
+    timer,
+    topics_scale,
+    transport,
+)
 from bench.harness import Result, table
 from bench.report import write
 from bench.targets import check
@@ -39,6 +52,7 @@ SCENARIOS = (
     Scenario("j", "scale", scale.run),
     Scenario("k", "zenoh", transport.run),
     Scenario("l", "recording", recording.run),
+    Scenario("m", "interfaces", interfaces.run),
 )
 
 

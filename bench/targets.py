@@ -1,4 +1,4 @@
-"""The performance targets of issues 7 and 16, checked against the results of one run."""
+"""The performance targets of issues 7, 16 and 29, checked against the results of one run."""
 
 from __future__ import annotations
 
@@ -11,6 +11,8 @@ __all__ = ["Target", "TARGETS", "check"]
 
 
 Lookup = Callable[[str, str], Result | None]
+
+INTERFACES = "m. interfaces, 30-type package import"
 
 
 @dataclass(frozen=True)
@@ -148,6 +150,13 @@ TARGETS = (
         _at_most(f"j. 10 Hz timer tick, {SCALE}", "actors", 8, "µs CPU"),
     ),
     Target("j", "graceful stop of 10,000 nodes ≤ 0.5 s", _at_most(f"j. graceful stop, {SCALE}", "actors", 0.5, "s")),
+    # Issue 29's: a user's interface package typed on import.
+    Target(
+        "m",
+        "first import of a 30-type workspace package ≤ 150 ms",
+        _at_most(INTERFACES, "first import (empty cache)", 0.150, "s"),
+    ),
+    Target("m", "a cached import of it ≤ 20 ms", _at_most(INTERFACES, "cached import", 0.020, "s")),
     # Issue 13's: across two processes on loopback, actors over Zenoh against rclpy over Fast DDS.
     Target(
         "k",
