@@ -5,8 +5,10 @@ from __future__ import annotations
 import asyncio
 import io
 import os
+import shutil
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -17,6 +19,11 @@ TESTS = Path(__file__).resolve().parent
 
 
 def pytest_configure(config: pytest.Config) -> None:
+    # Types made from workspaces and bags go to a folder of this run, child processes' too, never
+    # the user's cache: set before collection, which already lists types (test_codec's parameters).
+    cache = tempfile.mkdtemp(prefix="actors-interface-cache-")
+    os.environ["ACTORS_INTERFACE_CACHE"] = cache
+    config.add_cleanup(lambda: shutil.rmtree(cache, ignore_errors=True))
     config.addinivalue_line(
         "markers",
         "slow: a test that takes about a third of a second or more (a child Python, a wall-clock wait); "
@@ -92,11 +99,3 @@ def protobuf_class(name: str, file_descriptor_set: bytes) -> type:
 def rclpy_session(rclpy_overlay):
     """The virtual-clock Session under the plugin's rclpy_overlay: the test's thread is the script."""
     return rclpy_overlay.get_default_context().session
-
-
-@pytest.fixture(scope="session", autouse=True)
-def interface_cache(tmp_path_factory: pytest.TempPathFactory):
-    """Types made from workspaces and bags go to a folder of the test run (child processes too), not the user's."""
-    with pytest.MonkeyPatch.context() as patch:
-        patch.setenv("ACTORS_INTERFACE_CACHE", str(tmp_path_factory.mktemp("interface_cache")))
-        yield
