@@ -299,3 +299,16 @@ async def test_bag_info_lists_and_bag_play_replays_workspace_types_into_a_runnin
             await listener.three.wait()  # what play sent is delivered in the loop's next rounds
     assert code == 0
     assert listener.heard == [("p0", 0), ("p1", 1), ("p2", 2)]
+
+
+def test_a_package_added_to_a_searched_workspace_is_seen_when_the_workspace_is_named_again(fresh):
+    workspace = copy_workspace(fresh / "ws")
+    discovery.add_workspace(workspace)
+    assert set(discovery.discovered()) == {"course_interfaces"}
+    late = workspace / "src" / "late_interfaces"
+    (late / "msg").mkdir(parents=True)
+    (late / "package.xml").write_text('<package format="3"><name>late_interfaces</name></package>\n')
+    (late / "msg" / "Late.msg").write_text("int32 n\n")
+    assert "late_interfaces" not in discovery.discovered()  # found once, kept
+    discovery.add_workspace(workspace)
+    assert set(discovery.discovered()) == {"course_interfaces", "late_interfaces"}

@@ -33,6 +33,7 @@ whose message names the file and line (:class:`InterfaceImportError`).
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import importlib.abc
 import importlib.machinery
@@ -86,19 +87,20 @@ def add_workspace(folder: str | Path) -> None:
         if path in _starts:
             _starts.remove(path)
         _starts.insert(0, path)
+        _found.clear()  # looked for again, so a package added since is seen
 
 
 def discovered() -> dict[str, Path]:
     """Every interface package found outside the shipped folder: name to the folder holding its kinds.
 
-    Found again only when the folders to look in change (a new workspace, the
-    working directory, the environment); a package added to a workspace that
-    was already searched is seen after :func:`add_workspace` names it again.
+    Found again when the folders to look in change (the working directory, the
+    environment), after :func:`add_workspace` (even of a folder named before:
+    a package added since is seen then) and after a bag taught a new type.
     """
     env = (os.environ.get("ACTORS_WORKSPACE", ""), os.environ.get("AMENT_PREFIX_PATH", ""))
     starts = (*_starts, *(Path(p) for p in env[0].split(os.pathsep) if p), Path.cwd())
     bags = _bag_prefix()
-    key = (starts, env, bags, _bag_writes)
+    key = (starts, env, bags)
     with _lock:
         found = _found.get(key)
         if found is None:
@@ -128,16 +130,13 @@ def cache_dir() -> Path:
     return Path(base) / "actors" / "interfaces"
 
 
-_bag_writes = 0  # bumped when add_definitions writes a file: what discovered() found may change
-
-
 def _bag_prefix() -> Path:
     return cache_dir() / "bags"
 
 
-def add_definitions(ros_type: str, schema: str) -> list[str]:
+def add_definitions(ros_type: str, schema: str) -> None:
     """Keep the message types of a bag's ``ros2msg`` schema (``ros_type``'s text, then
-    ``MSG: pkg/Name`` sections) that nothing here defines; returns their names.
+    ``MSG: pkg/Name`` sections) that nothing here defines.
 
     A type a shipped, workspace or installed package defines is left alone (the
     player then compares type hashes).  Raises InterfaceError for a schema that
@@ -151,8 +150,6 @@ def add_definitions(ros_type: str, schema: str) -> list[str]:
         if not head.startswith("MSG: "):
             raise InterfaceError(f"{ros_type}: its bag schema has a section without 'MSG: <type>': {head[:60]!r}")
         named.append((head.removeprefix("MSG: ").strip(), text))
-    global _bag_writes
-    kept = []
     known = {**discovered(), **{name: shipped_root() / name for name in _shipped()}}
     for name, text in named:
         parts = name.split("/")
@@ -174,9 +171,7 @@ def add_definitions(ros_type: str, schema: str) -> list[str]:
             partial.write_text(text, encoding="utf-8")
             os.replace(partial, path)
             with _lock:
-                _bag_writes += 1
-        kept.append(f"{pkg}/msg/{type_name}")
-    return kept
+                _found.clear()  # a package may have appeared in the bags' folder
 
 
 def _shipped() -> frozenset[str]:
@@ -231,19 +226,12 @@ def _package(folder: Path) -> tuple[str, Path]:
 
 def _modules(packages: dict[str, Path]) -> dict[str, str]:
     """Where every known message and service is defined (what a generated module imports)."""
-    modules = {}
-    root = shipped_root()
-    for folder in sorted(root.iterdir()):
-        for kind in ("msg", "srv"):
-            for source in folder.glob(f"{kind}/*.{kind}"):
-                modules[f"{folder.name}/{kind}/{source.stem}"] = f"{_TOP}.{folder.name}.{kind}"
-    for pkg, folder in packages.items():
-        for kind in ("msg", "srv"):
-            for source in folder.glob(f"{kind}/*.{kind}"):
-                modules[f"{pkg}/{kind}/{source.stem}"] = f"{_TOP}.{pkg}.{kind}"
-    return modules
+    shipped = [(name, _TOP, package_sources(shipped_root() / name)) for name in sorted(_shipped())]
+    found = [(name, _TOP, package_sources(folder)) for name, folder in packages.items()]
+    return generate.module_map([*shipped, *found])
 
 
+@functools.cache
 def _generator_digest() -> bytes:
     here = Path(generate.__file__).parent
     return hashlib.sha256(b"".join((here / name).read_bytes() for name in ("generate.py", "idl.py"))).digest()
@@ -292,10 +280,7 @@ class _Finder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         if path.is_file():
             return path
         try:
-            specs = [generate.parse_file(source, pkg, kind) for source in sources]
-            modules = _modules(packages)
-            generate.check_references(specs, modules)
-            text = generate.render_module(specs, modules=modules, sources=f"{pkg}/{kind}/*.{kind}")
+            text = generate.render_kind(pkg, kind, sources, _modules(packages))
         except (IdlError, InterfaceError) as error:
             raise InterfaceImportError(str(error), name=f"{_TOP}.{pkg}.{kind}") from None
         path.parent.mkdir(parents=True, exist_ok=True)

@@ -50,7 +50,7 @@ from actors.messages.idl import (
     shipped_root,
 )
 
-__all__ = ["generate", "render", "render_module", "parse_file", "check_references"]
+__all__ = ["generate", "render", "render_module", "render_kind", "module_map"]
 
 # byte and char share uint8's alias: one range, one name.
 _ALIAS = {name: f"_{name}" for name in INTEGER_RANGES} | {"byte": "_uint8", "char": "_uint8"}
@@ -354,26 +354,42 @@ def render(roots: Sequence[str | Path] = ()) -> dict[Path, str]:
     """
     given = [Path(root).resolve() for root in roots] or [shipped_root()]
     packages = _find_packages([*given, shipped_root()])
-    modules = {
-        f"{pkg}/{kind}/{source.stem}": f"{root.name}.{pkg}.{kind}"
-        for pkg, (root, kinds) in packages.items()
-        for kind in ("msg", "srv")
-        for source in kinds.get(kind, ())
-    }
+    modules = module_map((pkg, root.name, kinds) for pkg, (root, kinds) in packages.items())
     out: dict[Path, str] = {}
     for pkg, (root, kinds) in packages.items():
         if root not in given:
             continue
         for kind, sources in kinds.items():
-            specs = [parse_file(source, pkg, kind) for source in sources]
-            check_references(specs, modules)
-            text = render_module(specs, modules=modules, sources=f"{pkg}/{kind}/*.{kind}")
-            out[root / pkg / kind / "__init__.py"] = text
+            out[root / pkg / kind / "__init__.py"] = render_kind(pkg, kind, sources, modules)
         doc = f"The {pkg} interface package: ``{root.name}.{pkg}.msg``, ``.srv`` and ``.action``."
         _where_missing(out, root / pkg / "__init__.py", doc)
     for root in given:
         _where_missing(out, root / "__init__.py", "Interface packages made by ``actors interface generate``.")
     return out
+
+
+def module_map(packages: Iterable[tuple[str, str, Mapping[str, Sequence[Path]]]]) -> dict[str, str]:
+    """Where every message and service of ``packages`` is defined: ``pkg/msg/Name`` to its module.
+
+    Each package is its name, its top-level module (``interfaces``, a root's
+    name) and its source files by kind.
+    """
+    return {
+        f"{pkg}/{kind}/{source.stem}": f"{top}.{pkg}.{kind}"
+        for pkg, top, kinds in packages
+        for kind in ("msg", "srv")
+        for source in kinds.get(kind, ())
+    }
+
+
+def render_kind(pkg: str, kind: str, sources: Sequence[Path], modules: dict[str, str]) -> str:
+    """The module of one package's sources of one kind: parsed, its references checked, rendered.
+
+    Raises IdlError or InterfaceError naming the source (and line) that is wrong.
+    """
+    specs = [_parse_file(source, pkg, kind) for source in sources]
+    _check_references(specs, modules)
+    return render_module(specs, modules=modules, sources=f"{pkg}/{kind}/*.{kind}")
 
 
 def _find_packages(roots: Iterable[Path]) -> dict[str, tuple[Path, dict[str, list[Path]]]]:
@@ -405,7 +421,7 @@ def _find_packages(roots: Iterable[Path]) -> dict[str, tuple[Path, dict[str, lis
 _PARSERS = {"msg": parse_message, "srv": parse_service, "action": parse_action}
 
 
-def parse_file(path: Path, pkg: str, kind: str) -> MessageSpec | ServiceSpec | ActionSpec:
+def _parse_file(path: Path, pkg: str, kind: str) -> MessageSpec | ServiceSpec | ActionSpec:
     if not TYPE_NAME.fullmatch(path.stem):
         raise InterfaceError(f"{path}: a type name must be CamelCase letters and digits")
     # A class of that name cannot be written (None, True, False) or would hide what the
@@ -433,7 +449,7 @@ def _parts(spec: MessageSpec | ServiceSpec | ActionSpec) -> tuple[MessageSpec, .
     return (spec,)
 
 
-def check_references(specs: Iterable[MessageSpec | ServiceSpec | ActionSpec], modules: dict[str, str]) -> None:
+def _check_references(specs: Iterable[MessageSpec | ServiceSpec | ActionSpec], modules: dict[str, str]) -> None:
     for spec in specs:
         if isinstance(spec, ActionSpec):
             missing = [t for t in _ACTION_NEEDS if t not in modules]
