@@ -14,7 +14,17 @@ CLIENT = str(ROOT / "scripts" / "fibonacci_action_client.py")
 
 
 def pair(server_args: str = "", *client_args: str, timeout: float = 60):
-    done = actors_run("--clock", "virtual", "--with", f"{SERVER} {server_args}", CLIENT, *client_args, timeout=timeout)
+    done = actors_run(
+        "--clock",
+        "virtual",
+        "--duration",
+        "60",
+        "--with",
+        f"{SERVER} {server_args}",
+        CLIENT,
+        *client_args,
+        timeout=timeout,
+    )
     assert done.returncode == 0, done.stderr
     return done
 
@@ -120,7 +130,9 @@ def test_a_server_that_queues_goals_or_keeps_only_the_latest(policy, outcomes, l
 def test_each_script_sees_its_own_command_line_and_a_failing_partner_fails_the_run(tmp_path):
     failing = tmp_path / "fails.py"
     failing.write_text("import sys\nprint('partner argv', sys.argv[1:], file=sys.stderr)\nraise SystemExit(3)\n")
-    done = actors_run("--clock", "virtual", "--with", f"{failing} x 'y z'", "--with", SERVER, CLIENT, "1")
+    done = actors_run(
+        "--clock", "virtual", "--duration", "60", "--with", f"{failing} x 'y z'", "--with", SERVER, CLIENT, "1"
+    )
     assert done.returncode == 1
     assert "partner argv ['x', 'y z']" in done.stderr.splitlines()
     assert messages(done, "fibonacci_client")[-1] == "succeeded: [0, 1]"  # the client read its own "1"
@@ -134,7 +146,7 @@ def test_each_script_sees_its_own_command_line_and_a_failing_partner_fails_the_r
     ],
 )
 def test_a_bad_partner_is_one_line_and_exit_2(partner, problem):
-    done = actors_run("--clock", "virtual", "--with", partner, CLIENT)
+    done = actors_run("--clock", "virtual", "--duration", "60", "--with", partner, CLIENT)
     assert (done.returncode, done.stderr.strip()) == (2, problem)
 
 

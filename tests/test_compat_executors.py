@@ -376,7 +376,7 @@ def _rescue_after(seconds: float, release: Any) -> tuple[threading.Timer, list[b
     # after a while of real time so that the test fails instead; the list says whether it did.
     rescued: list[bool] = []
     timer = threading.Timer(seconds, lambda: (rescued.append(True), release()))
-    timer._actors_token = False  # type: ignore[attr-defined]  # not one of the script's threads
+    timer._actors_end = None  # type: ignore[attr-defined]  # not one of the script's threads: real time
     timer.start()
     return timer, rescued
 
@@ -400,12 +400,9 @@ def test_threads_parked_outside_rclpy_do_not_hold_virtual_time(session):
     assert now(session) == start + 2.0
 
 
-def test_a_thread_holding_virtual_time_for_long_is_named_in_a_warning(session, monkeypatch):
+def _catch_warnings() -> tuple[list[str], threading.Event, Any]:
     import logging
 
-    import actors.compat.activity
-
-    monkeypatch.setattr(actors.compat.activity, "HOLD_WARNING", 0.05)
     warnings: list[str] = []
     warned = threading.Event()
 
@@ -414,7 +411,16 @@ def test_a_thread_holding_virtual_time_for_long_is_named_in_a_warning(session, m
             warnings.append(record.getMessage())
             warned.set()
 
-    catch = Catch(logging.WARNING)
+    return warnings, warned, Catch(logging.WARNING)
+
+
+def test_a_thread_holding_virtual_time_for_long_is_named_in_a_warning(session, monkeypatch):
+    import logging
+
+    import actors.compat.turns
+
+    monkeypatch.setattr(actors.compat.turns, "HOLD_WARNING", 0.05)
+    warnings, warned, catch = _catch_warnings()
     logging.getLogger("actors").addHandler(catch)
 
     def crunch() -> None:  # never waits: it works until the warning names it (10 s at most)
@@ -431,78 +437,53 @@ def test_a_thread_holding_virtual_time_for_long_is_named_in_a_warning(session, m
     finally:
         logging.getLogger("actors").removeHandler(catch)
     assert len(warnings) == 1 and warnings[0].startswith("virtual time waits for thread 'cruncher'")
-    assert "in crunch at " in warnings[0]
+    assert "started in crunch at " in warnings[0] and __file__ in warnings[0]
     assert now(session) == start + 1.0
 
 
-def test_a_thread_blocked_in_a_c_call_is_let_go_once_named(session, monkeypatch):
-    # input(), a socket, a bare lock: no Python frame says it waits, so it holds the clock, but only
-    # until the warning names it (else a run with --duration would never end).
-    import actors.compat.activity
+def test_a_thread_blocked_in_a_c_call_holds_virtual_time_until_it_returns(session, monkeypatch):
+    # input(), a socket, a bare lock: the clock waits for it (that keeps runs repeatable), and a
+    # warning names it with the line where it last left the runtime.
+    import logging
 
-    monkeypatch.setattr(actors.compat.activity, "HOLD_WARNING", 0.05)
+    import actors.compat.turns
+
+    monkeypatch.setattr(actors.compat.turns, "HOLD_WARNING", 0.05)
+    warnings, warned, catch = _catch_warnings()
+    logging.getLogger("actors").addHandler(catch)
     lock = threading.Lock()
     lock.acquire()
-    rescue, rescued = _rescue_after(20.0, lock.release)
-    blocked = threading.Thread(target=lock.acquire, daemon=True)
-    blocked.start()
-    start = now(session)
-    time.sleep(1.0)
-    rescue.cancel()
-    assert not rescued, "virtual time stood still for a thread blocked outside Python"
+    releaser = threading.Thread(target=lambda: (warned.wait(10.0), lock.release()))
+    releaser._actors_end = None  # type: ignore[attr-defined]  # not one of the script's threads
+    releaser.start()
+
+    def blocked() -> None:
+        time.sleep(0.5)  # virtual: a wait, after which it blocks outside the runtime
+        lock.acquire()
+
+    try:
+        thread = threading.Thread(target=blocked, name="blocked", daemon=True)
+        thread.start()
+        start = now(session)
+        time.sleep(1.0)
+    finally:
+        logging.getLogger("actors").removeHandler(catch)
+    assert len(warnings) == 1 and warnings[0].startswith("virtual time waits for thread 'blocked'")
+    assert "left the runtime in blocked at " in warnings[0]
     assert now(session) == start + 1.0
-    lock.release()
 
 
-def test_a_watcher_is_busy_the_moment_another_party_goes_idle():
-    # Whoever waits for the others to settle is woken as they go idle, in the same step: the loop
-    # looking in between would see nobody busy and jump before the watcher had looked.
-    from actors.compat.activity import Activity, Waiter
-
-    activity = Activity()
-    watcher = Waiter(activity)
-    activity.watch(watcher)
-    with activity.lock:
-        activity.current().busy = False  # the watcher waits (as in Waiter.wait)
-    work = activity.work()
-    seen_by_the_loop: list[bool] = []
-    activity.poke = lambda: seen_by_the_loop.append(activity.busy())  # type: ignore[method-assign]
-    activity.done(work)
-    assert seen_by_the_loop == [True]
-
-
-def test_a_call_the_loop_stopped_before_running_raises_instead_of_hanging():
+def test_waits_return_and_calls_raise_once_the_runtime_has_ended():
     session = Session(clock="virtual").start()
-    loop = session.loop
-    handed, schedule = threading.Event(), loop.call_soon_threadsafe
-
-    def stopping_first(callback: Any, *args: Any) -> Any:
-        if marker in (getattr(callback, "__wrapped__", None), *args[:1]):  # the loop stops before this one
-            handed.set()
-            return None
-        return schedule(callback, *args)
-
-    def marker() -> str:
-        return "ran"
-
-    loop.call_soon_threadsafe = stopping_first  # type: ignore[method-assign]
-    outcome: list[BaseException | str] = []
-
-    def caller() -> None:
-        try:
-            outcome.append(session.call(marker))
-        except RuntimeError as exc:
-            outcome.append(exc)
-
-    thread = threading.Thread(target=caller, daemon=True)
-    thread.start()
-    assert handed.wait(timeout=10.0)
+    outcome: list[Any] = []
+    forever = threading.Thread(target=lambda: outcome.append(session.wait_until(lambda: False, None)), daemon=True)
+    forever.start()  # no script thread: it queues for the turn when it first touches the runtime
+    session.sleep(1.0)  # its wait begins meanwhile
     session.close()
-    thread.join(timeout=10.0)
-    assert not thread.is_alive(), "the call waits forever for a loop that has stopped"
-    assert [str(error) for error in outcome] == ["the runtime of 'actors' has stopped"]
+    forever.join(timeout=10.0)
+    assert outcome == [False]
     with pytest.raises(RuntimeError, match="has stopped"):
-        session.call(marker)
+        session.call(lambda: "ran")
 
 
 def test_parameter_requests_wait_for_the_spin(session):

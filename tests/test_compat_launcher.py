@@ -14,6 +14,9 @@ from conftest import ROOT, TESTS, python_env
 SCRIPTS = ROOT / "scripts"
 TEST_SCRIPTS = TESTS / "rclpy_scripts"
 
+# The virtual clock needs a duration: one long enough that the script ends first.
+BOUNDED_VIRTUAL = ("--clock", "virtual", "--duration", "60")
+
 
 def actors_run(*args: str, timeout: float = 60) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
@@ -51,7 +54,12 @@ def test_a_subscriber_beside_a_graph_hears_its_talker():
 @pytest.mark.slow
 def test_a_client_waits_for_a_late_service_then_uses_its_arguments():
     done = actors_run(
-        "--graph", str(SCRIPTS / "with_server.toml"), "--clock", "virtual", script("add_two_ints_client.py"), "2", "3"
+        "--graph",
+        str(SCRIPTS / "with_server.toml"),
+        *BOUNDED_VIRTUAL,
+        script("add_two_ints_client.py"),
+        "2",
+        "3",
     )
     assert done.returncode == 0, done.stderr
     lines = done.stderr.splitlines()
@@ -200,7 +208,11 @@ def test_a_service_spun_once_at_a_time_from_a_module_level_node():
 @pytest.mark.slow
 def test_three_ways_a_client_waits_for_its_answer(style):
     done = actors_run(
-        "--graph", str(SCRIPTS / "with_server.toml"), "--clock", "virtual", script("client_styles.py"), style
+        "--graph",
+        str(SCRIPTS / "with_server.toml"),
+        *BOUNDED_VIRTUAL,
+        script("client_styles.py"),
+        style,
     )
     assert done.returncode == 0, done.stderr
     # The server comes up at 2.5 s; the coroutine's timer asks at the next half second after it.
@@ -263,7 +275,7 @@ def test_sigterm_stops_a_script_gracefully():
 
 @pytest.mark.slow
 def test_a_guard_condition_whose_callback_shuts_rclpy_down():
-    done = actors_run("--clock", "virtual", script("guard.py"))
+    done = actors_run("--clock", "virtual", "--duration", "60", script("guard.py"))
     assert done.returncode == 0, done.stderr
     assert messages(done, "guarded") == [
         "spinning once",
@@ -276,7 +288,7 @@ def test_a_guard_condition_whose_callback_shuts_rclpy_down():
 
 @pytest.mark.slow
 def test_qos_and_argparse_beside_ros_arguments():
-    talker = actors_run("--clock", "virtual", script("qos_pair.py"), "talker", "-n", "3")
+    talker = actors_run("--clock", "virtual", "--duration", "60", script("qos_pair.py"), "talker", "-n", "3")
     assert talker.returncode == 0, talker.stderr
     assert messages(talker, "qos_talker") == ["best effort talker", "sent msg 0", "sent msg 1", "sent msg 2"]
     listener = actors_run(
@@ -284,6 +296,8 @@ def test_qos_and_argparse_beside_ros_arguments():
         str(SCRIPTS / "with_talker.toml"),
         "--clock",
         "virtual",
+        "--duration",
+        "60",
         script("qos_pair.py"),
         "listener",
         "--reliable",

@@ -23,6 +23,12 @@ def register(groups: Any) -> None:
     parser.add_argument("--duration", type=float, help="stop after this many seconds of runtime clock")
     parser.add_argument("--graph", metavar="GRAPH.toml", help="run the script beside this graph's nodes")
     parser.add_argument(
+        "--timeout",
+        type=float,
+        metavar="S",
+        help="stop the run after S seconds of wall time, whatever the script does (exit code 124)",
+    )
+    parser.add_argument(
         "--log-level", choices=("debug", "info", "warn", "error", "fatal"), help="the console's level (default: info)"
     )
     parser.add_argument(
@@ -50,4 +56,5 @@ def _run(args: argparse.Namespace) -> int:
         graph=args.graph,
         log_level=args.log_level,
         partners=args.partners,
+        timeout=args.timeout,
     )

@@ -29,12 +29,12 @@ from types import TracebackType
 from typing import Any, cast
 
 from actors.codec import get_type
-from actors.compat.activity import Waiter
 from actors.compat.overlay import overlaid
 from actors.compat.rclpy.context import use_session
 from actors.compat.rclpy.executors import ExternalShutdownException
 from actors.compat.rclpy.utilities import get_default_context, try_shutdown
 from actors.compat.session import Session
+from actors.compat.turns import Waiter
 from actors.launch.graph_file import load_graph
 from actors.ros.log import INFO, ROOT_LOGGER, RosFormatter
 from actors.ros.node import Node as NativeNode
@@ -92,6 +92,7 @@ class ScriptRun:
         self._stopping = False
         self._done = False
         self._thread: threading.Thread | None = None
+        self._ended: Waiter
 
     # -- the run ----------------------------------------------------------------
 
@@ -125,26 +126,18 @@ class ScriptRun:
 
         self._stack.callback(restore)
 
+        ended = self._ended = self._session.waiter()
+
         def main() -> None:
             try:
                 self._main()
             finally:
                 with self._session.lock:
-                    self._done = True  # the thread's end then wakes whoever waits for it to settle
+                    self._done = True
+                    ended.wake()
 
-        self._thread, _ = self._session.start_thread(main, "student script")
-        self._settle()  # the script runs until it first waits (spins, mostly): its nodes exist then
-
-    def _settle(self) -> None:
-        """Wait (the clock standing still) until every thread of the script waits or the script has ended."""
-        activity = self._session.activity
-        mine = activity.current()
-        waiter = Waiter(activity)
-        activity.watch(waiter)
-        try:
-            self._session.wait_until(lambda: self._done or not activity.busy_besides(mine), None, waiter)
-        finally:
-            activity.unwatch(waiter)
+        self._thread = self._session.start_thread(main, "student script")
+        self._session.settle()  # the script runs until it first waits (spins, mostly): its nodes exist then
 
     def _main(self) -> None:
         try:
@@ -183,12 +176,7 @@ class ScriptRun:
             return
         self._stopping = True
         get_default_context().interrupt()
-        waiter = Waiter(self._session.activity)
-        self._session.activity.watch(waiter)  # the script's thread ends: its token goes idle
-        try:
-            self._session.wait_until(lambda: self._done, _STOP_WITHIN, waiter)
-        finally:
-            self._session.activity.unwatch(waiter)
+        self._session.wait_until(lambda: self._done, _STOP_WITHIN, self._ended)
         self._thread.join(timeout=5.0)
         if self._thread.is_alive():
             raise RuntimeError(f"{self.target} did not stop within {_STOP_WITHIN} simulated seconds of shutdown")
@@ -212,8 +200,7 @@ class ScriptRun:
         time) has run when it returns.
         """
         self._session.sleep(seconds)
-        self._session.call(_nothing)  # after what the loop had due at this instant (it runs in order)
-        self._settle()
+        self._session.settle()  # and what the loop and the script have due at this instant
 
     def record(self, topic: str, msg_type: type[Any] | None = None) -> list[Any]:
         """A list that receives every message on ``topic`` from now on, in order.
@@ -255,10 +242,6 @@ class ScriptRun:
             if info.name == name:
                 return get_type(info.type)
         raise LookupError(f"nobody uses {name} yet: give its type, e.g. record({name!r}, Twist)")
-
-
-def _nothing() -> None:
-    return None
 
 
 def _spin_one(target: str | type) -> None:

@@ -7,15 +7,22 @@ The script runs on the main thread as ``python SCRIPT.py ARGS...`` would run it
 
 Stopping is graceful, as for graphs: Ctrl-C, and the end of ``--duration``,
 shut the context down and raise KeyboardInterrupt in the script (what rclpy's
-signal handler does); SIGTERM shuts the context down.  A script that lets that
+signal handler does); SIGTERM shuts the context down too, and ends the script
+wherever it is: an rclpy call it is in raises ExternalShutdownException, its
+own code gets SystemExit(0).  Signals never land inside the runtime's code
+(:meth:`~actors.compat.turns.Turn.signal`).  A script that lets that
 KeyboardInterrupt or ExternalShutdownException out still exits 0, without a
-traceback.  Exit codes: the script's own (``sys.exit``), 1 when it raises
-anything else (its traceback, without the launcher's frames) or when the
-graph fails, 2 for misuse (no such script, bad options, malformed
-``--ros-args`` or graph file), with one line on stderr.
+traceback.  ``--timeout S`` ends any run after S seconds of wall time.  Exit
+codes: the script's own (``sys.exit``), 1 when it raises anything else (its
+traceback, without the launcher's frames) or when the graph fails, 2 for
+misuse (no such script, bad options, malformed ``--ros-args`` or graph file),
+with one line on stderr, 124 when ``--timeout`` ended the run.
 
 On the virtual clock, ``time.sleep`` in the script's threads sleeps virtual
-time: it waits on the runtime like any other wait.
+time: it waits on the runtime like any other wait
+(:meth:`~actors.compat.session.Session.timekeeping`).  The virtual clock needs
+a duration (nothing else would end the run), and a launcher option written
+after the script, which goes to the script, is named in a warning.
 """
 
 from __future__ import annotations
@@ -42,6 +49,7 @@ from actors.compat.rclpy.executors import ExternalShutdownException
 from actors.compat.rclpy.utilities import get_default_context, try_shutdown
 from actors.compat.script_state import ScriptArgv
 from actors.compat.session import Session
+from actors.compat.turns import Turn
 from actors.errors import ActorsError, GraphFileError, RosArgsError
 from actors.launch.graph_file import load_graph
 from actors.launch.rosargs import parse
@@ -61,6 +69,7 @@ def run_script(
     graph: str | None = None,
     log_level: str | None = None,
     partners: Sequence[str] = (),
+    timeout: float | None = None,
 ) -> int:
     """Run ``script`` with ``argv`` as its arguments; return the process's exit code.
 
@@ -68,8 +77,9 @@ def run_script(
     ``[runtime]`` settings when ``graph`` is given, else to the wall clock, no
     end, and info.  ``partners`` are more scripts (``"server.py ARGS..."``) run
     beside it in the same runtime (:mod:`actors.compat.partners`); one that
-    fails makes the exit code 1.  Call it on the main thread (it handles SIGINT
-    and SIGTERM).
+    fails makes the exit code 1.  ``timeout`` bounds the run in seconds of wall
+    time (exit code 124).  Call it on the main thread (it handles SIGINT and
+    SIGTERM).
     """
     path = Path(script)
     try:
@@ -83,9 +93,11 @@ def run_script(
             return 2
     for each in reversed((path, *(partner for partner, _ in scripts))):
         add_workspace(each.parent)  # the script's own workspace: its interface packages import as rclpy's
-    if duration is not None and not duration > 0:
-        print(f"error: --duration must be > 0 seconds, got {duration}", file=sys.stderr)
-        return 2
+    for name, value in (("--duration", duration), ("--timeout", timeout)):
+        if value is not None and not 0 < value < float("inf"):
+            print(f"error: {name} must be > 0 seconds, got {value}", file=sys.stderr)
+            return 2
+    _warn_options_after(argv)
     try:
         for arguments in (argv, *(arguments for _, arguments in scripts)):
             parse(arguments)
@@ -97,6 +109,13 @@ def run_script(
     clock = clock or (settings.clock if settings else "wall")
     if duration is None and settings is not None:
         duration = settings.duration or None
+    if clock == "virtual" and not duration:
+        print(
+            "error: the virtual clock needs a duration, e.g. --duration 10 "
+            "(virtual time runs as fast as it can, so nothing else would stop it)",
+            file=sys.stderr,
+        )
+        return 2
     level = log_level or (settings.log_level if settings else None)
     configure_console(LEVELS[level] if level else INFO, stream=sys.stderr)
     stop = _Stop()
@@ -109,6 +128,7 @@ def run_script(
         on_failure=lambda _error: stop.interrupt(),
         attach=[ControlEndpoint()],
     )
+    stop.turn = session.turn
     try:
         session.start()
     except BaseException as exc:
@@ -122,6 +142,9 @@ def run_script(
     if others:
         command_line = ScriptArgv(main_line)
         _set_argv(command_line)
+    finished = threading.Event()
+    if timeout is not None:
+        _thread.start_new_thread(_bound, (timeout, stop, finished))
     try:
         with use_session(session), overlaid(), stop.handling_signals(), session.timekeeping():
             for partner in others:
@@ -136,10 +159,46 @@ def run_script(
         try_shutdown()
         session.close()
         sys.stdout.flush()
+        finished.set()
+    if stop.timed_out:
+        return _TIMED_OUT
     if session.failure is not None:
         print(f"[FATAL] {_one_line(session.failure)}", file=sys.stderr)
         return 1
     return 1 if code == 0 and any(partner.failed for partner in others) else code
+
+
+_TIMED_OUT = 124  # as timeout(1)
+_HARD_STOP = 1.0  # wall seconds a timed-out script has to end once interrupted
+
+# actors run's own options: written after the script, they are the script's arguments.
+_OPTIONS = ("--clock", "--duration", "--graph", "--log-level", "--with", "--timeout")
+
+
+def _warn_options_after(argv: Sequence[str]) -> None:
+    for word in argv:
+        if word == "--ros-args":
+            return
+        option = word.split("=", 1)[0]
+        if option in _OPTIONS:
+            print(
+                f"warning: {option} comes after the script, so it went to the script; "
+                "put actors run's options before the script",
+                file=sys.stderr,
+            )
+            return
+
+
+def _bound(seconds: float, stop: _Stop, finished: threading.Event) -> None:
+    # A bare thread: no script thread, so it waits in wall time.  It interrupts the script as Ctrl-C
+    # would, and ends the process if even that does not end it (a script that swallows it).
+    if finished.wait(seconds):
+        return
+    print(f"[WARN] --timeout: {seconds:g} s of wall time are up: stopping the run", file=sys.stderr, flush=True)
+    stop.timed_out = True
+    stop.interrupt()
+    if not finished.wait(_HARD_STOP):
+        os._exit(_TIMED_OUT)
 
 
 def _finish(partners: Sequence[Partner], linger: float) -> None:
@@ -156,6 +215,8 @@ class _Stop:
 
     def __init__(self) -> None:
         self.requested = False
+        self.timed_out = False
+        self.turn: Turn | None = None
         self._main = threading.main_thread()
         self._handling = False
 
@@ -178,7 +239,13 @@ class _Stop:
             _thread.start_new_thread(self._interrupt_soon, ())
             return
         self._shut_down()
-        raise KeyboardInterrupt
+        self._raise(KeyboardInterrupt())
+
+    def _raise(self, error: BaseException, outside: BaseException | None = None) -> None:
+        # In the script's code at once; in the runtime's, where that code is done (see Turn.signal).
+        if self.turn is None:
+            raise outside or error
+        self.turn.signal(error, outside)
 
     def _interrupt_soon(self) -> None:
         # A bare thread: it is no script thread, so it holds no virtual time and sleeps in real time.
@@ -187,7 +254,17 @@ class _Stop:
             self.interrupt()
 
     def _on_sigterm(self, signum: int, frame: FrameType | None) -> None:
+        # rclpy only shuts the context down (a spin then raises ExternalShutdownException); a script
+        # that never spins again would go on, so the main thread gets that exception wherever it is.
+        if _in_finaliser(frame):
+            self.requested = True
+            _thread.start_new_thread(self._interrupt_soon, ())
+            return
         self._shut_down()
+        # In an rclpy call, that call raises ExternalShutdownException (a spin would); in the
+        # script's own code (a callback, input(), a loop that never spins), SystemExit: a
+        # BaseException, so that no ``except Exception`` of the script or a library swallows it.
+        self._raise(ExternalShutdownException(), SystemExit(0))
 
     def _shut_down(self) -> None:
         # On a thread of its own, as rclpy's deferred signal handler does it: the handler runs on the

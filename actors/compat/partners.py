@@ -63,7 +63,7 @@ class Partner:
     def start(self) -> None:
         """Run the script on a thread of its own; it holds virtual time still until it first waits."""
         sys.path.insert(0, str(self.path.resolve().parent))
-        self._thread, _ = self._session.start_thread(self._main, f"actors partner {self.path.name}")
+        self._thread = self._session.start_thread(self._main, f"actors partner {self.path.name}")
 
     def _main(self) -> None:
         enter(self.state)  # a new thread starts with an empty context: this state is the script's alone

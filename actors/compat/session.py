@@ -1,27 +1,34 @@
 """A runtime on a thread of its own, driven from other threads: an rclpy script, a grading test.
 
 The event loop, the :class:`~actors.runtime.Runtime` and every node of a graph
-file live on the session's thread.  Other threads reach them through two calls:
+file live on the session's thread.  Other threads reach them by taking the
+session's *turn* (:mod:`~actors.compat.turns`) and running the call themselves:
 
-- :meth:`Session.call` runs a function on the loop thread and returns its
+- :meth:`Session.call` runs a function with the turn held and returns its
   result (or raises its error): creating a publisher, publishing, reading the
-  graph.  The caller stays *busy* meanwhile: the work is immediate.
-- :meth:`Session.block` runs a coroutine there and waits for it as a
-  :class:`~actors.compat.activity.Waiter`: the caller counts as *waiting*, so
-  virtual time may move until the coroutine ends (``wait_for_service``).
+  graph.  The work is immediate.
+- :meth:`Session.wait_until` and :meth:`Session.block` park the caller on a
+  :class:`~actors.compat.turns.Waiter` until a condition holds or a coroutine
+  run on the loop ends; the turn is someone else's meanwhile.
 
-On the virtual clock the loop is a :class:`~actors.compat.activity.ScriptTimeLoop`,
-which jumps only while every script thread waits.
+On the virtual clock the turn is a baton (:class:`~actors.compat.turns.VirtualTurn`):
+the loop runs only while no script thread does, so virtual time moves only
+while every script thread waits.
 """
 
 from __future__ import annotations
 
+import _thread
 import asyncio
+import concurrent.futures
+import concurrent.futures.thread
+import contextlib
 import functools
 import threading
 import time
+from asyncio.events import _get_running_loop, _set_running_loop
 from collections.abc import Awaitable, Callable, Iterator, Sequence
-from concurrent.futures import CancelledError, Future
+from concurrent.futures import Future
 from contextlib import ExitStack, contextmanager
 from typing import Any, TypeVar
 
@@ -29,9 +36,8 @@ import anyio
 import anyio.abc
 import anyio.from_thread
 
-from actors.compat.activity import Activity, ScriptTimeLoop, Waiter, run_as
 from actors.compat.dispatch import Dispatcher
-from actors.core.loops import precise_loop
+from actors.compat.turns import ScriptTimeLoop, ScriptWallLoop, Turn, VirtualTurn, Waiter, WallTurn
 from actors.launch.graph_file import GraphFile
 from actors.launch.spawn import spawn_graph
 from actors.ros.node import Node
@@ -72,9 +78,9 @@ class Session:
             raise ValueError(f"clock must be 'wall' or 'virtual', got {clock!r}")
         self.virtual = clock == "virtual"
         self.name = name
-        self.activity = Activity()
-        # One lock for the overlay's executor state (ready work, executors, waiters) of this session.
-        self.lock = threading.RLock()
+        self.turn: Turn = VirtualTurn() if self.virtual else WallTurn()
+        # The overlay's state (ready work, executors, waiters) is the runtime's: the turn guards both.
+        self.lock = self.turn
         self.failure: BaseException | None = None
         self._graph = graph
         self._duration = duration
@@ -84,26 +90,23 @@ class Session:
         self._stack: ExitStack | None = None
         self._done: Future[None] | None = None
         self._stopping = False
-        self._waiting: set[Waiter] = set()  # threads in wait_until, woken when the runtime ends
-        self._calls: set[Future[Any]] = set()  # calls handed to the loop thread, not yet run
-        self._calls_lock = threading.Lock()
-        self._closed = False
         self.runtime: Runtime
         self.dispatcher: Dispatcher
         self.loop: asyncio.AbstractEventLoop
-        self.loop_thread: threading.Thread | None = None
 
     # -- lifecycle --------------------------------------------------------------
 
     def start(self) -> Session:
         """Start the loop thread and the runtime (and the graph); return self.
 
-        The calling thread counts as busy from now on (it is about to run the
-        script).  Raises what starting the graph raises.
+        The calling thread holds the turn when it returns: it is about to run
+        the script.  Raises what starting the graph raises.
         """
-        self.activity.current()
+        turn = self.turn
         factory: Callable[[], asyncio.AbstractEventLoop] = (
-            functools.partial(ScriptTimeLoop, self.activity) if self.virtual else precise_loop
+            functools.partial(ScriptTimeLoop, turn)
+            if isinstance(turn, VirtualTurn)
+            else functools.partial(ScriptWallLoop, turn)  # type: ignore[arg-type]  # a WallTurn here
         )
         stack = ExitStack()
         portal = stack.enter_context(
@@ -116,11 +119,13 @@ class Session:
             raise
         self._stack = stack
         self._done.add_done_callback(self._ended)
+        if isinstance(turn, VirtualTurn):
+            turn.come()
         return self
 
     async def _serve(self, *, task_status: anyio.abc.TaskStatus[None]) -> None:
         self.loop = asyncio.get_running_loop()
-        self.loop_thread = threading.current_thread()
+        self._loop_thread = threading.current_thread()
         self.dispatcher = Dispatcher(self.loop)
         self._stop = anyio.Event()
         policy = self._graph[0].supervisor.policy() if self._graph else None
@@ -131,6 +136,8 @@ class Session:
                     await tg.start(spawn_graph, rt, *self._graph)
                 if self._duration:
                     tg.start_soon(self._end_after, self._duration)
+                if isinstance(self.turn, VirtualTurn):
+                    self.turn.expect()  # the thread that started the session takes the baton first
                 task_status.started()
                 await self._stop.wait()
                 tg.cancel_scope.cancel()
@@ -148,10 +155,7 @@ class Session:
                 self._on_failure(error)
         # No timer will fire any more: release the threads that wait on runtime time (a pool thread
         # in time.sleep would otherwise never end, and the interpreter waits for it at exit).
-        with self.lock:
-            waiting = list(self._waiting)
-        for waiter in waiting:
-            waiter.wake()
+        self.turn.stop()
 
     def close(self) -> None:
         """Stop every node (graph nodes gracefully, in reverse order) and the loop thread.
@@ -166,15 +170,12 @@ class Session:
         try:
             if self._done is not None and not self._done.done():
                 self.call(self._stop.set)
+                if isinstance(self.turn, VirtualTurn):
+                    self.turn.depart()  # the loop needs the baton to stop, for good
                 _wait_quietly(self._done)
         finally:
             stack.close()
-            # The loop has stopped: a call another thread handed it meanwhile will never run.
-            with self._calls_lock:
-                self._closed = True
-                stranded = list(self._calls)
-            for future in stranded:
-                future.cancel()
+            self.turn.stop()
 
     def __enter__(self) -> Session:
         return self.start()
@@ -189,149 +190,217 @@ class Session:
 
     # -- calls from other threads ------------------------------------------------
 
-    def in_loop_thread(self) -> bool:
-        """Whether the calling thread is the session's loop thread."""
-        return threading.current_thread() is self.loop_thread
-
     def call(self, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
-        """``fn(*args, **kwargs)`` on the loop thread; its result, or its error raised here.
+        """``fn(*args, **kwargs)`` with the turn held, on the calling thread; its result.
 
-        Raises RuntimeError once the loop thread has stopped, also to a call it
-        stopped before running (a pool thread still at work
-        then would otherwise wait forever).
+        Raises RuntimeError once the runtime has stopped.
         """
-        if kwargs:
-            fn = functools.partial(fn, **kwargs)
-        if self.in_loop_thread():
-            return fn(*args)
-        future: Future[T] = Future()
-        with self._handed(future):
+        turn = self.turn
+        if turn.stopped:
+            raise self._ended_error()
+        with turn:
+            # Runtime code may ask for the running loop (anyio does): on a script thread, it is ours.
+            outer = _get_running_loop()
+            if outer is not self.loop:
+                _set_running_loop(self.loop)
+                if _async_library is not None:
+                    _async_library.set("asyncio")
             try:
-                self.loop.call_soon_threadsafe(_run_call, fn, args, future)
-            except RuntimeError:  # the loop is closed
-                raise self._ended_error() from None
-            return future.result()
-
-    @contextmanager
-    def _handed(self, future: Future[Any]) -> Iterator[None]:
-        # Inside the block, close() cancels ``future`` if the loop stops before finishing it.
-        with self._calls_lock:
-            if self._closed:
-                raise self._ended_error()
-            self._calls.add(future)
-        try:
-            yield
-        except CancelledError:
-            if future.cancelled() and self._closed:
-                raise self._ended_error() from None
-            raise
-        finally:
-            with self._calls_lock:
-                self._calls.discard(future)
+                return fn(*args, **kwargs)
+            finally:
+                if outer is not self.loop:
+                    _set_running_loop(outer)
 
     def _ended_error(self) -> RuntimeError:
         return RuntimeError(f"the runtime of {self.name!r} has stopped")
 
+    def waiter(self) -> Waiter:
+        """A new :class:`Waiter` for a wait of the calling thread."""
+        return Waiter(self.turn)
+
     def block(self, async_fn: Callable[..., Awaitable[T]], *args: Any) -> T:
-        """Await ``async_fn(*args)`` on the loop, the caller waiting (not busy) until it ends.
+        """Await ``async_fn(*args)`` on the loop, the caller parked until it ends.
 
         KeyboardInterrupt while waiting cancels the coroutine.  Raises
         RuntimeError on the loop thread itself, which must never block.
         """
-        if self.in_loop_thread():
+        if threading.current_thread() is getattr(self, "_loop_thread", None):
             raise RuntimeError("the runtime's own thread cannot block on the runtime")
-        coroutine = _as_coroutine(async_fn, *args)
-        try:
-            future = asyncio.run_coroutine_threadsafe(coroutine, self.loop)
-        except RuntimeError:  # the loop is closed
-            coroutine.close()
-            raise self._ended_error() from None
-        waiter = Waiter(self.activity)
-        with self._handed(future):
-            future.add_done_callback(lambda _: waiter.wake())
+        waiter = self.waiter()
+        with self.turn:
+            if self.turn.stopped:
+                raise self._ended_error()
+            task = self.loop.create_task(_as_coroutine(async_fn, *args))
+            task.add_done_callback(lambda _: waiter.wake())
             try:
-                waiter.wait()
+                while not task.done() and not self.turn.stopped:
+                    waiter.clear()
+                    if task.done():
+                        break
+                    self.turn.wait(waiter)
             except BaseException:
-                future.cancel()
+                task.cancel()
                 raise
-            return future.result()
+            if not task.done():
+                raise self._ended_error()
+            return task.result()
 
     def wake_after(self, seconds: float, wake: Callable[[], None]) -> asyncio.TimerHandle:
         """Call ``wake()`` on the loop thread ``seconds`` of runtime clock from now."""
         return self.call(self.loop.call_later, max(0.0, seconds), wake)
 
-    def cancel(self, handle: asyncio.TimerHandle) -> None:
-        """Cancel what :meth:`wake_after` scheduled."""
-        if self.running:
-            self.call(handle.cancel)
-
     def sleep(self, seconds: float) -> None:
-        """Wait ``seconds`` of runtime clock (virtual under virtual time), waiting, not busy."""
+        """Wait ``seconds`` of runtime clock (virtual under virtual time), parked."""
         self.wait_until(lambda: False, seconds)
+
+    def settle(self) -> None:
+        """On the virtual clock, park until the runtime has nothing left to do at this instant."""
+        turn = self.turn
+        if isinstance(turn, VirtualTurn) and not turn.stopped:
+            with turn:
+                turn.settle(self.waiter())
 
     @contextmanager
     def timekeeping(self) -> Iterator[None]:
         """Inside the block, on the virtual clock, script threads keep virtual time honest.
 
-        ``time.sleep`` in a script thread sleeps runtime time (threads that never
-        waited on the runtime, and the loop's, sleep in real time), and a thread
-        that a script thread starts counts as busy from ``start()`` until it
-        first waits on the runtime, except while it is parked in a wait of
-        :mod:`threading` (see :mod:`~actors.compat.activity`).
+        In a thread that holds the turn, ``time.sleep`` sleeps runtime time and
+        a wait on a :class:`threading.Condition` (so on an Event, a queue, a
+        semaphore) is a wait on the runtime, woken in order by ``notify``; a
+        thread it starts queues for the turn from ``start()`` (except a pool's
+        worker), and joining one is a wait.  Other threads are left alone.
         """
-        if not self.virtual:
+        turn = self.turn
+        if not isinstance(turn, VirtualTurn):
             yield
             return
-        real_sleep, real_start = time.sleep, threading.Thread.start
-        activity = self.activity
+        real = _Threading()
 
         def sleep(seconds: float) -> None:
             if seconds < 0:
                 raise ValueError("sleep length must be non-negative")
-            if self.running and not self.in_loop_thread() and activity.has_token():
+            if turn.mine() and not turn.stopped:
                 self.sleep(seconds)
             else:
-                real_sleep(seconds)
+                real.sleep(seconds)
 
         def start(thread: threading.Thread) -> None:
-            if (
-                self.running
-                and activity.has_token()
-                and not activity.starts_workers()
-                and getattr(thread, "_actors_token", None) is None
-            ):
-                token = activity.starting(thread)
-                try:
-                    real_start(thread)
-                except BaseException:
-                    activity.done(token)  # it never runs: it must not hold the clock
-                    raise
-            else:
-                real_start(thread)
+            if turn.mine() and not turn.stopped and not _pool_worker(thread) and not hasattr(thread, "_actors_end"):
+                waiter = turn.enlist(self.waiter())
+                end = thread._actors_end = self.waiter()  # type: ignore[attr-defined]  # see join below
+                thread.run = functools.partial(self._run_enlisted, waiter, end, thread.run)  # type: ignore[method-assign]
+            # start() waits for the new thread to say it runs, which it does without the turn.
+            _plain.waits = True
+            try:
+                real.start(thread)
+            finally:
+                _plain.waits = False
 
-        _swap(sleep, start)
+        def join(thread: threading.Thread, timeout: float | None = None) -> None:
+            end = getattr(thread, "_actors_end", None)
+            if end is not None and turn.mine() and not turn.stopped and thread.is_alive():
+                # Joining a thread that needs the baton to finish: a wait, not a block holding it.
+                self.wait_until(lambda: _ended(thread), timeout, end)
+                if not _ended(thread):
+                    return
+            if end is None and turn.mine():
+                with turn.stepped_out():  # it may need the turn to finish
+                    real.join(thread, timeout)
+                return
+            real.join(thread, timeout)
+
+        def wait(condition: threading.Condition, timeout: float | None = None) -> bool:
+            if not turn.mine() or turn.stopped or (timeout is not None and timeout <= 0) or _plain.waits:
+                return real.wait(condition, timeout)
+            if not condition._is_owned():  # type: ignore[attr-defined]  # Condition's own query
+                raise RuntimeError("cannot wait on un-acquired lock")
+            # As Condition.wait, with the turn's wait in place of a blocking acquire of the marker.
+            marker = _thread.allocate_lock()
+            marker.acquire()
+            condition._waiters.append(marker)  # type: ignore[attr-defined]  # Condition's own queue
+            waiting: dict[Any, Waiter] = condition.__dict__.setdefault("_actors_waiting", {})
+            waiting[marker] = waiter = self.waiter()
+            saved = condition._release_save()  # type: ignore[attr-defined]
+            notified = False
+            try:
+                self.wait_until(lambda: not marker.locked(), None if timeout is None else max(0.0, timeout), waiter)
+                notified = not marker.locked()
+            finally:
+                del waiting[marker]
+                condition._acquire_restore(saved)  # type: ignore[attr-defined]
+                if not notified:
+                    with contextlib.suppress(ValueError):
+                        condition._waiters.remove(marker)  # type: ignore[attr-defined]
+            return notified
+
+        def notify(condition: threading.Condition, n: int = 1) -> None:
+            real.notify(condition, n)
+            for marker, waiter in list(condition.__dict__.get("_actors_waiting", {}).items()):
+                if not marker.locked():
+                    waiter.wake()
+
+        patched = _Threading(sleep, start, join, wait, notify)
+        patched.install()
         try:
             yield
         finally:
-            _swap(real_sleep, real_start)
+            real.install()
 
-    def start_thread(self, target: Callable[[], Any], name: str) -> tuple[threading.Thread, Any]:
-        """Start a daemon thread running ``target()``, busy from now until it first waits; its token."""
-        token = self.activity.work()
-        thread = _TokenThread(target=run_as, args=(self.activity, token, target), name=name, daemon=True)
-        thread._actors_token = token
+    def _run_enlisted(self, waiter: Waiter, end: Waiter, run: Callable[[], object]) -> None:
+        # A thread's whole life under the baton: it waits for its turn, runs, and hands the baton on.
+        turn = self.turn
+        assert isinstance(turn, VirtualTurn)
+        turn.arrive(waiter)
+        try:
+            run()
+        finally:
+            current = threading.current_thread()
+            current._actors_ended = True  # type: ignore[attr-defined]  # read by join
+            if not turn.stopped:
+                end.wake()
+            turn.depart()
+
+    def start_thread(self, target: Callable[[], Any], name: str) -> threading.Thread:
+        """Start a daemon thread running ``target()`` with the turn, queued for it from now."""
+        thread = threading.Thread(target=target, name=name, daemon=True)
+        turn = self.turn
+        if isinstance(turn, VirtualTurn) and not turn.stopped:
+            waiter = turn.enlist(self.waiter())
+            end = self.waiter()
+            thread._actors_end = end  # type: ignore[attr-defined]  # as timekeeping's start
+            thread.run = functools.partial(self._run_enlisted, waiter, end, thread.run)  # type: ignore[method-assign]
         thread.start()
-        return thread, token
+        return thread
+
+    def submit(self, pool: concurrent.futures.Executor, fn: Callable[[], T]) -> concurrent.futures.Future[T]:
+        """``pool.submit(fn)``; on the virtual clock the job queues for the turn from now (in the
+        order jobs are submitted) and runs with it."""
+        turn = self.turn
+        if not isinstance(turn, VirtualTurn) or turn.stopped:
+            return pool.submit(fn)
+        waiter = self.waiter()
+
+        def run() -> T:
+            turn.arrive(waiter)
+            try:
+                return fn()
+            finally:
+                turn.depart()
+
+        future = pool.submit(run)
+        turn.enlist(waiter)  # after submit: a wait inside it must not hand the baton to this job
+        return future
 
     def wait_until(self, done: Callable[[], Any], timeout: float | None, waiter: Waiter | None = None) -> Any:
-        """Wait until ``done()`` (checked with :attr:`lock` held) returns something true; return it.
+        """Wait until ``done()`` (checked with the turn held) returns something true; return it.
 
         ``waiter`` is the one whoever makes ``done()`` true wakes (made here if
         None: then only the timeout wakes it).  After ``timeout`` seconds of
         runtime clock (None: no limit), returns what ``done()`` returns then;
         also once the runtime has ended (no runtime time passes any more).
         """
-        waiter = Waiter(self.activity) if waiter is None else waiter
+        waiter = self.waiter() if waiter is None else waiter
+        turn = self.turn
         expired = False
 
         def time_up() -> None:
@@ -339,36 +408,37 @@ class Session:
             expired = True
             waiter.wake()
 
-        timer = None
-        with self.lock:
-            self._waiting.add(waiter)
-        try:
-            timer = self.wake_after(timeout, time_up) if timeout is not None and self.running else None
-            while True:
-                waiter.clear()
-                with self.lock:
+        with turn:
+            timer = None
+            if timeout is not None and not turn.stopped:
+                timer = self.loop.call_later(max(0.0, timeout), time_up)
+            try:
+                while True:
+                    waiter.clear()
                     result = done()
-                if result or expired or not self.running:
-                    return result
-                waiter.wait()
-        finally:
-            with self.lock:
-                self._waiting.discard(waiter)
-            if timer is not None and not expired:
-                self.cancel(timer)
+                    if result or expired or turn.stopped:
+                        return result
+                    turn.wait(waiter)
+            finally:
+                if timer is not None and not expired:
+                    timer.cancel()
 
 
-def _run_call(fn: Callable[..., T], args: tuple[Any, ...], future: Future[T]) -> None:
-    if not future.set_running_or_notify_cancel():
-        return
-    if _async_library is not None:
-        _async_library.set("asyncio")
-    try:
-        future.set_result(fn(*args))
-    except BaseException as exc:
-        future.set_exception(exc)
-        if not isinstance(exc, Exception):
-            raise
+class _Plain(threading.local):
+    waits = False  # inside Thread.start: a Condition's wait there is a plain one
+
+
+_plain = _Plain()
+
+
+def _pool_worker(thread: threading.Thread) -> bool:
+    # A worker of a concurrent.futures pool parks in its queue between jobs, holding nothing: each
+    # job takes the turn when it touches the runtime (see Session.job), the thread itself does not.
+    return getattr(thread, "_target", None) is concurrent.futures.thread._worker
+
+
+def _ended(thread: threading.Thread) -> bool:
+    return not thread.is_alive() or getattr(thread, "_actors_ended", False)
 
 
 async def _as_coroutine(async_fn: Callable[..., Awaitable[T]], *args: Any) -> T:
@@ -382,12 +452,22 @@ def _wait_quietly(done: Future[None]) -> None:
         pass
 
 
-def _swap(sleep: Callable[[float], None], start: Callable[[threading.Thread], None]) -> None:
-    # Session.timekeeping's patch of the standard library, put in place and taken back.
-    time.sleep, threading.Thread.start = sleep, start  # type: ignore[method-assign, assignment]  # a patch, on purpose
+class _Threading:
+    """The parts of :mod:`time` and :mod:`threading` that :meth:`Session.timekeeping` replaces."""
 
+    def __init__(
+        self,
+        sleep: Callable[[float], None] = time.sleep,
+        start: Callable[..., None] = threading.Thread.start,
+        join: Callable[..., None] = threading.Thread.join,
+        wait: Callable[..., bool] = threading.Condition.wait,
+        notify: Callable[..., None] = threading.Condition.notify,
+    ) -> None:
+        self.sleep, self.start, self.join, self.wait, self.notify = sleep, start, join, wait, notify
 
-class _TokenThread(threading.Thread):
-    """A thread of :meth:`Session.start_thread`: it carries its token from the start."""
-
-    _actors_token: Any
+    def install(self) -> None:
+        time.sleep = self.sleep  # type: ignore[assignment]  # a patch, on purpose
+        threading.Thread.start = self.start  # type: ignore[method-assign]  # a patch, on purpose
+        threading.Thread.join = self.join  # type: ignore[method-assign]
+        threading.Condition.wait = self.wait  # type: ignore[method-assign]
+        threading.Condition.notify = self.notify  # type: ignore[method-assign]

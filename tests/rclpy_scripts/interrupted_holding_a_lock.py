@@ -1,4 +1,4 @@
-"""Ctrl-C lands while the main thread holds the overlay's bookkeeping lock (a wait is being set up)."""
+"""Ctrl-C lands while the main thread runs the runtime's code (it holds the session's turn)."""
 
 import os
 import signal
@@ -13,7 +13,7 @@ from actors.compat.rclpy.context import current_session
 def tick() -> None:
     session = current_session()
     assert session is not None
-    with session.activity.lock:  # what Waiter.wait holds for a moment before it blocks
+    with session.lock:  # what every call into the runtime holds
         os.kill(os.getpid(), signal.SIGINT)  # the handler runs at Python's next check: in here
         for _ in range(100):
             pass

@@ -13,7 +13,6 @@ import asyncio
 from collections import deque
 from typing import Any
 
-from actors.compat.activity import Waiter
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
 from actors.compat.rclpy.task import Future
 
@@ -84,7 +83,7 @@ class Client(WorkSource, NativeProxy):
         what the call raised.  Do not call it from a callback of a
         single-threaded executor: it would wait forever, as in rclpy.
         """
-        waiter = Waiter(self._session.activity)
+        waiter = self._session.waiter()
         future = self.call_async(request)
         future._add_resumer(waiter.wake)
         timeout = timeout_sec if timeout_sec is not None and timeout_sec >= 0 else None

@@ -1,6 +1,6 @@
 """``rclpy.executors``: which thread runs a script node's callbacks, and when.
 
-An executor waits (as a :class:`~actors.compat.activity.Waiter`, so virtual
+An executor waits (parked on a :class:`~actors.compat.turns.Waiter`, so virtual
 time may move) until one of its nodes has work its callback group allows, or a
 task (a coroutine callback that can go on, a done callback) is ready.  It then
 hands out a *handler*, an rclpy :class:`~actors.compat.rclpy.task.Task` that
@@ -19,6 +19,7 @@ waitables, node by node) gets its turn before any is looked at again.
 from __future__ import annotations
 
 import contextvars
+import functools
 import os
 import threading
 import warnings
@@ -27,13 +28,13 @@ from collections.abc import Callable, Iterator
 from concurrent.futures import ThreadPoolExecutor
 from typing import TYPE_CHECKING, Any, TypeVar
 
-from actors.compat.activity import Waiter
 from actors.compat.dispatch import ScriptNode as Node
 from actors.compat.dispatch import WorkSource
 from actors.compat.rclpy.context import Context
 from actors.compat.rclpy.exceptions import NotInitializedException
 from actors.compat.rclpy.task import Future, Task, await_or_execute
 from actors.compat.rclpy.utilities import get_default_context
+from actors.compat.turns import Waiter
 
 if TYPE_CHECKING:
     from actors.compat.session import Session
@@ -134,7 +135,6 @@ class Executor:
         """Run ``callback(*args, **kwargs)`` (or a coroutine function) during a later spin; its Task."""
         task: Task[Any] = Task(callback, args, kwargs, executor=self)
         session = self._session
-        task._count_as_work(session.activity)
         with session.lock:
             self._tasks.append((task, None, None))
         self.wake()
@@ -236,10 +236,23 @@ class Executor:
         Raises TimeoutException after ``timeout_sec`` seconds of runtime clock
         (at once for 0), ShutdownException when the executor shuts down,
         ExternalShutdownException when the context does, and
-        ConditionReachedException when ``condition()`` becomes true.
+        ConditionReachedException when ``condition()`` becomes true.  On the
+        virtual clock the clock stands still until ``handler()`` is called, on
+        whichever thread the caller hands it to.
         """
+        work = self._ready_work(timeout_sec, nodes, condition)
+        work[0]._claim(self._session.turn)
+        return work
+
+    def _ready_work(
+        self,
+        timeout_sec: float | TimeoutObject | None = None,
+        nodes: list[Node] | None = None,
+        condition: Callable[[], bool] = lambda: False,
+    ) -> tuple[Task[None], WorkSource | None, Node | None]:
+        # wait_for_ready_callbacks for this module's executors, which run the handler themselves.
         session = self._session
-        waiter = Waiter(session.activity)
+        waiter = session.waiter()
         timeout = _seconds(timeout_sec)
 
         def ready() -> tuple[Task[None], WorkSource | None, Node | None] | None:
@@ -310,7 +323,6 @@ class Executor:
                 self.wake()
 
         task: Task[None] = Task(handler, executor=self)
-        task._count_as_work(session.activity)
         task._handed = True
         self._tasks.append((task, entity, node))
         return task, entity, node
@@ -318,7 +330,7 @@ class Executor:
     def _wait_until(self, done: Callable[[], bool], timeout: float | None) -> bool:
         """Wait (woken by :meth:`wake`) until ``done()``; False after ``timeout`` seconds."""
         session = self._session
-        waiter = Waiter(session.activity)
+        waiter = session.waiter()
         with session.lock:
             self._waiters.add(waiter)
         try:
@@ -335,7 +347,7 @@ class SingleThreadedExecutor(Executor):
         self, timeout_sec: float | TimeoutObject | None = None, condition: Callable[[], bool] = lambda: False
     ) -> None:
         try:
-            handler, _entity, _node = self.wait_for_ready_callbacks(timeout_sec, None, condition)
+            handler, _entity, _node = self._ready_work(timeout_sec, None, condition)
         except (ShutdownException, TimeoutException, ConditionReachedException):
             return
         handler()
@@ -378,7 +390,7 @@ class MultiThreadedExecutor(Executor):
         self, timeout_sec: float | TimeoutObject | None = None, condition: Callable[[], bool] = lambda: False
     ) -> None:
         try:
-            handler, _entity, _node = self.wait_for_ready_callbacks(timeout_sec, None, condition)
+            handler, _entity, _node = self._ready_work(timeout_sec, None, condition)
         except (ExternalShutdownException, ShutdownException, TimeoutException, ConditionReachedException):
             pass
         else:
@@ -386,8 +398,7 @@ class MultiThreadedExecutor(Executor):
             with session.lock:
                 self._in_pool += 1
             # In a copy of the spinning thread's context: the callback sees its script's rclpy state.
-            with session.activity.starting_workers():
-                self._executor.submit(contextvars.copy_context().run, self._run, handler)
+            session.submit(self._executor, functools.partial(contextvars.copy_context().run, self._run, handler))
             self._futures.append(handler)
         for future in self._futures[:]:
             if future.done():

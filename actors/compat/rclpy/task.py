@@ -16,12 +16,10 @@ import threading
 import warnings
 import weakref
 from collections.abc import Callable, Generator
-from contextlib import nullcontext
 from enum import Enum
 from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
 if TYPE_CHECKING:
-    from actors.compat.activity import Activity, Token
     from actors.compat.dispatch import SpinningExecutor as Executor
 
 __all__ = ["Future", "FutureState", "Task", "await_or_execute"]
@@ -197,34 +195,40 @@ class Task(Future[T]):
         self._suspended = False
         self._handed = False  # given out by an executor and not run (or resumed) since
         self._task_lock = threading.Lock()
-        self._activity: Activity | None = None
-        self._token: Token | None = None
-        self._release: Callable[[], Any] | None = None  # ends the token once, now or on collection
+        self._arrival: weakref.finalize | None = None
+        self._turn: Any = None
 
-    def _count_as_work(self, activity: Activity) -> None:
-        # Virtual time does not move while this task is ready to run or running.
-        self._activity = activity
-        self._token = activity.work()
-        self._release = activity.finish_on_collect(self, self._token)
+    def _claim(self, turn: Any) -> None:
+        # Handed to code that may run it on any thread: on the virtual clock, the clock stands
+        # still until it is called (or collected uncalled).
+        if turn.virtual and not turn.stopped:
+            turn.expect()
+            self._arrival = weakref.finalize(self, turn.unexpect)
+            self._turn = turn
 
     def __call__(self) -> None:
         """Run or resume the task (a no-op when done, already running, or waiting on a Future)."""
+        arrival = self._arrival
+        if arrival is not None:
+            self._arrival = None
+            arrival.detach()
+            with self._turn.arriving():
+                self._call()
+        else:
+            self._call()
+
+    def _call(self) -> None:
         if not self._pending() or self._executing or not self._task_lock.acquire(blocking=False):
             return
         try:
             if not self._pending():
                 return
             self._executing = True
-            activity, token = self._activity, self._token
-            with activity.running(token) if activity and token else nullcontext():
-                self._step()
+            self._step()
             self._executing = False
         finally:
             self._task_lock.release()
-        if not self._pending():
-            if self._release is not None:
-                self._release()
-        elif not self._idle_if_suspended():
+        if self._pending() and not self._suspended:
             self._handed = False  # it yielded without waiting on a Future: run it again
             self._poke()
 
@@ -253,30 +257,12 @@ class Task(Future[T]):
         self._handler = None
 
     def _suspend_on(self, future: Future[Any]) -> None:
-        with self._activity.lock if self._activity else nullcontext():
-            self._suspended = True
+        self._suspended = True
         future._add_resumer(self._resume)
 
-    def _idle_if_suspended(self) -> bool:
-        # Called once the step is over (the thread's own token is busy again): the task waits
-        # for its future, so it no longer holds virtual time still.  Atomic with _resume.
-        activity, token = self._activity, self._token
-        with activity.lock if activity else nullcontext():
-            if not self._suspended:
-                return False
-            if token is not None and activity is not None:
-                activity.idle(token)
-        if activity is not None:
-            activity.poke()
-        return True
-
     def _resume(self) -> None:
-        activity, token = self._activity, self._token
-        with activity.lock if activity else nullcontext():
-            if token is not None:
-                token.busy = True
-            self._suspended = False
-            self._handed = False
+        self._suspended = False
+        self._handed = False
         self._poke()
 
     def _poke(self) -> None:
@@ -296,5 +282,3 @@ class Task(Future[T]):
         if self._pending() and inspect.iscoroutine(self._handler):
             self._handler.close()
         super().cancel()
-        if self._release is not None:
-            self._release()

@@ -12,10 +12,10 @@ import functools
 from collections.abc import Callable
 from typing import Any
 
-from actors.compat.activity import Waiter
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
 from actors.compat.rclpy.exceptions import ROSInterruptException
 from actors.compat.rclpy.task import await_or_execute
+from actors.compat.turns import Waiter
 from actors.ros.timers import TimerInfo
 
 __all__ = ["Timer", "Rate", "TimerInfo"]
@@ -143,7 +143,7 @@ class Rate:
             raise ROSInterruptException()
         if self._is_destroyed:
             raise RuntimeError("Rate cannot sleep because it has been destroyed")
-        waiter = Waiter(self._session.activity)
+        waiter = self._session.waiter()
         with self._session.lock:
             start = self._ticks
             self._waiters.add(waiter)

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from typing import Any
 
-from actors.compat.activity import Waiter
 from actors.compat.dispatch import ScriptNode
 from actors.compat.rclpy.subscription import Subscription
 from actors.ros.node import Node as NativeNode
@@ -22,7 +21,7 @@ def wait_for_message(
     """
     session = node._rclpy.session
     context = node.context
-    waiter = Waiter(session.activity)
+    waiter = session.waiter()
     subscription = Subscription(node, msg_type, lambda _msg: None, None)
     subscription._notify = waiter.wake
     node._create(subscription, NativeNode.create_subscription, msg_type, topic, subscription.catcher, qos_profile)

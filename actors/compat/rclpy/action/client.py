@@ -21,10 +21,10 @@ from collections.abc import Callable, Coroutine
 from functools import partial
 from typing import TYPE_CHECKING, Any
 
-from actors.compat.activity import Waiter
 from actors.compat.dispatch import ScriptNode
 from actors.compat.rclpy.action.base import ActionWork, GoalHandle
 from actors.compat.rclpy.task import Future, await_or_execute
+from actors.compat.turns import Waiter
 from actors.ros.actions import ActionClient as NativeClient
 from actors.ros.actions import ClientGoalHandle as NativeGoal
 from actors.ros.node import Node as NativeNode
@@ -157,7 +157,7 @@ class ActionClient(ActionWork):
         return self._wait(self._cancel_goal_async(goal_handle))
 
     def _wait(self, future: Future[Any]) -> Any:
-        waiter = Waiter(self._session.activity)
+        waiter = self._session.waiter()
         future._add_resumer(waiter.wake)
         self._session.wait_until(lambda: not future._pending(), None, waiter)
         return future.result()
@@ -170,7 +170,7 @@ class ActionClient(ActionWork):
         future: Future[Any],
         convert: Callable[[Any], Any] | None = None,
     ) -> None:
-        task = asyncio.get_running_loop().create_task(call())
+        task = self._session.loop.create_task(call())
         self._calls.add(task)
         task.add_done_callback(partial(self._answered, future, convert))
 
@@ -192,7 +192,7 @@ class ActionClient(ActionWork):
         """Wait until a server runs (``timeout_sec`` seconds of runtime clock at most, None: no limit)
         or the context shuts down; whether one runs."""
         context = self._node.context
-        waiter = Waiter(self._session.activity)
+        waiter = self._session.waiter()
         context.add_waker(waiter)
         waiting = self._session.call(self._start_waiting, waiter)
         try:
@@ -202,7 +202,7 @@ class ActionClient(ActionWork):
         return self.server_is_ready()
 
     def _start_waiting(self, waiter: Waiter) -> asyncio.Task[bool]:
-        task = asyncio.get_running_loop().create_task(self._native.wait_for_server())
+        task = self._session.loop.create_task(self._native.wait_for_server())
         task.add_done_callback(lambda _: waiter.wake())
         return task
 
