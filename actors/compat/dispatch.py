@@ -209,8 +209,12 @@ class Dispatcher:
             actor._drive(entity)
 
     def publish(self, publisher: Any, msg: Any) -> None:
-        """``publisher.publish(msg)`` for a script (on the loop thread): its subscribers have it after."""
-        publisher.publish(msg)
+        """``publisher.publish(msg)`` for a script (with the turn held): its subscribers have it after."""
+        armed, self._armed = self._armed, True  # flushed below: no loop callback for what this makes due
+        try:
+            publisher.publish(msg)
+        finally:
+            self._armed = armed
         self.flush()
 
 

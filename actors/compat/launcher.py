@@ -124,7 +124,7 @@ def run_script(
         name=path.stem,
         graph=loaded,
         duration=duration,
-        on_duration=stop.interrupt,
+        on_duration=stop.end_of_duration,
         on_failure=lambda _error: stop.interrupt(),
         attach=[ControlEndpoint()],
     )
@@ -226,6 +226,17 @@ class _Stop:
         ident = self._main.ident
         assert ident is not None  # the main thread has started
         signal.pthread_kill(ident, signal.SIGINT)
+
+    def end_of_duration(self) -> None:
+        """On the loop thread, at the end of ``--duration``: stop the script as Ctrl-C would.  On
+        the virtual clock, in order: nothing else runs before the script has its KeyboardInterrupt."""
+        turn = self.turn
+        if turn is not None and turn.virtual and turn.mine():
+            self.requested = True
+            _interrupt_default_context()
+            if turn.interrupt_main(KeyboardInterrupt()):
+                return
+        self.interrupt()
 
     def _on_sigint(self, signum: int, frame: FrameType | None) -> None:
         # As rclpy's handler: the context stops (spins raise ExternalShutdownException), then the

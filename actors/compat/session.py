@@ -169,6 +169,7 @@ class Session:
         self._stopping = self.failure is None
         try:
             if self._done is not None and not self._done.done():
+                self.turn.close()  # script threads still waiting on the runtime end first
                 self.call(self._stop.set)
                 if isinstance(self.turn, VirtualTurn):
                     self.turn.depart()  # the loop needs the baton to stop, for good
@@ -233,7 +234,7 @@ class Session:
             task = self.loop.create_task(_as_coroutine(async_fn, *args))
             task.add_done_callback(lambda _: waiter.wake())
             try:
-                while not task.done() and not self.turn.stopped:
+                while not task.done() and not self.turn.over:
                     waiter.clear()
                     if task.done():
                         break
@@ -269,6 +270,8 @@ class Session:
         semaphore) is a wait on the runtime, woken in order by ``notify``; a
         thread it starts queues for the turn from ``start()`` (except a pool's
         worker), and joining one is a wait.  Other threads are left alone.
+        Such a wait that the end of the runtime cuts short raises SystemExit:
+        the run is over, and the thread ends with it.
         """
         turn = self.turn
         if not isinstance(turn, VirtualTurn):
@@ -281,6 +284,7 @@ class Session:
                 raise ValueError("sleep length must be non-negative")
             if turn.mine() and not turn.stopped:
                 self.sleep(seconds)
+                _end_if_over(turn)
             else:
                 real.sleep(seconds)
 
@@ -325,6 +329,8 @@ class Session:
             try:
                 self.wait_until(lambda: not marker.locked(), None if timeout is None else max(0.0, timeout), waiter)
                 notified = not marker.locked()
+                if not notified:
+                    _end_if_over(turn)
             finally:
                 del waiting[marker]
                 condition._acquire_restore(saved)  # type: ignore[attr-defined]
@@ -353,6 +359,9 @@ class Session:
         turn.arrive(waiter)
         try:
             run()
+        except SystemExit:
+            if not turn.over:  # the thread's own: as threading would, quietly
+                raise
         finally:
             current = threading.current_thread()
             current._actors_ended = True  # type: ignore[attr-defined]  # read by join
@@ -416,7 +425,7 @@ class Session:
                 while True:
                     waiter.clear()
                     result = done()
-                    if result or expired or turn.stopped:
+                    if result or expired or turn.over:
                         return result
                     turn.wait(waiter)
             finally:
@@ -429,6 +438,13 @@ class _Plain(threading.local):
 
 
 _plain = _Plain()
+
+
+def _end_if_over(turn: Turn) -> None:
+    # A script thread whose wait the end of the runtime cut short: the run is over, and so is the
+    # thread (SystemExit ends a thread quietly), so that nothing keeps the process alive.
+    if turn.over:
+        raise SystemExit(0)
 
 
 def _pool_worker(thread: threading.Thread) -> bool:

@@ -95,6 +95,7 @@ class Turn:
         self.holder: int | None = None  # the ident of the thread with the turn
         self._depth = 0  # sections of the holder's open (a thread woken by a wait holds one)
         self.stopped = False
+        self.closing = False  # the runtime is ending: waits return at once
         self._parked: set[Waiter] = set()
         self._after_stop = threading.RLock()  # mutual exclusion once the runtime has ended
         self.loop: asyncio.AbstractEventLoop | None = None
@@ -155,6 +156,15 @@ class Turn:
         if self._main_waiter is not None:
             _thread.start_new_thread(self._end_main_wait, ())  # the handler may hold _lock
 
+    def interrupt_main(self, error: BaseException) -> bool:
+        """From the holder of the turn: end the main thread's wait with ``error``, in order, as any
+        wake-up; False if the main thread does not wait on the runtime now."""
+        if self._main_waiter is None:
+            return False
+        self._signal = error
+        self._end_main_wait()
+        return True
+
     def _end_main_wait(self) -> None:
         waiter = self._main_waiter
         if waiter is not None:
@@ -183,7 +193,7 @@ class Turn:
 
     def _park(self, waiter: Waiter) -> bool:
         # With _lock held: park ``waiter``, or say it need not (woken already, or the end came).
-        if waiter.woken or self.stopped or (self._signal is not None and _get_ident() == self._main):
+        if waiter.woken or self.closing or self.stopped or (self._signal is not None and _get_ident() == self._main):
             waiter.woken = False
             return False
         waiter.parked = True
@@ -195,6 +205,19 @@ class Turn:
     def _unparked(self, waiter: Waiter) -> None:
         if self._main_waiter is waiter:
             self._main_waiter = None
+
+    @property
+    def over(self) -> bool:
+        """Whether waits no longer wait: the runtime is ending or has ended."""
+        return self.closing or self.stopped
+
+    def close(self) -> None:
+        """The runtime is about to end: every parked thread wakes, and no wait parks any more."""
+        with self._lock:
+            self.closing = True
+            parked = list(self._parked)
+        for waiter in parked:
+            self.wake(waiter)
 
     def stop(self) -> None:
         """The runtime has ended: release every parked thread; sections are a plain lock from now on."""
@@ -218,7 +241,7 @@ class WallTurn(Turn):
         self._mutex = threading.Lock()
         self._selecting = False  # the loop waits in select (and has let the turn go)
         self._poked = False
-        self._until = 0.0  # the loop's clock when its select ends by itself
+        self._until = 0.0  # the deadline of the timer that ends the loop's select
 
     def _take(self) -> None:
         self._mutex.acquire()
@@ -288,7 +311,9 @@ class WallTurn(Turn):
                 self._take()
             return events
         self._selecting, self._poked = True, False
-        self._until = loop.time() + timeout if timeout is not None else float("inf")
+        # Its select ends with the earliest timer (asyncio's timeout is derived from it), if any.
+        scheduled = loop._scheduled
+        self._until = scheduled[0]._when if scheduled and timeout is not None else float("inf")
         self.holder = None
         self._mutex.release()
         try:

@@ -96,7 +96,8 @@ def get_global_executor() -> Executor:
                 _global_executor.remove(executor)
             executor.shutdown()
 
-        executor.context.on_shutdown(reset)
+        executor.context.on_shutdown(reset)  # at once if it is shut down already (a signal came first)
+        return executor
     return _global_executor[0]
 
 

@@ -1,0 +1,43 @@
+"""On the virtual clock a run of rclpy programs is repeatable: the same output, byte for byte."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.test_compat_launcher import actors_run, script
+
+RUNS = 10
+
+PAIRS = {
+    "talker and listener": ("--duration", "3", "--with", script("listener.py"), script("talker.py")),
+    "action server and client": (
+        "--duration",
+        "30",
+        "--with",
+        script("fibonacci_action_server.py"),
+        script("fibonacci_action_client.py"),
+        "5",
+    ),
+    "service server and client": (
+        "--duration",
+        "10",
+        "--with",
+        script("add_two_ints_server.py"),
+        script("add_two_ints_client.py"),
+        "2",
+        "3",
+    ),
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("pair", list(PAIRS))
+def test_a_pair_of_programs_prints_the_same_lines_in_every_run(pair: str) -> None:
+    outputs = set()
+    for _ in range(RUNS):
+        done = actors_run("--clock", "virtual", *PAIRS[pair])
+        assert done.returncode == 0, done.stderr
+        outputs.add(done.stdout + done.stderr)
+    assert len(outputs) == 1, f"{len(outputs)} different outputs in {RUNS} runs"
+    (output,) = outputs
+    assert output.count("\n") >= 2  # both programs spoke

@@ -1,0 +1,90 @@
+"""Every way an rclpy script blocks ends on SIGINT and SIGTERM, and the run's bounds hold."""
+
+from __future__ import annotations
+
+import signal
+import subprocess
+import sys
+
+import pytest
+
+from tests.test_compat_launcher import BOUNDED_VIRTUAL, ROOT, actors_run, python_env, script
+
+FORMS = ["spin", "spin_once", "future", "call", "wait_for_service", "rate", "sleep", "input", "busy"]
+
+
+def _started(*args: str) -> subprocess.Popen[str]:
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "actors", "run", *args],
+        cwd=ROOT,
+        env=python_env(),
+        stdin=subprocess.PIPE,  # open and silent: input() blocks
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    assert proc.stdout is not None
+    assert proc.stdout.readline() == "ready\n"
+    return proc
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM], ids=["SIGINT", "SIGTERM"])
+@pytest.mark.parametrize("form", FORMS)
+def test_a_signal_ends_a_script_blocked_in_any_form(form: str, signum: int) -> None:
+    proc = _started(script("blocked.py"), form)
+    proc.send_signal(signum)
+    out, err = proc.communicate(timeout=20)  # it would block forever if the signal did not end it
+    assert proc.returncode == 0, err
+    assert "Traceback" not in err
+    assert "not stopped" not in out
+
+
+@pytest.mark.slow
+def test_timeout_ends_a_script_that_holds_virtual_time_in_a_busy_loop() -> None:
+    done = actors_run("--timeout", "1", *BOUNDED_VIRTUAL, script("blocked.py"), "busy", timeout=30)
+    assert done.returncode == 124
+    assert done.stdout == "ready\n"
+    assert done.stderr.splitlines() == ["[WARN] --timeout: 1 s of wall time are up: stopping the run"]
+
+
+@pytest.mark.slow
+def test_duration_ends_a_script_that_only_sleeps_or_waits_for_a_thread_it_started(tmp_path) -> None:
+    sleeper = tmp_path / "sleeper.py"
+    sleeper.write_text(
+        "import threading, time\n"
+        "import rclpy\n"
+        "rclpy.init()\n"
+        "def tick():\n"
+        "    while True:\n"
+        "        time.sleep(1.0)\n"
+        "        print('tick', flush=True)\n"
+        "worker = threading.Thread(target=tick)\n"
+        "worker.start()\n"
+        "worker.join()\n"
+    )
+    done = actors_run("--clock", "virtual", "--duration", "3.5", str(sleeper), timeout=30)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == "tick\n" * 3
+
+
+@pytest.mark.parametrize(
+    ("args", "error"),
+    [
+        (("--clock", "virtual"), "error: the virtual clock needs a duration, e.g. --duration 10"),
+        (("--timeout", "0"), "error: --timeout must be > 0 seconds, got 0.0"),
+        (("--duration", "nan"), "error: --duration must be > 0 seconds, got nan"),
+    ],
+)
+def test_runs_without_an_end_or_with_a_bad_bound_are_refused(args: tuple[str, ...], error: str) -> None:
+    done = actors_run(*args, script("talker.py"))
+    assert done.returncode == 2
+    assert done.stderr.startswith(error) and len(done.stderr.splitlines()) == 1
+
+
+def test_a_launcher_option_after_the_script_is_named_in_a_warning() -> None:
+    done = actors_run(*BOUNDED_VIRTUAL, script("blocked.py"), "nothing", "--clock", "wall")
+    assert done.returncode == 0, done.stderr
+    assert done.stderr.splitlines() == [
+        "warning: --clock comes after the script, so it went to the script; put actors run's options before the script"
+    ]
