@@ -643,3 +643,18 @@ def test_a_script_nodes_logger_service(session):
         assert not served.get_logger().info("hidden")  # below the level set remotely: not logged
     finally:
         served.get_logger().set_level(LoggingSeverity.UNSET)
+
+
+def test_publishing_with_a_destroyed_publisher_raises_as_rclpy_does(session):
+    # rclpy.shutdown() destroys every node of the context, and with them their publishers.
+    from actors.compat.rclpy.exceptions import InvalidHandle
+
+    node = rclpy.create_node("late")
+    kept, dropped = node.create_publisher(String, "late", 10), node.create_publisher(String, "later", 10)
+    kept.publish(String(data="fine"))
+    dropped.destroy()
+    with pytest.raises(InvalidHandle, match="destruction was requested"):
+        dropped.publish(String(data="x"))
+    node.destroy_node()
+    with pytest.raises(InvalidHandle, match="destruction was requested"):
+        kept.publish(String(data="x"))

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -88,3 +90,25 @@ def test_a_launcher_option_after_the_script_is_named_in_a_warning() -> None:
     assert done.stderr.splitlines() == [
         "warning: --clock comes after the script, so it went to the script; put actors run's options before the script"
     ]
+
+
+@pytest.mark.slow
+def test_on_the_wall_clock_a_script_blocked_in_select_keeps_the_graph_running(tmp_path) -> None:
+    teleop = tmp_path / f"teleop_{os.getpid()}.py"  # the runtime's name, which the CLI finds it by
+    shutil.copy(script("teleop_select.py"), teleop)
+    proc = _started("--graph", str(ROOT / "scripts" / "with_talker.toml"), str(teleop))
+    try:
+        echo = subprocess.run(
+            [sys.executable, "-m", "actors", "topic", "echo", "/chatter", "--once", "--graph", teleop.stem],
+            cwd=ROOT,
+            env=python_env(),
+            capture_output=True,
+            text=True,
+            timeout=30,
+        )
+        assert echo.returncode == 0, echo.stderr
+        assert echo.stdout.startswith("data: 'Hello World: ")  # the graph's talker talks meanwhile
+        _, err = proc.communicate("w\nq\n", timeout=20)
+    finally:
+        proc.kill()
+    assert proc.returncode == 0, err

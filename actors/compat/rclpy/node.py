@@ -414,6 +414,7 @@ class Node(NativeNode):
             if entity not in kind:
                 return False
             kind.remove(entity)
+            entity._destroyed = True
             self._rclpy.notify()
         native = getattr(entity, "_native", None)
         if destroy is not None and native is not None and not self._rclpy.destroyed:

@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from actors.compat.dispatch import NativeProxy, ScriptNode
+from actors.compat.rclpy.exceptions import InvalidHandle
 
 __all__ = ["Publisher"]
 
@@ -19,12 +20,17 @@ class Publisher(NativeProxy):
         self._native = native
         self._session = node._rclpy.session
 
+    _destroyed = False  # set when its node destroys it
+
     def publish(self, msg: Any) -> None:
-        """Deliver ``msg``; TypeError (or a validation error) if it does not fit the topic's type.
+        """Deliver ``msg``; TypeError (or a validation error) if it does not fit the topic's type,
+        InvalidHandle once the publisher or its node is destroyed (``rclpy.shutdown()`` does it).
 
         Returns once every subscription in the runtime has it, so the script may
         reuse or change ``msg`` afterwards.
         """
+        if self._destroyed or self._node._rclpy.destroyed:
+            raise InvalidHandle("cannot use Destroyable because destruction was requested")
         self._session.call(self._session.dispatcher.publish, self._native, msg)
 
     @property
