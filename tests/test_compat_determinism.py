@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import pytest
 
-from tests.test_compat_launcher import actors_run, script
+from tests.test_compat_launcher import ROOT, actors_run, python_env, script
 
 RUNS = 10
 
@@ -41,3 +44,26 @@ def test_a_pair_of_programs_prints_the_same_lines_in_every_run(pair: str) -> Non
     assert len(outputs) == 1, f"{len(outputs)} different outputs in {RUNS} runs"
     (output,) = outputs
     assert output.count("\n") >= 2  # both programs spoke
+
+
+@pytest.mark.slow
+def test_a_teleop_script_fed_from_a_pipe_drives_the_turtlebot_the_same_way_in_every_run() -> None:
+    keys = "w\nw\na\nw\nd\nw\ns\nx\n"
+    graph = str(ROOT / "graphs" / "turtlebot.toml")
+    command = [sys.executable, "-m", "actors", "run", "--clock", "virtual", "--duration", "60", "--graph", graph]
+    outputs = set()
+    for _ in range(RUNS):
+        done = subprocess.run(
+            [*command, script("teleop_pipe.py")],
+            cwd=ROOT,
+            env=python_env(),
+            input=keys,
+            capture_output=True,
+            text=True,
+            timeout=60,
+        )
+        assert done.returncode == 0, done.stderr
+        outputs.add(done.stdout)
+    assert len(outputs) == 1, f"{len(outputs)} different drives in {RUNS} runs"
+    (output,) = outputs
+    assert [line.split()[0] for line in output.splitlines()] == keys.split()  # a pose after every key
