@@ -292,7 +292,7 @@ class Session:
             if turn.mine() and not turn.stopped and not _pool_worker(thread) and not hasattr(thread, "_actors_end"):
                 waiter = turn.enlist(self.waiter())
                 end = thread._actors_end = self.waiter()  # type: ignore[attr-defined]  # see join below
-                thread.run = functools.partial(self._run_enlisted, waiter, end, thread.run)  # type: ignore[method-assign]
+                thread.run = functools.partial(self._run_enlisted, waiter, end, thread.run)  # type: ignore[method-assign]  # wrapped for this thread
             # start() waits for the new thread to say it runs, which it does without the turn.
             _plain.waits = True
             try:
@@ -313,18 +313,18 @@ class Session:
                 return
             real.join(thread, timeout)
 
-        def wait(condition: threading.Condition, timeout: float | None = None) -> bool:
+        def wait(condition: Any, timeout: float | None = None) -> bool:  # a Condition: its private parts too
             if not turn.mine() or turn.stopped or (timeout is not None and timeout <= 0) or _plain.waits:
                 return real.wait(condition, timeout)
-            if not condition._is_owned():  # type: ignore[attr-defined]  # Condition's own query
+            if not condition._is_owned():
                 raise RuntimeError("cannot wait on un-acquired lock")
             # As Condition.wait, with the turn's wait in place of a blocking acquire of the marker.
             marker = _thread.allocate_lock()
             marker.acquire()
-            condition._waiters.append(marker)  # type: ignore[attr-defined]  # Condition's own queue
+            condition._waiters.append(marker)
             waiting: dict[Any, Waiter] = condition.__dict__.setdefault("_actors_waiting", {})
             waiting[marker] = waiter = self.waiter()
-            saved = condition._release_save()  # type: ignore[attr-defined]
+            saved = condition._release_save()
             notified = False
             try:
                 self.wait_until(lambda: not marker.locked(), None if timeout is None else max(0.0, timeout), waiter)
@@ -333,10 +333,10 @@ class Session:
                     _end_if_over(turn)
             finally:
                 del waiting[marker]
-                condition._acquire_restore(saved)  # type: ignore[attr-defined]
+                condition._acquire_restore(saved)
                 if not notified:
                     with contextlib.suppress(ValueError):
-                        condition._waiters.remove(marker)  # type: ignore[attr-defined]
+                        condition._waiters.remove(marker)
             return notified
 
         def notify(condition: threading.Condition, n: int = 1) -> None:
@@ -377,7 +377,7 @@ class Session:
             waiter = turn.enlist(self.waiter())
             end = self.waiter()
             thread._actors_end = end  # type: ignore[attr-defined]  # as timekeeping's start
-            thread.run = functools.partial(self._run_enlisted, waiter, end, thread.run)  # type: ignore[method-assign]
+            thread.run = functools.partial(self._run_enlisted, waiter, end, thread.run)  # type: ignore[method-assign]  # wrapped for this thread
         thread.start()
         return thread
 
@@ -483,7 +483,8 @@ class _Threading:
 
     def install(self) -> None:
         time.sleep = self.sleep  # type: ignore[assignment]  # a patch, on purpose
-        threading.Thread.start = self.start  # type: ignore[method-assign]  # a patch, on purpose
-        threading.Thread.join = self.join  # type: ignore[method-assign]
-        threading.Condition.wait = self.wait  # type: ignore[method-assign]
-        threading.Condition.notify = self.notify  # type: ignore[method-assign]
+        # Patches of the standard library, on purpose (DESIGN.md lists them, and why).
+        setattr(threading.Thread, "start", self.start)  # noqa: B010  # mypy forbids assigning a method
+        setattr(threading.Thread, "join", self.join)  # noqa: B010
+        setattr(threading.Condition, "wait", self.wait)  # noqa: B010
+        setattr(threading.Condition, "notify", self.notify)  # noqa: B010
