@@ -153,8 +153,9 @@ class Turn:
         if not self.main_inside:
             raise outside or error
         self._signal = error
-        if self._main_waiter is not None:
-            _thread.start_new_thread(self._end_main_wait, ())  # the handler may hold _lock
+        # On a thread of its own: this handler may run inside the main thread's own _park, with
+        # _lock held and the waiter not yet recorded; the helper looks once _lock is free.
+        _thread.start_new_thread(self._end_main_wait, ())
 
     def interrupt_main(self, error: BaseException) -> bool:
         """From the holder of the turn: end the main thread's wait with ``error``, in order, as any
@@ -166,7 +167,8 @@ class Turn:
         return True
 
     def _end_main_wait(self) -> None:
-        waiter = self._main_waiter
+        with self._lock:
+            waiter = self._main_waiter
         if waiter is not None:
             self.wake(waiter)
 
