@@ -53,6 +53,8 @@ __all__ = ["Turn", "WallTurn", "VirtualTurn", "Waiter", "ScriptWallLoop", "Scrip
 #: Real seconds the baton may stay with one thread outside the runtime before a warning names it.
 HOLD_WARNING = 5.0
 
+_SIGNAL_LOOK = 0.05  # real seconds between the main thread's looks for a signal while it waits
+
 _ACTORS = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep  # the actors package
 _STDLIB = os.path.dirname(os.__file__) + os.sep
 _get_ident = threading.get_ident
@@ -204,6 +206,16 @@ class Turn:
             self._main_waiter = waiter
         return True
 
+    def _block(self, waiter: Waiter) -> None:
+        # Park on the waiter's semaphore.  The main thread looks up now and then: the kernel may
+        # deliver a process's signal to another thread, and Python runs the handler only when the
+        # main thread runs bytecode again, which a plain blocking acquire would never let it do.
+        if _get_ident() != self._main:
+            waiter._sem.acquire()
+            return
+        while not waiter._sem.acquire(timeout=_SIGNAL_LOOK):
+            pass
+
     def _unparked(self, waiter: Waiter) -> None:
         if self._main_waiter is waiter:
             self._main_waiter = None
@@ -294,7 +306,7 @@ class WallTurn(Turn):
         depth = self._depth
         if mine:
             self._give()
-        waiter._sem.acquire()
+        self._block(waiter)
         self._unparked(waiter)
         if mine and not self.stopped:
             self._mutex.acquire()
@@ -408,7 +420,7 @@ class VirtualTurn(Turn):
         if not parked:
             self._after_wait()
             return
-        waiter._sem.acquire()
+        self._block(waiter)
         self._unparked(waiter)
         if not self.stopped:
             self._received(depth)
