@@ -6,6 +6,7 @@ import time
 
 import rclpy
 from example_interfaces.srv import AddTwoInts
+from rclpy.exceptions import NotInitializedException
 from rclpy.executors import ExternalShutdownException
 from rclpy.task import Future
 
@@ -14,6 +15,19 @@ FORM = sys.argv[1]
 rclpy.init()
 node = rclpy.create_node("blocked")
 client = node.create_client(AddTwoInts, "nobody_serves_this")
+if FORM == "rate":
+    started = threading.Event()
+
+    def spin() -> None:
+        started.set()
+        try:
+            rclpy.spin(node)
+        except (ExternalShutdownException, NotInitializedException):  # the signal came first
+            pass
+
+    threading.Thread(target=spin, daemon=True).start()
+    started.wait()
+    rate = node.create_rate(0.01)
 print("ready", flush=True)
 if FORM == "spin":
     rclpy.spin(node)
@@ -28,15 +42,6 @@ elif FORM == "wait_for_service":
     while not client.wait_for_service(timeout_sec=1.0):
         pass
 elif FORM == "rate":
-
-    def spin() -> None:
-        try:
-            rclpy.spin(node)
-        except ExternalShutdownException:  # Ctrl-C shut the context down, as rclpy's handler does
-            pass
-
-    threading.Thread(target=spin, daemon=True).start()
-    rate = node.create_rate(0.01)
     rate.sleep()
 elif FORM == "sleep":
     time.sleep(100.0)
