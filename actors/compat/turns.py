@@ -39,6 +39,7 @@ import os
 import selectors
 import sys
 import threading
+from abc import ABC, abstractmethod
 from collections import deque
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -87,7 +88,7 @@ class Waiter:
         self._turn.wake(self)
 
 
-class Turn:
+class Turn(ABC):
     """What both turns share: reentrant sections, waits, signals, and the end of the runtime."""
 
     virtual = False
@@ -140,11 +141,13 @@ class Turn:
             if not self.main_inside and self._signal is not None:
                 self._raise_signal()
 
+    @abstractmethod
     def _take(self) -> None:
-        raise NotImplementedError
+        """Take the turn for a section (a thread that does not hold it)."""
 
+    @abstractmethod
     def _give(self) -> None:
-        raise NotImplementedError
+        """Hand the turn on at the end of the outermost section."""
 
     # -- signals ------------------------------------------------------------------
 
@@ -186,14 +189,15 @@ class Turn:
 
     # -- waits --------------------------------------------------------------------
 
+    @abstractmethod
     def wake(self, waiter: Waiter) -> None:
-        raise NotImplementedError
+        """Wake ``waiter``'s owner, or mark it woken if it is not parked yet."""
 
+    @abstractmethod
     def wait(self, waiter: Waiter) -> None:
         """Park the calling thread, which holds the turn, until ``waiter`` is woken; the turn is
         someone else's meanwhile.  At once if it was woken since :meth:`Waiter.clear`, or the
         runtime has ended.  A signal's exception (:meth:`signal`) comes out of it."""
-        raise NotImplementedError
 
     def _park(self, waiter: Waiter) -> bool:
         # With _lock held: park ``waiter``, or say it need not (woken already, or the end came).
@@ -243,8 +247,8 @@ class Turn:
                 waiter._sem.release()
         self._stopped()
 
-    def _stopped(self) -> None:
-        pass
+    def _stopped(self) -> None:  # a hook: only the wall turn has a lock to let go
+        return None
 
 
 class WallTurn(Turn):
