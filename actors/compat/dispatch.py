@@ -25,7 +25,7 @@ import asyncio
 import functools
 from collections import deque
 from collections.abc import Awaitable, Callable, Coroutine
-from typing import Any, Protocol
+from typing import Any, Protocol, TypeVar
 
 from actors.core._actor import Actor, Entity
 from actors.ros.actions import ActionCall, ActionClient, ActionServer
@@ -41,6 +41,7 @@ __all__ = [
     "SpinningExecutor",
 ]
 
+T = TypeVar("T")
 Handler = Callable[[], Coroutine[Any, Any, None]]
 
 
@@ -180,18 +181,21 @@ async def _run_entity(entity: Entity) -> None:
 
 
 class Dispatcher:
-    """Runs the catchers of a session's script nodes on the loop thread, soon after they are due.
+    """Runs the catchers of a session's script nodes with the turn held, soon after they are due.
 
-    Not inside ``publish()`` (a catcher must not run in the middle of the
-    publisher's call), but before a publish from a script returns:
-    :meth:`flush` then runs what it made due, so a script subscriber has the
-    message by the time the script's ``publish()`` returns.
+    Never inside the call that made them due (a catcher must not run in the
+    middle of a publisher's call).  What the loop makes due runs in a loop
+    callback.  What a script's call makes due runs when the call ends if some
+    thread is parked (it may be waiting for it), and otherwise at the next look
+    for work (:meth:`Session.wait_until` flushes first): a thread starts to wait
+    only after it has looked, so a loop of publishes costs one append each.
     """
 
-    def __init__(self, loop: asyncio.AbstractEventLoop) -> None:
+    def __init__(self, loop: asyncio.AbstractEventLoop, parked: Callable[[], bool]) -> None:
         self._loop = loop
+        self._parked = parked
         self._due: deque[tuple[ScriptActor, Entity]] = deque()
-        self._armed = False
+        self._armed = False  # no loop callback to ask for: one will flush, or a script's call settles
 
     def add(self, actor: ScriptActor, entity: Entity) -> None:
         """Run ``entity`` of ``actor`` at the next :meth:`flush` (one is scheduled)."""
@@ -208,14 +212,15 @@ class Dispatcher:
             actor, entity = due.popleft()
             actor._drive(entity)
 
-    def publish(self, publisher: Any, msg: Any) -> None:
-        """``publisher.publish(msg)`` for a script (with the turn held): its subscribers have it after."""
-        armed, self._armed = self._armed, True  # flushed below: no loop callback for what this makes due
+    def script_call(self, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
+        """``fn(*args, **kwargs)`` for a script's call (with the turn held): its result."""
+        armed, self._armed = self._armed, True
         try:
-            publisher.publish(msg)
+            return fn(*args, **kwargs)
         finally:
             self._armed = armed
-        self.flush()
+            if self._due and self._parked():
+                self.flush()
 
 
 class ScriptActor(Actor):

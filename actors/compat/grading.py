@@ -218,7 +218,7 @@ class ScriptRun:
         publisher = self._publishers.get(topic)
         if publisher is None:
             publisher = self._publishers[topic] = self._session.call(self._probe.create_publisher, type(msg), topic, 10)
-        self._session.call(self._session.dispatcher.publish, publisher, msg)
+        self._session.call(publisher.publish, msg)
 
     def call(self, service: str, request: Any, timeout: float = 10.0) -> Any:
         """Call ``service`` with ``request`` and return the response (``timeout`` simulated seconds at most).

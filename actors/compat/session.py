@@ -126,7 +126,7 @@ class Session:
     async def _serve(self, *, task_status: anyio.abc.TaskStatus[None]) -> None:
         self.loop = asyncio.get_running_loop()
         self._loop_thread = threading.current_thread()
-        self.dispatcher = Dispatcher(self.loop)
+        self.dispatcher = Dispatcher(self.loop, self.turn.parks)
         self._stop = anyio.Event()
         policy = self._graph[0].supervisor.policy() if self._graph else None
         async with Runtime(name=self.name, supervisor=policy, attach=self._attach) as rt:
@@ -207,6 +207,8 @@ class Session:
                 if _async_library is not None:
                     _async_library.set("asyncio")
             try:
+                if turn._depth == 1:  # the call's own section: what it makes due is settled as it ends
+                    return self.dispatcher.script_call(fn, *args, **kwargs)
                 return fn(*args, **kwargs)
             finally:
                 if outer is not self.loop:
@@ -422,8 +424,10 @@ class Session:
             if timeout is not None and not turn.stopped:
                 timer = self.loop.call_later(max(0.0, timeout), time_up)
             try:
+                flush = self.dispatcher.flush
                 while True:
                     waiter.clear()
+                    flush()
                     result = done()
                     if result or expired or turn.over:
                         return result

@@ -224,6 +224,10 @@ class Turn(ABC):
         if self._main_waiter is waiter:
             self._main_waiter = None
 
+    def parks(self) -> bool:
+        """Whether some thread is parked (with the turn held, no thread can start to)."""
+        return bool(self._parked)
+
     @property
     def over(self) -> bool:
         """Whether waits no longer wait: the runtime is ending or has ended."""

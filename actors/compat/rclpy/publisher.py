@@ -26,12 +26,13 @@ class Publisher(NativeProxy):
         """Deliver ``msg``; TypeError (or a validation error) if it does not fit the topic's type,
         InvalidHandle once the publisher or its node is destroyed (``rclpy.shutdown()`` does it).
 
-        Returns once every subscription in the runtime has it, so the script may
-        reuse or change ``msg`` afterwards.
+        Every subscription in the runtime has it when this returns (a script's
+        once its executor looks for work), so the script may reuse or change
+        ``msg`` afterwards.
         """
         if self._destroyed or self._node._rclpy.destroyed:
             raise InvalidHandle("cannot use Destroyable because destruction was requested")
-        self._session.call(self._session.dispatcher.publish, self._native, msg)
+        self._session.call(self._native.publish, msg)
 
     @property
     def topic_name(self) -> str:

@@ -94,7 +94,7 @@ class ServerGoalHandle(GoalHandle):
         """Publish ``feedback`` (the action's Feedback) for this goal; TypeError for anything else."""
         if not isinstance(feedback, self._server.action_type.Feedback):
             raise TypeError()
-        self._session.call(_publish_feedback, self._native, feedback, self._session.dispatcher)
+        self._session.call(self._native.publish_feedback, feedback)
 
     def succeed(self) -> None:
         """The goal succeeded; RCLError unless it is executing or canceling."""
@@ -116,11 +116,6 @@ class ServerGoalHandle(GoalHandle):
             self._session.call(change, *args)
         except ActionError as exc:
             raise RCLError(f"Failed to update goal state: {exc}") from None
-
-
-def _publish_feedback(native: NativeGoal, feedback: Any, dispatcher: Any) -> None:
-    native.publish_feedback(feedback)
-    dispatcher.flush()  # a script client's executor has it when publish_feedback returns
 
 
 def default_handle_accepted_callback(goal_handle: ServerGoalHandle) -> None:
