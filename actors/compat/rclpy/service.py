@@ -1,8 +1,8 @@
 """``rclpy.service``: a script node's service server.
 
-The native service's handler is the overlay's catcher, an ``async`` function
-that queues the request here, wakes the node's executor, and awaits the
-response that the script's callback returns on the executor's thread.
+The native service's handler is the overlay's catcher: it queues the request
+here, wakes the node's executor, and returns a future of the response, which
+the script's callback settles on the executor's thread.
 """
 
 from __future__ import annotations
@@ -33,13 +33,13 @@ class Service(WorkSource, NativeProxy):
         self._requests: deque[tuple[Any, Any, asyncio.Future[Any]]] = deque()
         self.catcher = self._catch
 
-    async def _catch(self, request: Any, response: Any) -> Any:
-        # On the runtime's thread: the native service's handler.
-        answer: asyncio.Future[Any] = asyncio.get_running_loop().create_future()
-        with self._session.lock:
-            self._requests.append((request, response, answer))
-            self._node._rclpy.notify()
-        return await answer
+    def _catch(self, request: Any, response: Any) -> asyncio.Future[Any]:
+        # The native service's handler, with the turn held (on a script thread when a script's
+        # executor flushes what its call made due): the native service awaits the future.
+        answer = self._session.loop.create_future()
+        self._requests.append((request, response, answer))
+        self._node._rclpy.notify()
+        return answer
 
     def _ready(self) -> bool:
         return bool(self._requests)
@@ -48,15 +48,15 @@ class Service(WorkSource, NativeProxy):
         if not self._requests:
             return None
         request, response, answer = self._requests.popleft()
-        callback, loop = self.callback, self._session.loop
+        callback, call = self.callback, self._session.call
 
         async def run() -> None:
             try:
                 result = await await_or_execute(callback, request, response)
             except Exception as exc:
-                loop.call_soon_threadsafe(_settle, answer, None, exc)
+                call(_settle, answer, None, exc)
                 raise
-            loop.call_soon_threadsafe(_settle, answer, result, None)
+            call(_settle, answer, result, None)
 
         return run
 
