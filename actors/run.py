@@ -31,6 +31,7 @@ from actors.errors import ActorsError, Escalation, GraphFileError
 from actors.launch.graph_file import GraphFile, TransportSection, load_graph
 from actors.launch.spawn import NodeStartError, one_line, spawn_graph
 from actors.ops.control import ControlEndpoint
+from actors.recording.options import add_attachment_options
 from actors.ros.log import LEVELS, configure_console
 from actors.ros.node import Node
 from actors.runtime import Attachment, Runtime
@@ -55,16 +56,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         choices=("zenoh", "none"),
         help="reach other processes over Zenoh (the [transport] section's settings, or the defaults), or not",
     )
-    parser.add_argument("--record", metavar="BAG", help="record topics into a ROS 2 bag: BAG.mcap, or a bag directory")
-    parser.add_argument("--topics", nargs="+", default=[], metavar="TOPIC", help="with --record: only these topics")
-    parser.add_argument(
-        "--foxglove",
-        nargs="?",
-        type=_port,
-        const=8765,
-        metavar="PORT",
-        help="serve every topic live to Foxglove on ws://127.0.0.1:PORT (default 8765; pip install 'actors[foxglove]')",
-    )
+    add_attachment_options(parser)
 
 
 def _seconds(text: str) -> float:
@@ -75,12 +67,6 @@ def _seconds(text: str) -> float:
     if not 0 <= value <= MAX_SECONDS:  # also refuses nan and inf, on which a virtual clock stands still
         raise argparse.ArgumentTypeError(f"duration must be from 0 to {MAX_SECONDS:g} seconds, got {text}")
     return value
-
-
-def _port(text: str) -> int:
-    if not text.isdigit() or int(text) > 65535:
-        raise argparse.ArgumentTypeError(f"not a port number (0 to 65535, 0: any free one): {text!r}")
-    return int(text)
 
 
 async def run_graph(

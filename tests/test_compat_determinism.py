@@ -4,9 +4,11 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
+from actors.recording.reader import Bag
 from tests.test_compat_launcher import ROOT, actors_run, python_env, script
 
 RUNS = 10
@@ -47,14 +49,17 @@ def test_a_pair_of_programs_prints_the_same_lines_in_every_run(pair: str) -> Non
 
 
 @pytest.mark.slow
-def test_a_teleop_script_fed_from_a_pipe_drives_the_turtlebot_the_same_way_in_every_run() -> None:
+def test_a_teleop_script_fed_from_a_pipe_drives_the_turtlebot_the_same_way_in_every_run(tmp_path: Path) -> None:
     keys = "w\nw\na\nw\nd\nw\ns\nx\n"
     graph = str(ROOT / "graphs" / "turtlebot.toml")
     command = [sys.executable, "-m", "actors", "run", "--clock", "virtual", "--duration", "60", "--graph", graph]
     outputs = set()
-    for _ in range(RUNS):
+    bags = set()
+    for run in range(RUNS):
+        bag = tmp_path / str(run) / "odom.mcap"  # one name: the bag's metadata names its file
+        bag.parent.mkdir()
         done = subprocess.run(
-            [*command, script("teleop_pipe.py")],
+            [*command, "--record", str(bag), "--topics", "/odom", "--", script("teleop_pipe.py")],
             cwd=ROOT,
             env=python_env(),
             input=keys,
@@ -64,6 +69,9 @@ def test_a_teleop_script_fed_from_a_pipe_drives_the_turtlebot_the_same_way_in_ev
         )
         assert done.returncode == 0, done.stderr
         outputs.add(done.stdout)
+        bags.add(bag.read_bytes())
     assert len(outputs) == 1, f"{len(outputs)} different drives in {RUNS} runs"
+    assert len(bags) == 1, f"{len(bags)} different /odom recordings in {RUNS} runs"
+    assert {topic.name: topic.count for topic in Bag(bag).topics} == {"/odom": 80}  # 20 Hz until "x" at 4 s
     (output,) = outputs
     assert [line.split()[0] for line in output.splitlines()] == keys.split()  # a pose after every key

@@ -76,6 +76,8 @@ def test_duration_ends_a_script_that_only_sleeps_or_waits_for_a_thread_it_starte
         (("--clock", "virtual"), "error: the virtual clock needs a duration, e.g. --duration 10"),
         (("--timeout", "0"), "error: --timeout must be > 0 seconds, got 0.0"),
         (("--duration", "nan"), "error: --duration must be > 0 seconds, got nan"),
+        (("--record", "/no/such/folder/run.mcap"), "error: cannot record to /no/such/folder/run.mcap"),
+        (("--topics", "/chatter", "--"), "error: --topics selects what --record records: give --record BAG too"),
     ],
 )
 def test_runs_without_an_end_or_with_a_bad_bound_are_refused(args: tuple[str, ...], error: str) -> None:

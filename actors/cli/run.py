@@ -5,6 +5,8 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
+from actors.recording.options import add_attachment_options
+
 __all__ = ["register"]
 
 
@@ -40,6 +42,7 @@ def register(groups: Any) -> None:
         help="another rclpy program to run beside it in the same runtime, e.g. its action "
         "server (quote it with its arguments: --with 'server.py ARGS'); repeatable",
     )
+    add_attachment_options(parser)
     parser.add_argument("script", help="the rclpy program, e.g. talker.py")
     parser.add_argument("args", nargs=argparse.REMAINDER, help="the program's arguments")
     parser.set_defaults(func=_run)
@@ -57,4 +60,7 @@ def _run(args: argparse.Namespace) -> int:
         log_level=args.log_level,
         partners=args.partners,
         timeout=args.timeout,
+        record=args.record,
+        topics=args.topics,
+        foxglove=args.foxglove,
     )

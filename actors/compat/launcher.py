@@ -55,6 +55,7 @@ from actors.launch.graph_file import load_graph
 from actors.launch.rosargs import parse
 from actors.messages.discovery import add_workspace
 from actors.ops.control import ControlEndpoint
+from actors.recording.options import attachments
 from actors.ros.log import INFO, LEVELS, configure_console
 
 __all__ = ["run_script"]
@@ -70,6 +71,9 @@ def run_script(
     log_level: str | None = None,
     partners: Sequence[str] = (),
     timeout: float | None = None,
+    record: str | None = None,
+    topics: Sequence[str] = (),
+    foxglove: int | None = None,
 ) -> int:
     """Run ``script`` with ``argv`` as its arguments; return the process's exit code.
 
@@ -78,7 +82,8 @@ def run_script(
     end, and info.  ``partners`` are more scripts (``"server.py ARGS..."``) run
     beside it in the same runtime (:mod:`actors.compat.partners`); one that
     fails makes the exit code 1.  ``timeout`` bounds the run in seconds of wall
-    time (exit code 124).  Call it on the main thread (it handles SIGINT and
+    time (exit code 124).  ``record``, ``topics`` and ``foxglove`` attach a
+    recorder and a live view, as ``python -m actors.run`` does.  Call it on the main thread (it handles SIGINT and
     SIGTERM).
     """
     path = Path(script)
@@ -116,6 +121,11 @@ def run_script(
             file=sys.stderr,
         )
         return 2
+    try:
+        attach = attachments(record=record, topics=topics, foxglove=foxglove)
+    except (ActorsError, ImportError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     level = log_level or (settings.log_level if settings else None)
     configure_console(LEVELS[level] if level else INFO, stream=sys.stderr)
     stop = _Stop()
@@ -126,7 +136,7 @@ def run_script(
         duration=duration,
         on_duration=stop.end_of_duration,
         on_failure=lambda _error: stop.interrupt(),
-        attach=[ControlEndpoint()],
+        attach=[ControlEndpoint(), *attach],
     )
     stop.turn = session.turn
     try:
@@ -172,7 +182,17 @@ _TIMED_OUT = 124  # as timeout(1)
 _HARD_STOP = 1.0  # wall seconds a timed-out script has to end once interrupted
 
 # actors run's own options: written after the script, they are the script's arguments.
-_OPTIONS = ("--clock", "--duration", "--graph", "--log-level", "--with", "--timeout")
+_OPTIONS = (
+    "--clock",
+    "--duration",
+    "--graph",
+    "--log-level",
+    "--with",
+    "--timeout",
+    "--record",
+    "--topics",
+    "--foxglove",
+)
 
 
 def _warn_options_after(argv: Sequence[str]) -> None:

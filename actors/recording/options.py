@@ -2,12 +2,33 @@
 
 from __future__ import annotations
 
+import argparse
 from collections.abc import Sequence
 from typing import Any
 
 from actors.errors import BagError
 
-__all__ = ["attachments"]
+__all__ = ["add_attachment_options", "attachments"]
+
+
+def add_attachment_options(parser: argparse.ArgumentParser) -> None:
+    """``--record BAG``, ``--topics TOPIC...`` and ``--foxglove [PORT]``, for :func:`attachments`."""
+    parser.add_argument("--record", metavar="BAG", help="record topics into a ROS 2 bag: BAG.mcap, or a bag directory")
+    parser.add_argument("--topics", nargs="+", default=[], metavar="TOPIC", help="with --record: only these topics")
+    parser.add_argument(
+        "--foxglove",
+        nargs="?",
+        type=_port,
+        const=8765,
+        metavar="PORT",
+        help="serve every topic live to Foxglove on ws://127.0.0.1:PORT (default 8765; pip install 'actors[foxglove]')",
+    )
+
+
+def _port(text: str) -> int:
+    if not text.isdigit() or int(text) > 65535:
+        raise argparse.ArgumentTypeError(f"not a port number (0 to 65535, 0: any free one): {text!r}")
+    return int(text)
 
 
 def attachments(*, record: str | None = None, topics: Sequence[str] = (), foxglove: int | None = None) -> list[Any]:
