@@ -269,3 +269,79 @@ async def test_stopping_a_node_inside_an_async_callback_unwinds_it_before_the_ho
         await rt.stop("busy")
         assert events == ["work started", "work unwound", "on_shutdown"]
         assert rt.clock.monotonic() == 2.0
+
+
+class CrashOnStart(Node):
+    """Crashes as soon as it starts, every instance."""
+
+    instances = 0
+
+    def __init__(self) -> None:
+        # Without parameter services a restart costs a third as much: the test stays short.
+        super().__init__("crash_on_start", start_parameter_services=False)
+        type(self).instances += 1
+
+    def on_start(self) -> None:
+        raise RuntimeError("start")
+
+
+async def test_a_hundred_thousand_restarts_under_a_huge_intensity_do_not_overflow(caplog):
+    # The n-th restart's backoff was backoff * 2**(n-1), even for backoff 0: past the 1,024th
+    # restart within the period the power no longer fits a float and the supervisor died.
+    caplog.set_level(logging.CRITICAL, logger="actors")  # a traceback per crash is not what is measured
+    CrashOnStart.instances = 0
+    policy = SupervisorPolicy(intensity=1_000_000, period=5.0, backoff=0.0)
+    async with Runtime(supervisor=policy) as rt:
+        rt.spawn(CrashOnStart)
+        while CrashOnStart.instances <= 100_000:
+            await anyio.lowlevel.checkpoint()
+        assert rt.clock.monotonic() < 5.0  # every restart within one period
+
+
+@pytest.mark.parametrize(
+    ("restarts", "expected"),
+    [(1, 0.1), (2, 0.2), (3, 0.4), (4, 0.5), (1025, 0.5), (100_000, 0.5), (10**18, 0.5)],
+)
+def test_the_backoff_doubles_up_to_its_cap_whatever_the_count(restarts, expected):
+    policy = SupervisorPolicy(intensity=1_000_000, period=5.0, backoff=0.1, max_backoff=0.5)
+    assert policy.delay(restarts) == pytest.approx(expected)
+
+
+def test_a_zero_backoff_or_cap_never_waits():
+    assert SupervisorPolicy(backoff=0.0).delay(100_000) == 0.0
+    assert SupervisorPolicy(backoff=1e-300, max_backoff=0.0).delay(100_000) == 0.0
+    assert SupervisorPolicy(backoff=1e-300, max_backoff=1e300).delay(100_000) == pytest.approx(1e300)
+
+
+class FailsToRestart(Node):
+    """Starts once, then its constructor raises on every restart until ``failures`` is spent."""
+
+    instances = 0
+    failures = 0
+
+    def __init__(self) -> None:
+        if type(self).instances and type(self).failures:
+            type(self).failures -= 1
+            raise RuntimeError("cannot start")
+        type(self).instances += 1
+        super().__init__("fails_to_restart")
+        self.create_subscription(Int64, "crash", self.crash, 10)
+
+    def crash(self, msg: Int64) -> None:
+        raise RuntimeError("crash")
+
+
+async def test_a_constructor_failing_thousands_of_times_in_a_row_is_retried_without_nesting(caplog):
+    caplog.set_level(logging.CRITICAL, logger="actors")
+    FailsToRestart.instances, FailsToRestart.failures = 0, 5_000
+    policy = SupervisorPolicy(intensity=1_000_000, period=1e6, backoff=0.0)
+    async with Runtime(supervisor=policy) as rt:
+        rt.spawn(FailsToRestart)
+        trigger = rt.spawn(Trigger)
+        trigger.pub = trigger.create_publisher(Int64, "/crash", 10)
+        await anyio.sleep(0.1)
+        trigger.pub.publish(Int64(data=1))
+        while FailsToRestart.instances < 2:
+            await anyio.sleep(0.1)
+        assert FailsToRestart.failures == 0
+        assert [n.name for n in rt.graph.nodes()] == ["/fails_to_restart", "/trigger"]

@@ -12,7 +12,7 @@ with the traceback, as a dead letter, and the supervisor decides what to do:
   supervisor gives up: it stops every child and the runtime raises
   :class:`~actors.errors.Escalation`;
 - backoff: the n-th restart within the period waits ``backoff * 2**(n-1)``
-  seconds (at most ``max_backoff``) on the runtime clock.
+  seconds (at most ``max_backoff``) on the runtime clock, whatever n is.
 
 A restarted node is a new instance.  The crashed instance's subscriptions stay
 attached to their topics while it is down, and the new instance adopts their
@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import asyncio
 import inspect
+import math
 from collections import deque
 from collections.abc import Coroutine, Mapping
 from enum import StrEnum
@@ -82,6 +83,19 @@ class SupervisorPolicy(msgspec.Struct, frozen=True, kw_only=True):
             raise ValueError(f"period must be > 0 seconds, got {self.period}")
         if self.backoff < 0 or self.max_backoff < 0:
             raise ValueError("backoff and max_backoff must be >= 0 seconds")
+
+    def delay(self, restarts: int) -> float:
+        """The wait before the ``restarts``-th restart within the period, in seconds.
+
+        ``backoff`` doubled per earlier restart, at most ``max_backoff``.  The
+        exponent is capped before the power is taken: an intensity of a million
+        allows ``2**n`` far beyond what a float holds.
+        """
+        if self.backoff <= 0 or self.max_backoff <= 0 or restarts <= 1:
+            return min(self.backoff, self.max_backoff)
+        # Past the doubling that reaches max_backoff, more doublings change nothing.
+        doublings = min(restarts - 1, max(0, math.ceil(math.log2(self.max_backoff) - math.log2(self.backoff))))
+        return min(math.ldexp(self.backoff, doublings), self.max_backoff)
 
 
 class Child:
@@ -300,13 +314,21 @@ class Supervisor:
         core.logger.error(text, exc_info=cause)
 
     async def _restart(self, group: list[Child], crashed: Child | None) -> None:
+        # A loop, not recursion: under a huge intensity a constructor that keeps
+        # raising would otherwise nest one frame per attempt.
+        failed = await self._restart_group(group, crashed)
+        while failed is not None:
+            failed = await self._restart_group([failed], crashed=failed)
+
+    async def _restart_group(self, group: list[Child], crashed: Child | None) -> Child | None:
+        """Restart ``group``; returns the child whose constructor raised, to be restarted again."""
         now = self.runtime.clock.monotonic()
         times = self._restart_times
         while times and times[0] <= now - self.policy.period:
             times.popleft()
         if crashed is not None and len(times) >= self.policy.intensity:
             await self._escalate(crashed)
-            return
+            return None
         times.append(now)
         for child in reversed(group):
             if child is not crashed and child.core is not None and not child.core.destroyed:
@@ -315,7 +337,7 @@ class Supervisor:
             if child.core is not None and not child.core.destroyed:
                 child.give_back(child.core.orphan())
             child.state = "restarting"
-        delay = min(self.policy.backoff * 2 ** (len(times) - 1), self.policy.max_backoff)
+        delay = self.policy.delay(len(times))
         if delay > 0:
             await anyio.sleep(delay)
         for child in group:
@@ -332,8 +354,8 @@ class Supervisor:
                 child.last_exception = exc
                 self.runtime.logger.error(f"restarting {child.cls.__name__} failed: {exc!r}", exc_info=exc)
             # Retried outside the handler, so that the next failure is not chained to this one.
-            await self._restart([child], crashed=child)
-            return
+            return child
+        return None
 
     async def _escalate(self, crashed: Child) -> None:
         policy = self.policy
