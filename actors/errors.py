@@ -31,6 +31,12 @@
     ├── ControlError                 the command line cannot reach or use a running graph
     ├── TransportError               a transport cannot start or is misconfigured (names the setting)
     ├── BagError                     a bag (MCAP) cannot be read or written (names file and byte)
+    ├── TransformException           a tf2 lookup failed (tf2's names and messages)
+    │   ├── LookupException              a frame nobody has published
+    │   ├── ConnectivityException        the frames are in two unconnected trees
+    │   ├── ExtrapolationException       a time outside a frame's data
+    │   ├── InvalidArgumentException     an empty frame id, or one starting with '/'
+    │   └── TimeoutException             a wait for a transform ran out
     ├── VirtualTimeDeadlock          virtual time has nothing left to wait for
     └── Escalation                   the supervisor gave up: too many restarts
 
@@ -77,6 +83,12 @@ __all__ = [
     "ControlError",
     "TransportError",
     "BagError",
+    "TransformException",
+    "LookupException",
+    "ConnectivityException",
+    "ExtrapolationException",
+    "InvalidArgumentException",
+    "TimeoutException",
     "VirtualTimeDeadlock",
     "Escalation",
 ]
@@ -231,6 +243,30 @@ class TransportError(ActorsError):
 
 class BagError(ActorsError):
     """A bag (MCAP file) cannot be read or written; the message names the file and byte offset."""
+
+
+class TransformException(ActorsError):
+    """A tf2 lookup failed; the subclasses carry tf2's (and tf2_ros's) names."""
+
+
+class LookupException(TransformException):
+    """A frame that no transform has named."""
+
+
+class ConnectivityException(TransformException):
+    """The two frames are in trees that no transform joins."""
+
+
+class ExtrapolationException(TransformException):
+    """A frame on the way has no data at the time asked (into the future, the past, or at all)."""
+
+
+class InvalidArgumentException(TransformException):
+    """A frame id that tf2 refuses: empty, or starting with '/'."""
+
+
+class TimeoutException(TransformException):
+    """A wait for a transform ran out."""
 
 
 class VirtualTimeDeadlock(ActorsError):

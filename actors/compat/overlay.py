@@ -1,7 +1,8 @@
 """The import overlay: ``import rclpy`` and ``from std_msgs.msg import String`` resolve to actors.
 
 While installed, a finder first on ``sys.meta_path`` answers for ``rclpy``,
-``rclpy.<module>`` (the modules of :mod:`actors.compat.rclpy`) and every shipped
+``rclpy.<module>`` (the modules of :mod:`actors.compat.rclpy`), ``tf2_ros``,
+``tf2_geometry_msgs`` and ``tf_transformations`` (tf2's Python side), and every shipped
 interface package (``std_msgs``, ``std_msgs.msg``, ``example_interfaces.srv``...,
 the modules of ``interfaces.<pkg>``).  The names are aliases: ``rclpy.node`` *is*
 ``actors.compat.rclpy.node``, so ``std_msgs.msg.String is
@@ -28,12 +29,20 @@ from actors.messages.discovery import discovered
 
 __all__ = ["install", "uninstall", "installed", "overlaid", "OverlayFinder"]
 
-_RCLPY = "actors.compat.rclpy"
 _INTERFACES = "interfaces"
+# The Python packages of ROS that the overlay provides, by the name programs import them as.
+_PROVIDED = {
+    "rclpy": "actors.compat.rclpy",
+    "tf2_ros": "actors.compat.tf2_ros",
+    "tf2_geometry_msgs": "actors.compat.tf2_geometry_msgs",
+    "tf_transformations": "actors.compat.tf_transformations",
+}
 
 
 class OverlayFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
     """Maps ``rclpy[.x]`` to ``actors.compat.rclpy[.x]`` and ``<pkg>[.x]`` to ``interfaces.<pkg>[.x]``.
+
+    ``tf2_ros``, ``tf2_geometry_msgs`` and ``tf_transformations`` are provided too (``actors.compat``'s).
 
     ``<pkg>`` is a shipped interface package or one found in a workspace or a
     ROS install (:mod:`actors.messages.discovery`).
@@ -45,8 +54,8 @@ class OverlayFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
     def target(self, fullname: str) -> str | None:
         """The actors module that ``fullname`` stands for, or None if the overlay leaves it alone."""
         top, _, rest = fullname.partition(".")
-        if top == "rclpy":
-            return _RCLPY + (f".{rest}" if rest else "")
+        if top in _PROVIDED:
+            return _PROVIDED[top] + (f".{rest}" if rest else "")
         if top in self.packages or (top.isidentifier() and top in discovered()):
             return f"{_INTERFACES}.{fullname}"
         return None
@@ -67,7 +76,7 @@ class OverlayFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
                 raise
             found = None
         if found is None:
-            if fullname.startswith("rclpy."):
+            if fullname.partition(".")[0] in _PROVIDED:
                 raise ModuleNotFoundError(
                     f"No module named {fullname!r}: actors' rclpy overlay does not provide it",
                     name=fullname,

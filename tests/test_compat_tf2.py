@@ -1,0 +1,135 @@
+"""tf2_ros, tf2_geometry_msgs and tf_transformations under the overlay; the tf2 tutorials' programs with turtlesim."""
+
+from __future__ import annotations
+
+import math
+import re
+import subprocess
+import sys
+
+import pytest
+from conftest import ROOT, python_env
+
+from actors.compat import overlaid
+from interfaces.geometry_msgs.msg import PointStamped, PoseStamped, TransformStamped, Vector3Stamped
+
+SCRIPTS = ROOT / "tests" / "rclpy_scripts"
+GRAPH = str(ROOT / "graphs" / "turtlesim.toml")
+
+
+def test_the_overlay_provides_tf2s_python_modules():
+    with overlaid():
+        import tf2_geometry_msgs
+        import tf2_ros
+        import tf_transformations
+        from tf2_ros.buffer import Buffer
+        from tf2_ros.transform_listener import TransformListener
+
+        assert tf2_ros.Buffer is Buffer and tf2_ros.TransformListener is TransformListener
+        assert issubclass(tf2_ros.ExtrapolationException, tf2_ros.TransformException)
+        assert tf2_geometry_msgs.do_transform_point is not None
+        q = tf_transformations.quaternion_from_euler(0.1, -0.2, 0.3)
+        assert tf_transformations.euler_from_quaternion(q) == pytest.approx((0.1, -0.2, 0.3))
+        assert list(tf_transformations.quaternion_from_euler(0, 0, math.pi / 2)) == pytest.approx(
+            [0, 0, math.sqrt(0.5), math.sqrt(0.5)]
+        )
+        with pytest.raises(ModuleNotFoundError, match="overlay does not provide it"):
+            import tf2_ros.no_such_module
+        with pytest.raises(ValueError, match="sxyz"):
+            tf_transformations.quaternion_from_euler(0, 0, 0, axes="rzyx")
+
+
+def test_buffer_transform_moves_points_vectors_and_poses_into_the_target_frame():
+    with overlaid():
+        import tf2_geometry_msgs  # noqa: F401  (registers the types, as in ROS)
+        from tf2_ros import Buffer
+
+        buffer = Buffer()
+        t = TransformStamped()
+        t.header.frame_id, t.child_frame_id = "world", "turtle1"
+        t.transform.translation.x = 2.0
+        t.transform.rotation.z, t.transform.rotation.w = math.sin(math.pi / 4), math.cos(math.pi / 4)  # 90° left
+        buffer.set_transform_static(t, "test")
+        point = PointStamped()
+        point.header.frame_id, point.point.x = "turtle1", 1.0
+        moved = buffer.transform(point, "world")
+        assert (moved.header.frame_id, moved.point.x, moved.point.y) == (
+            "world",
+            pytest.approx(2.0),
+            pytest.approx(1.0),
+        )
+        vector = Vector3Stamped()
+        vector.header.frame_id, vector.vector.x = "turtle1", 1.0
+        turned = buffer.transform(vector, "world").vector
+        assert (turned.x, turned.y) == (pytest.approx(0.0), pytest.approx(1.0))  # no translation for directions
+        pose = PoseStamped()
+        pose.header.frame_id, pose.pose.orientation.w = "turtle1", 1.0
+        placed = buffer.transform(pose, "world").pose
+        assert (placed.position.x, placed.orientation.z) == (pytest.approx(2.0), pytest.approx(math.sqrt(0.5)))
+
+
+def follow(*args: str, partners: tuple[str, ...] = (), duration: float = 16) -> subprocess.CompletedProcess[str]:
+    """The tf2 demo: turtlesim, broadcasters for both turtles, a leader driving turtle1, and the listener."""
+    command = [sys.executable, "-m", "actors", "run", "--clock", "virtual", "--duration", str(duration)]
+    command += ["--graph", GRAPH]
+    for name in ("turtle1", "turtle2"):
+        command += [
+            "--with",
+            f"{SCRIPTS / 'tf2_turtle_broadcaster.py'} --ros-args -p turtlename:={name} -r __node:=b_{name}",
+        ]
+    command += ["--with", f"{SCRIPTS / 'turtle_leader.py'} 15"]
+    for partner in partners:
+        command += ["--with", partner]
+    command += [str(SCRIPTS / "tf2_turtle_listener.py"), *args]
+    return subprocess.run(command, cwd=ROOT, env=python_env(), capture_output=True, text=True, timeout=120)
+
+
+def where(done: subprocess.CompletedProcess[str]) -> dict[str, tuple[float, float]]:
+    words = re.search(r"^turtle1 .*$", done.stdout, re.M)
+    assert words, done.stdout + done.stderr
+    parts = words.group(0).split()
+    return {parts[0]: (float(parts[1]), float(parts[2])), parts[3]: (float(parts[4]), float(parts[5]))}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("mode", ["latest", "now"])
+def test_the_second_turtle_follows_the_first(mode):
+    done = follow(mode)
+    assert done.returncode == 0, done.stderr
+    turtles = where(done)
+    assert math.dist(turtles["turtle1"], turtles["turtle2"]) < 2.5  # it set off from 3.8 m away and kept up
+    assert "Successfully spawned turtle2" in done.stderr
+    assert "extrapolation" not in done.stderr
+
+
+@pytest.mark.slow
+def test_a_lookup_at_now_without_waiting_fails_into_the_future_in_tf2s_words():
+    done = follow("now-nowait", duration=6)
+    assert done.returncode == 0, done.stderr
+    assert re.search(
+        r"Could not transform turtle2 to turtle1: Lookup would require extrapolation into the future\.  "
+        r"Requested time 5\.000000 but the latest data is at time 4\.99\d000, when looking up transform "
+        r"from frame \[turtle1\] to frame \[turtle2\]",
+        done.stderr,
+    ), done.stderr
+
+
+@pytest.mark.slow
+def test_time_travel_and_an_added_frame():
+    done = follow("travel")
+    assert done.returncode == 0, done.stderr
+    assert "not yet five seconds" in done.stderr and "extrapolation" not in done.stderr
+    turtles = where(done)
+    assert math.dist(turtles["turtle2"], (4.0, 2.0)) > 1.0  # it moved, chasing where turtle1 was
+    carrot = follow("--ros-args", "-p", "target_frame:=carrot1", partners=(str(SCRIPTS / "tf2_carrot_broadcaster.py"),))
+    assert carrot.returncode == 0, carrot.stderr
+    turtles = where(carrot)
+    assert 1.0 < math.dist(turtles["turtle1"], turtles["turtle2"]) < 3.0  # beside turtle1, not on it
+
+
+@pytest.mark.slow
+def test_a_static_frame_is_reached():
+    goal = f"{SCRIPTS / 'tf2_static_broadcaster.py'} goal 8 8 0 0 0 0"
+    done = follow("--ros-args", "-p", "target_frame:=goal", partners=(goal,))
+    assert done.returncode == 0, done.stderr
+    assert math.dist(where(done)["turtle2"], (8.0, 8.0)) < 0.3

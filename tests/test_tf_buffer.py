@@ -1,0 +1,228 @@
+"""The tf2 buffer core: interpolation against an independent numpy computation, tf2's rules and its wording."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from actors.errors import (
+    ConnectivityException,
+    ExtrapolationException,
+    InvalidArgumentException,
+    LookupException,
+)
+from actors.ros.tf_buffer import BufferCore
+from actors.ros.time import Duration, Time
+from interfaces.builtin_interfaces.msg import Time as TimeMsg
+from interfaces.geometry_msgs.msg import TransformStamped
+
+NS = 1_000_000_000
+
+
+def transform(parent: str, child: str, t: float, xyz=(0.0, 0.0, 0.0), q=(0.0, 0.0, 0.0, 1.0)) -> TransformStamped:
+    msg = TransformStamped()
+    msg.header.frame_id, msg.child_frame_id = parent, child
+    ns = round(t * NS)
+    msg.header.stamp = TimeMsg(sec=ns // NS, nanosec=ns % NS)
+    tr, rot = msg.transform.translation, msg.transform.rotation
+    tr.x, tr.y, tr.z = xyz
+    rot.x, rot.y, rot.z, rot.w = q
+    return msg
+
+
+def yaw(angle: float) -> tuple[float, float, float, float]:
+    return (0.0, 0.0, math.sin(angle / 2), math.cos(angle / 2))
+
+
+# -- an independent model: numpy matrices, slerp through the exponential map -------------------
+
+
+def np_matrix(q: np.ndarray) -> np.ndarray:
+    x, y, z, w = q / np.linalg.norm(q)
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+        ]
+    )
+
+
+def np_multiply(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return np.array(
+        [
+            aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx,
+            aw * bz + ax * by - ay * bx + az * bw,
+            aw * bw - ax * bx - ay * by - az * bz,
+        ]
+    )
+
+
+def np_slerp(q0: np.ndarray, q1: np.ndarray, t: float) -> np.ndarray:
+    """q0 · (q0⁻¹ q1)^t, the power taken through axis and angle, on the shorter arc."""
+    if np.dot(q0, q1) < 0:
+        q1 = -q1
+    relative = np_multiply(q0 * np.array([-1, -1, -1, 1]), q1)
+    half = math.acos(max(-1.0, min(1.0, relative[3])))
+    if half < 1e-12:
+        return q0
+    axis = relative[:3] / math.sin(half)
+    return np_multiply(q0, np.array([*(axis * math.sin(half * t)), math.cos(half * t)]))
+
+
+def homogeneous(translation: np.ndarray, q: np.ndarray) -> np.ndarray:
+    m = np.eye(4)
+    m[:3, :3] = np_matrix(q)
+    m[:3, 3] = translation
+    return m
+
+
+unit = (
+    st.tuples(*[st.floats(-1, 1)] * 4)
+    .filter(lambda q: sum(v * v for v in q) > 0.1)
+    .map(lambda q: tuple(v / math.sqrt(sum(c * c for c in q)) for v in q))
+)
+vector = st.tuples(*[st.floats(-5, 5)] * 3)
+
+
+@st.composite
+def trees(draw):
+    """A random tree of frames f0 (root) .. fn, each child with two stamped transforms around [1 s, 2 s]."""
+    n = draw(st.integers(2, 6))
+    frames = []
+    for i in range(1, n + 1):
+        parent = draw(st.integers(0, i - 1))
+        t0, t1 = draw(st.floats(0.5, 1.0)), draw(st.floats(2.0, 2.5))
+        frames.append((f"f{parent}", f"f{i}", (t0, draw(vector), draw(unit)), (t1, draw(vector), draw(unit))))
+    pair = draw(st.tuples(st.integers(0, n), st.integers(0, n)))
+    return frames, f"f{pair[0]}", f"f{pair[1]}", draw(st.floats(1.0, 2.0))
+
+
+@settings(max_examples=60, deadline=None)
+@given(trees())
+def test_interpolated_lookups_equal_an_independent_computation(tree):
+    frames, target, source, t = tree
+    buffer = BufferCore()
+    parents = {}
+    for parent, child, first, second in frames:
+        parents[child] = (parent, first, second)
+        for stamp, xyz, q in (first, second):
+            assert buffer.set_transform(transform(parent, child, stamp, xyz, q), "test")
+    t_ns = round(t * NS)
+
+    def to_root(frame: str) -> np.ndarray:
+        m = np.eye(4)
+        while frame in parents:
+            parent, (s0, v0, q0), (s1, v1, q1) = parents[frame]
+            n0, n1 = round(s0 * NS), round(s1 * NS)
+            ratio = (t_ns - n0) / (n1 - n0)
+            translation = np.array(v0) + (np.array(v1) - np.array(v0)) * ratio
+            m = homogeneous(translation, np_slerp(np.array(q0), np.array(q1), ratio)) @ m
+            frame = parent
+        return m
+
+    expected = np.linalg.inv(to_root(target)) @ to_root(source)
+    found = buffer.lookup_transform_core(target, source, Time(nanoseconds=t_ns))
+    tr, rot = found.transform.translation, found.transform.rotation
+    got = homogeneous(np.array([tr.x, tr.y, tr.z]), np.array([rot.x, rot.y, rot.z, rot.w]))
+    assert np.allclose(got, expected, rtol=0, atol=1e-9)
+    assert (found.header.frame_id, found.child_frame_id) == (target, source)
+    assert found.header.stamp.sec * NS + found.header.stamp.nanosec == t_ns
+
+
+def turtle_world() -> BufferCore:
+    buffer = BufferCore()
+    for t in (1.0, 2.0):
+        buffer.set_transform(transform("world", "turtle1", t, (t, 0.0, 0.0), yaw(0.0)), "b1")
+        buffer.set_transform(transform("world", "turtle2", t + 0.5, (0.0, t, 0.0), yaw(math.pi / 2)), "b2")
+    buffer.set_transform_static(transform("turtle1", "carrot1", 0.0, (0.0, 2.0, 0.0)), "static")
+    return buffer
+
+
+def test_time_zero_is_the_latest_common_time_and_static_frames_hold_at_every_time():
+    buffer = turtle_world()
+    latest = buffer.lookup_transform_core("turtle2", "turtle1", Time())
+    assert (latest.header.stamp.sec, latest.header.stamp.nanosec) == (2, 0)  # turtle1's newest; turtle2's is 2.5
+    assert buffer.get_latest_common_time("world", "carrot1").nanoseconds == 2 * NS
+    carrot = buffer.lookup_transform_core("world", "carrot1", Time(nanoseconds=1_500_000_000))
+    assert (carrot.transform.translation.x, carrot.transform.translation.y) == pytest.approx((1.5, 2.0))
+
+
+def test_lookups_outside_the_data_raise_tf2s_extrapolation_errors():
+    buffer = turtle_world()
+    with pytest.raises(ExtrapolationException) as future:
+        buffer.lookup_transform_core("turtle2", "turtle1", Time(nanoseconds=3 * NS))
+    # Both walks miss; as in tf2, the target's walk reports (turtle2's newest is 2.5 s).
+    assert str(future.value) == (
+        "Lookup would require extrapolation into the future.  Requested time 3.000000 but the latest data is at "
+        "time 2.500000, when looking up transform from frame [turtle1] to frame [turtle2]"
+    )
+    with pytest.raises(ExtrapolationException, match=r"into the past.  Requested time 0\.500000 but the earliest"):
+        buffer.lookup_transform_core("world", "turtle1", Time(nanoseconds=NS // 2))
+    ok, why = buffer.can_transform_core("turtle2", "turtle1", Time(nanoseconds=3 * NS))
+    assert not ok and why.startswith("Lookup would require extrapolation into the future")
+
+
+def test_unknown_unconnected_and_invalid_frames_raise_with_tf2s_wording():
+    buffer = turtle_world()
+    buffer.set_transform(transform("moon", "rover", 1.0), "b3")
+    with pytest.raises(LookupException) as unknown:
+        buffer.lookup_transform_core("turtle3", "turtle1", Time())
+    assert str(unknown.value) == '"turtle3" passed to lookupTransform argument target_frame does not exist. '
+    with pytest.raises(ConnectivityException, match="Could not find a connection between 'rover' and 'turtle1'"):
+        buffer.lookup_transform_core("rover", "turtle1", Time())
+    with pytest.raises(InvalidArgumentException, match="cannot start with a '/'"):
+        buffer.lookup_transform_core("/world", "turtle1", Time())
+    assert buffer.can_transform_core("turtle3", "turtle1", Time()) == (
+        False,
+        '"turtle3" passed to canTransform argument target_frame does not exist. ',
+    )
+    assert buffer.lookup_transform_core("nowhere", "nowhere", Time(nanoseconds=5)).header.stamp.nanosec == 5
+
+
+def test_time_travel_joins_two_times_through_the_fixed_frame():
+    buffer = turtle_world()
+    # Where turtle1 was at 1 s, seen from turtle2 at 2 s: world is taken not to move in between.
+    found = buffer.lookup_transform_full_core(
+        "turtle2", Time(nanoseconds=2 * NS), "turtle1", Time(nanoseconds=NS), "world"
+    )
+    # turtle1 at 1 s is at (1, 0) in world; turtle2 at 2 s is at (0, 1.5) facing +y.
+    x, y = found.transform.translation.x, found.transform.translation.y
+    assert (x, y) == pytest.approx((-1.5, -1.0))
+    assert (found.header.stamp.sec, found.header.stamp.nanosec) == (2, 0)
+
+
+def test_the_cache_keeps_ten_seconds_and_bad_transforms_are_refused():
+    buffer = BufferCore(Duration(seconds=10))
+    for t in range(25):
+        buffer.set_transform(transform("world", "turtle1", float(t), (float(t), 0.0, 0.0)), "b")
+    # As tf2 prunes: before each insertion, what is more than 10 s older than the newest so far.
+    with pytest.raises(ExtrapolationException, match=r"earliest data is at time 13\.000000"):
+        buffer.lookup_transform_core("world", "turtle1", Time(nanoseconds=5 * NS))
+    assert not buffer.set_transform(transform("world", "turtle1", 3.0), "late")  # older than the cache
+    assert not buffer.set_transform(transform("world", "world", 30.0), "b")  # a frame its own parent
+    assert not buffer.set_transform(transform("world", "turtle1", 30.0, q=(0.0, 0.0, 0.0, 2.0)), "b")
+    assert not buffer.set_transform(transform("world", "", 30.0), "b")
+    table = buffer.frame_table()
+    assert table["turtle1"]["parent"] == "world" and table["turtle1"]["buffer_length"] == pytest.approx(
+        10.0
+    )  # pruned again
+    assert "turtle1: \n  parent: 'world'\n  broadcaster: 'b'\n  rate: 1.100" in buffer.all_frames_as_yaml()
+    assert buffer.all_frames_as_string() == "Frame turtle1 exists with parent world.\n"
+
+
+def test_a_repeated_stamp_keeps_one_copy_and_clear_keeps_static_frames():
+    buffer = turtle_world()
+    before = buffer.frame_table()["turtle1"]["rate"]
+    buffer.set_transform(transform("world", "turtle1", 2.0, (2.0, 0.0, 0.0), yaw(0.0)), "b1")
+    assert buffer.frame_table()["turtle1"]["rate"] == before
+    buffer.clear()
+    assert not buffer.can_transform_core("world", "turtle1", Time())[0]
+    assert buffer.can_transform_core("turtle1", "carrot1", Time())[0]
