@@ -40,6 +40,7 @@ import selectors
 import sys
 import threading
 from abc import ABC, abstractmethod
+from asyncio.events import _get_running_loop, _set_running_loop
 from collections import deque
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -47,6 +48,7 @@ from types import CodeType, FrameType
 from typing import Any
 
 from actors.core.loops import VirtualTimeLoop
+from actors.errors import VirtualTimeDeadlock
 from actors.ros.log import ROOT_LOGGER
 
 __all__ = ["Turn", "WallTurn", "VirtualTurn", "Waiter", "ScriptWallLoop", "ScriptTimeLoop", "HOLD_WARNING"]
@@ -362,6 +364,9 @@ class VirtualTurn(Turn):
         self.queue: deque[Waiter] = deque()
         self.settling: list[Waiter] = []
         self._loop_waiter = Waiter(self)
+        # Who gets the baton when no thread queues for it: the loop's thread, or the main thread
+        # while it runs the loop itself (see _drive).
+        self._party = self._loop_waiter
         self._loop_ident: int | None = None
         self.expected = 0  # threads told to come and take the baton that have not queued yet
         self._where: dict[int, tuple[str, str, int] | None] = {}  # where each holder last left a wait
@@ -390,7 +395,7 @@ class VirtualTurn(Turn):
             nxt = self.queue.popleft()
             nxt.queued = False
         else:
-            nxt = self._loop_waiter
+            nxt = self._party
         nxt._sem.release()
 
     def _received(self, depth: int) -> None:
@@ -420,19 +425,71 @@ class VirtualTurn(Turn):
             self._poke()
 
     def wait(self, waiter: Waiter) -> None:
+        if self._party is not self._loop_waiter and _get_ident() == self._main:
+            raise RuntimeError("the runtime's own thread cannot wait on the runtime")
         with self._lock:
             parked = self._park(waiter)
             if parked:
                 depth = self._depth
-                self._pass_on()
+                drive = self._may_drive()
+                if not drive:
+                    self._pass_on()
         if not parked:
             self._after_wait()
             return
-        self._block(waiter)
+        if not drive or not self._drive(waiter):
+            self._block(waiter)
         self._unparked(waiter)
         if not self.stopped:
             self._received(depth)
         self._after_wait()
+
+    def _may_drive(self) -> bool:
+        # With _lock held, by the holder about to wait: whether it runs the loop itself.  Only the
+        # main thread does (one driver at a time, and the one a signal reaches), with nobody queued
+        # and the loop parked in its select with something to do; else the loop's thread runs it.
+        loop: Any = self.loop
+        return (
+            _get_ident() == self._main
+            and self._loop_ident is not None
+            and not self.queue
+            and loop is not None
+            and not loop._stopping
+            and bool(loop._ready or loop._scheduled)
+        )
+
+    def _drive(self, waiter: Waiter) -> bool:
+        """Run the loop on this thread until the baton comes back to ``waiter``; False if the
+        loop's own thread must run it from here (the caller then parks as any other)."""
+        # A hand-over between two threads costs the scheduler two wake-ups; the loop's iterations
+        # cost the same on either thread.  The order of everything stays the baton's: the queue
+        # goes round between two iterations, as the loop's select would send it round, and the
+        # loop stops there for ``waiter``, before the iteration the loop's thread would run after.
+        loop: Any = self.loop
+        self._party = waiter  # the baton comes back here: as the loop's share, or as waiter's own
+        outer = _get_running_loop()
+        _set_running_loop(loop)
+        try:
+            while waiter.parked or waiter.queued:
+                if self.queue:
+                    with self._lock:
+                        self._pass_on()
+                    self._park_loop()
+                elif self.closing or self.stopped or loop._stopping or not (loop._ready or loop._scheduled):
+                    break
+                else:
+                    loop._run_once()
+            else:
+                return True
+        except VirtualTimeDeadlock:  # the loop's own thread meets it too, and ends the run with it
+            pass
+        finally:
+            _set_running_loop(outer)
+            self._party = self._loop_waiter
+        if not self.stopped:
+            with self._lock:
+                self._pass_on()
+        return False
 
     def enlist(self, waiter: Waiter) -> Waiter:
         """Queue ``waiter`` for a party that will run later (a thread about to start, a job for a
@@ -548,10 +605,12 @@ class VirtualTurn(Turn):
         return select(timeout)
 
     def _park_loop(self) -> None:
-        sem = self._loop_waiter._sem
-        if not sem.acquire(timeout=HOLD_WARNING):
-            self._warn_holding()
-            sem.acquire()
+        sem = self._party._sem
+        while not sem.acquire(timeout=HOLD_WARNING):
+            if sem is self._party._sem:  # else the main thread runs the loop meanwhile, and waits for nobody
+                self._warn_holding()
+                sem.acquire()
+                break
         self.holder = _get_ident()
         self._depth = 1
 
