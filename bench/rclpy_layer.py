@@ -8,6 +8,7 @@ import statistics
 import subprocess
 import sys
 import tempfile
+import time
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import NamedTuple
@@ -151,6 +152,87 @@ print(cuts[49], cuts[98], len(stamps))
 """
 
 
+# The TurtleBot rows: the course's world and robot for a simulated hour on the virtual clock, driven
+# at 10 Hz by the native ConstantControl node (the baseline) and by an rclpy controller under
+# actors run that reads /odom (20 Hz) and publishes /cmd_vel from a 10 Hz timer.
+SIM_SECONDS = 3600.0
+WORLD = """\
+[[nodes]]
+use = "world.sim:World"
+params = { world = "signs", image = "" }
+
+[[nodes]]
+use = "world.robot:TurtleBot"
+params = { model = "burger", x = 0.0, y = 0.0, theta = 0.0 }
+"""
+NATIVE_CONTROL = """
+[[nodes]]
+use = "nodes.constant_control:ConstantControl"
+params = { v = 0.2, omega = 0.2 }
+"""
+CONTROLLER = """\
+import rclpy
+from geometry_msgs.msg import Twist
+from nav_msgs.msg import Odometry
+from rclpy.node import Node
+
+
+class Controller(Node):
+    def __init__(self):
+        super().__init__("controller")
+        self.x = 0.0
+        self.cmd_vel = self.create_publisher(Twist, "/cmd_vel", 10)
+        self.create_subscription(Odometry, "/odom", self.on_odom, 10)
+        self.create_timer(0.1, self.tick)
+
+    def on_odom(self, msg):
+        self.x = msg.pose.pose.position.x
+
+    def tick(self):
+        cmd = Twist()
+        cmd.linear.x = 0.2 if self.x < 1.0 else -0.2
+        cmd.angular.z = 0.2
+        self.cmd_vel.publish(cmd)
+
+
+rclpy.init()
+try:
+    rclpy.spin(Controller())
+except KeyboardInterrupt:
+    pass
+"""
+
+
+def turtlebot_rows(folder: Path, rounds: int) -> list[str]:
+    """Wall seconds per simulated hour, native controller and rclpy controller, rounds interleaved."""
+    (folder / "native.toml").write_text(WORLD + NATIVE_CONTROL)
+    (folder / "world.toml").write_text(WORLD)
+    (folder / "controller.py").write_text(CONTROLLER)
+    virtual = ["--clock", "virtual", "--duration", str(SIM_SECONDS)]
+    commands = {
+        "native ConstantControl node (python -m actors.run)": [
+            sys.executable, "-m", "actors.run", str(folder / "native.toml"), *virtual
+        ],
+        "rclpy controller (actors run --graph)": [
+            sys.executable, "-m", "actors", "run", *virtual, "--graph", str(folder / "world.toml"),
+            str(folder / "controller.py"),
+        ],
+    }  # fmt: skip
+    walls: dict[str, list[float]] = {name: [] for name in commands}
+    for _ in range(rounds):
+        for name, command in commands.items():
+            start = time.perf_counter()
+            proc = subprocess.run(command, env=child_env(), capture_output=True, text=True, timeout=TIMEOUT)
+            if proc.returncode != 0:
+                raise RuntimeError(f"{name}: {(proc.stderr.strip().splitlines() or ['failed'])[-1]}")
+            walls[name].append((time.perf_counter() - start) * 3600.0 / SIM_SECONDS)
+    lines = ["| TurtleBot, 10 Hz control, virtual clock | unit | median | spread |", "|---|---|---:|---|"]
+    for name, values in walls.items():
+        lines.append(f"| {name} | wall s per simulated hour | {fmt(statistics.median(values))} "
+                     f"| {fmt(min(values))}–{fmt(max(values))} |")  # fmt: skip
+    return lines
+
+
 class Row(NamedTuple):
     """One number a program prints: what it is, its unit, and whether higher is better."""
 
@@ -244,6 +326,8 @@ def main(argv: Sequence[str] | None = None) -> None:
             lines.append(f"| {row.name} | {row.unit} | {' | '.join(cells)} | {ratio} | {better} |")
     print("\n".join(lines))
     print(f"\n{args.rounds} rounds, sides alternating; medians. Ratios are actors/rclpy for every row.")
+    with tempfile.TemporaryDirectory(prefix="bench-rclpy-layer-") as tmp:
+        print("\n" + "\n".join(turtlebot_rows(Path(tmp), args.rounds)))
 
 
 if __name__ == "__main__":
