@@ -16,6 +16,8 @@
     ├── InvalidQoSProfileException   a QoSProfile without a history or depth (rclpy's name)
     ├── GraphFileError               graph.toml is malformed (names file and key path)
     ├── RosArgsError                 a --ros-args argument or a parameter file is malformed
+    ├── PackageError                 no such package or executable, or its setup files cannot be read
+    ├── LaunchFileError              a launch file is malformed or fails (names file and line)
     ├── WorldError                   a robot without a world, a start pose that does not fit
     │   └── WorldFileError           a world file is malformed (names file and key path)
     ├── ServiceError                 a service call failed on the server's side
@@ -67,6 +69,8 @@ __all__ = [
     "InvalidQoSProfileException",
     "GraphFileError",
     "RosArgsError",
+    "PackageError",
+    "LaunchFileError",
     "WorldError",
     "WorldFileError",
     "ServiceError",
@@ -180,6 +184,14 @@ class GraphFileError(ActorsError):
 
 class RosArgsError(ActorsError, ValueError):
     """A ``--ros-args`` argument or a ROS parameter file is malformed; the text names which."""
+
+
+class PackageError(ActorsError, LookupError):
+    """No such package or executable in the workspace, or a package's setup files cannot be read."""
+
+
+class LaunchFileError(ActorsError):
+    """A launch file is malformed or fails while it is read: the message names file and line."""
 
 
 class WorldError(ActorsError):

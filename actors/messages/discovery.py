@@ -58,6 +58,8 @@ __all__ = [
     "discovered",
     "find_spec",
     "package_sources",
+    "workspace_starts",
+    "workspace_packages",
 ]
 
 KINDS = ("msg", "srv", "action")
@@ -98,7 +100,7 @@ def discovered() -> dict[str, Path]:
     a package added since is seen then) and after a bag taught a new type.
     """
     env = (os.environ.get("ACTORS_WORKSPACE", ""), os.environ.get("AMENT_PREFIX_PATH", ""))
-    starts = (*_starts, *(Path(p) for p in env[0].split(os.pathsep) if p), Path.cwd())
+    starts = workspace_starts()
     bags = _bag_prefix()
     key = (starts, env, bags)
     with _lock:
@@ -114,6 +116,15 @@ def discovered() -> dict[str, Path]:
             _found.clear()
             _found[key] = found
         return found
+
+
+def workspace_starts() -> tuple[Path, ...]:
+    """Where workspaces are looked for, first wins: :func:`add_workspace`'s folders (newest first),
+    ``ACTORS_WORKSPACE``'s, then the working directory."""
+    env = os.environ.get("ACTORS_WORKSPACE", "")
+    with _lock:
+        given = tuple(_starts)
+    return (*given, *(Path(p) for p in env.split(os.pathsep) if p), Path.cwd())
 
 
 def package_sources(folder: Path) -> dict[str, list[Path]]:
@@ -188,7 +199,17 @@ def _installed(prefix: Path) -> Iterator[tuple[str, Path]]:
 
 
 def _workspace(start: Path) -> dict[str, Path]:
-    """The interface packages of the workspace around ``start``: its own package, or a src/ above it."""
+    """The interface packages of the workspace around ``start``."""
+    found = workspace_packages(start)
+    return {name: path for name, path in found.items() if any((path / kind).is_dir() for kind in KINDS)}
+
+
+def workspace_packages(start: Path) -> dict[str, Path]:
+    """Every package of the workspace around ``start``, name to folder: the package ``start`` is in,
+    and those of the first ``src/`` found walking up (at most four folders deep under it).
+
+    A package is a folder with a ``package.xml``, named by its ``<name>`` (else its folder's).
+    """
     found: dict[str, Path] = {}
     for folder in (start, *start.parents):
         if (folder / "package.xml").is_file():
@@ -198,7 +219,7 @@ def _workspace(start: Path) -> dict[str, Path]:
             for manifest in _manifests(src, _DEPTH):
                 found.setdefault(*_package(manifest.parent))
             break
-    return {name: path for name, path in found.items() if any((path / kind).is_dir() for kind in KINDS)}
+    return found
 
 
 def _manifests(folder: Path, depth: int) -> Iterator[Path]:
