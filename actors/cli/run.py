@@ -1,8 +1,9 @@
-"""``actors run SCRIPT.py [ARGS...] [--ros-args ...]``: run an rclpy program, unmodified, on actors."""
+"""``actors run SCRIPT.py|PKG EXE [ARGS...] [--ros-args ...]``: run an rclpy program, unmodified, on actors."""
 
 from __future__ import annotations
 
 import argparse
+import sys
 from typing import Any
 
 from actors.recording.options import add_attachment_options
@@ -14,11 +15,12 @@ def register(groups: Any) -> None:
     """Add the ``run`` command."""
     parser = groups.add_parser(
         "run",
-        help="run an rclpy program (SCRIPT.py) on actors, unmodified",
+        help="run an rclpy program (SCRIPT.py, or a package's executable: PKG EXE) on actors, unmodified",
         description=(
-            "Run an rclpy program as `python SCRIPT.py ARGS` would, with rclpy and the message "
-            "packages provided by actors. Options go before the script; everything after it is the "
-            "script's (its own arguments and --ros-args ...)."
+            "Run an rclpy program as `python SCRIPT.py ARGS` would, or a package's executable as "
+            "`ros2 run PKG EXE ARGS` would, with rclpy, ament_index_python and the message packages "
+            "provided by actors. Options go before the program; everything after it is the "
+            "program's (its own arguments and --ros-args ...)."
         ),
     )
     parser.add_argument("--clock", choices=("wall", "virtual"), help="the runtime clock (default: wall)")
@@ -40,20 +42,27 @@ def register(groups: Any) -> None:
         action="append",
         default=[],
         help="another rclpy program to run beside it in the same runtime, e.g. its action "
-        "server (quote it with its arguments: --with 'server.py ARGS'); repeatable",
+        "server (quote it with its arguments: --with 'server.py ARGS' or --with 'PKG EXE ARGS'); repeatable",
     )
     add_attachment_options(parser)
-    parser.add_argument("script", help="the rclpy program, e.g. talker.py")
+    parser.add_argument("script", help="the rclpy program, e.g. talker.py, or a package (then its executable)")
     parser.add_argument("args", nargs=argparse.REMAINDER, help="the program's arguments")
     parser.set_defaults(func=_run)
 
 
 def _run(args: argparse.Namespace) -> int:
     from actors.compat.launcher import run_script
+    from actors.compat.programs import program_for
+    from actors.errors import PackageError
 
+    try:
+        program, rest = program_for([args.script, *args.args])
+    except (FileNotFoundError, PackageError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     return run_script(
-        args.script,
-        args.args,
+        program,
+        rest,
         clock=args.clock,
         duration=args.duration,
         graph=args.graph,

@@ -29,7 +29,6 @@ from __future__ import annotations
 
 import _thread
 import os
-import runpy
 import signal
 import sys
 import threading
@@ -38,19 +37,19 @@ import traceback
 import weakref
 from collections.abc import Iterator, MutableSequence, Sequence
 from contextlib import contextmanager
-from pathlib import Path
 from types import FrameType
 from typing import Any
 
 from actors.compat.overlay import overlaid
 from actors.compat.partners import LINGER, Partner, parse_partner
+from actors.compat.programs import Program, program_for
 from actors.compat.rclpy.context import use_session
 from actors.compat.rclpy.executors import ExternalShutdownException
 from actors.compat.rclpy.utilities import get_default_context, try_shutdown
 from actors.compat.script_state import ScriptArgv
 from actors.compat.session import Session
 from actors.compat.turns import Turn
-from actors.errors import ActorsError, GraphFileError, RosArgsError
+from actors.errors import ActorsError, GraphFileError, PackageError, RosArgsError
 from actors.launch.graph_file import load_graph
 from actors.launch.rosargs import parse
 from actors.messages.discovery import add_workspace
@@ -62,7 +61,7 @@ __all__ = ["run_script"]
 
 
 def run_script(
-    script: str,
+    script: str | Program,
     argv: Sequence[str] = (),
     *,
     clock: str | None = None,
@@ -75,29 +74,31 @@ def run_script(
     topics: Sequence[str] = (),
     foxglove: int | None = None,
 ) -> int:
-    """Run ``script`` with ``argv`` as its arguments; return the process's exit code.
+    """Run ``script`` (a file, or a :class:`~actors.compat.programs.Program`) with ``argv`` as its
+    arguments; return the process's exit code.
 
     ``clock``, ``duration`` and ``log_level`` default to the graph file's
     ``[runtime]`` settings when ``graph`` is given, else to the wall clock, no
-    end, and info.  ``partners`` are more scripts (``"server.py ARGS..."``) run
-    beside it in the same runtime (:mod:`actors.compat.partners`); one that
-    fails makes the exit code 1.  ``timeout`` bounds the run in seconds of wall
-    time (exit code 124).  ``record``, ``topics`` and ``foxglove`` attach a
-    recorder and a live view, as ``python -m actors.run`` does.  Call it on the main thread (it handles SIGINT and
-    SIGTERM).
+    end, and info.  ``partners`` are more programs (``"server.py ARGS..."``,
+    ``"PKG EXE ARGS..."``) run beside it in the same runtime
+    (:mod:`actors.compat.partners`); one that fails makes the exit code 1.
+    ``timeout`` bounds the run in seconds of wall time (exit code 124).
+    ``record``, ``topics`` and ``foxglove`` attach a recorder and a live view,
+    as ``python -m actors.run`` does.  Call it on the main thread (it handles
+    SIGINT and SIGTERM).
     """
-    path = Path(script)
     try:
+        program = script if isinstance(script, Program) else program_for([script])[0]
         scripts = [parse_partner(spec) for spec in partners]
     except ValueError as exc:
         print(f"error: --with: {exc}", file=sys.stderr)
         return 2
-    for each in (path, *(partner for partner, _ in scripts)):
-        if not each.is_file():
-            print(f"error: {each}: no such script", file=sys.stderr)
-            return 2
-    for each in reversed((path, *(partner for partner, _ in scripts))):
-        add_workspace(each.parent)  # the script's own workspace: its interface packages import as rclpy's
+    except (FileNotFoundError, PackageError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    for each in reversed((program, *(partner for partner, _ in scripts))):
+        for folder in each.paths[:1]:
+            add_workspace(folder)  # the program's own workspace: its interface packages import as rclpy's
     for name, value in (("--duration", duration), ("--timeout", timeout)):
         if value is not None and not 0 < value < float("inf"):
             print(f"error: {name} must be > 0 seconds, got {value}", file=sys.stderr)
@@ -131,7 +132,7 @@ def run_script(
     stop = _Stop()
     session = Session(
         clock=clock,
-        name=path.stem,
+        name=program.name,
         graph=loaded,
         duration=duration,
         on_duration=stop.end_of_duration,
@@ -146,7 +147,7 @@ def run_script(
         return 1
     others = [Partner(session, partner, arguments, _print_script_traceback) for partner, arguments in scripts]
     # With partners, sys.argv shows each script its own command line.
-    main_line = [str(path), *argv]
+    main_line = [program.argv0, *argv]
     command_line: MutableSequence[str] = main_line
     saved_argv = sys.argv
     if others:
@@ -160,7 +161,7 @@ def run_script(
             for partner in others:
                 partner.start()
             try:
-                code = _run(path, command_line, stop)
+                code = _run(program, command_line, stop)
             finally:
                 _finish(others, linger=0 if stop.requested else LINGER)
     finally:
@@ -333,23 +334,23 @@ def _in_finaliser(frame: FrameType | None) -> bool:
     return False
 
 
-def _run(path: Path, command_line: MutableSequence[str], stop: _Stop) -> int:
+def _run(program: Program, command_line: MutableSequence[str], stop: _Stop) -> int:
     saved_argv, saved_path = sys.argv, sys.path[:]
     _set_argv(command_line)
-    sys.path.insert(0, str(path.resolve().parent))
+    sys.path[:0] = [str(folder) for folder in program.paths]
     try:
-        runpy.run_path(str(path), run_name="__main__")
+        program.run()
     except SystemExit as exc:
         return _exit_code(exc.code)
     except (KeyboardInterrupt, ExternalShutdownException):
         if stop.requested:
             return 0
         raise
-    except RosArgsError as exc:
+    except (RosArgsError, PackageError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     except BaseException as exc:
-        _print_script_traceback(exc, path)
+        _print_script_traceback(exc, program)
         return 1
     finally:
         sys.argv = saved_argv
@@ -366,11 +367,10 @@ def _exit_code(code: Any) -> int:
     return 1
 
 
-def _print_script_traceback(exc: BaseException, path: Path) -> None:
-    # Leave out the launcher's and runpy's frames: the traceback starts in the script.
+def _print_script_traceback(exc: BaseException, program: Program) -> None:
+    # Leave out the launcher's and runpy's frames: the traceback starts in the program.
     tb = exc.__traceback__
-    script = str(path.resolve())
-    while tb is not None and os.path.abspath(tb.tb_frame.f_code.co_filename) != script:
+    while tb is not None and not program.owns(tb.tb_frame.f_code.co_filename):
         tb = tb.tb_next
     traceback.print_exception(type(exc), exc, tb or exc.__traceback__, file=sys.stderr)
 

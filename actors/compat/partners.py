@@ -16,14 +16,13 @@ partners at once.
 
 from __future__ import annotations
 
-import builtins
 import shlex
 import sys
 import threading
 from collections.abc import Callable, Sequence
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from actors.compat.programs import Program, program_for
 from actors.compat.rclpy.executors import ExternalShutdownException
 from actors.compat.script_state import ScriptState, enter
 
@@ -38,22 +37,26 @@ LINGER = 10.0
 _POLL = 0.05  # seconds of runtime clock between looks at partners that are finishing
 
 
-def parse_partner(spec: str) -> tuple[Path, list[str]]:
-    """``"server.py --ros-args -r __node:=srv"`` -> (path, arguments); ValueError for an empty or unquotable one."""
+def parse_partner(spec: str) -> tuple[Program, list[str]]:
+    """``"server.py --ros-args -r __node:=srv"`` or ``"PKG EXE ARGS"`` -> (program, arguments).
+
+    ValueError for an empty or unquotable one; FileNotFoundError or PackageError
+    (from :func:`~actors.compat.programs.program_for`) for one that is not there.
+    """
     words = shlex.split(spec)
     if not words:
         raise ValueError("--with needs a script")
-    return Path(words[0]), words[1:]
+    return program_for(words)
 
 
 class Partner:
     """One partner script: its thread, its rclpy state, and how it ended."""
 
     def __init__(
-        self, session: Session, path: Path, argv: Sequence[str], report: Callable[[BaseException, Path], None]
+        self, session: Session, program: Program, argv: Sequence[str], report: Callable[[BaseException, Program], None]
     ) -> None:
-        self.path = path
-        self.state = ScriptState(path.name, [str(path), *argv])
+        self.program = program
+        self.state = ScriptState(program.name, [program.argv0, *argv])
         self.failed = False
         self._session = session
         self._report = report
@@ -62,21 +65,20 @@ class Partner:
 
     def start(self) -> None:
         """Run the script on a thread of its own; it holds virtual time still until it first waits."""
-        sys.path.insert(0, str(self.path.resolve().parent))
-        self._thread = self._session.start_thread(self._main, f"actors partner {self.path.name}")
+        sys.path[:0] = [str(folder) for folder in self.program.paths]
+        self._thread = self._session.start_thread(self._main, f"actors partner {self.program.name}")
 
     def _main(self) -> None:
         enter(self.state)  # a new thread starts with an empty context: this state is the script's alone
         try:
-            code = compile(self.path.read_bytes(), str(self.path), "exec")
-            exec(code, {"__name__": "__main__", "__file__": str(self.path), "__builtins__": builtins})
+            self.program.run(main=False)
         except SystemExit as exc:
             self.failed = exc.code not in (None, 0)
         except (KeyboardInterrupt, ExternalShutdownException):
             self.failed = not self._stopping
         except BaseException as exc:
             self.failed = True
-            self._report(exc, self.path)
+            self._report(exc, self.program)
 
     @property
     def running(self) -> bool:
