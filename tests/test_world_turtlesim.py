@@ -19,6 +19,7 @@ from interfaces.turtlesim.action import RotateAbsolute
 from interfaces.turtlesim.msg import Color, Pose
 from interfaces.turtlesim.srv import Kill, SetPen, Spawn, TeleportAbsolute, TeleportRelative
 from world.canvas import METER, png_bytes
+from world.teleop_key import TeleopTurtle
 from world.turtlesim import BACKGROUND, WORLD_SIZE, Turtlesim
 
 pytestmark = pytest.mark.virtual_time
@@ -265,3 +266,51 @@ async def test_the_picture_is_written_as_a_png_at_shutdown(tmp_path):
         assert np.array_equal(np.asarray(image), expected)
     with Image.open(io.BytesIO(png_bytes(expected[:7, :3]))) as small:
         assert small.size == (3, 7)
+
+
+async def test_teleop_keys_move_rotate_and_cancel(capsys):
+    async with Runtime() as rt:
+        rt.spawn(Turtlesim)
+        watcher = rt.spawn(Watcher, ["turtle1"])
+        teleop = rt.spawn(TeleopTurtle, io.BytesIO(b"\x1b[A"))  # the up arrow's escape sequence
+        await anyio.sleep(1.5)
+        x, y, theta, speed, _ = watcher.poses["turtle1"][-1]
+        assert (y, theta, speed) == (CENTRE, 0.0, 0.0)  # it stopped a second after the key
+        # scale_linear: 2 m/s, for the frames at 32 ms .. 1 s (the one at 16 ms only starts the count).
+        assert x == pytest.approx(CENTRE + 61 * 0.016 * 2.0, abs=1e-5)
+        teleop.on_key(b"r")  # rotate to π/2 ...
+        await anyio.sleep(0.5)
+        assert teleop.goal is not None and teleop.goal.accepted
+        teleop.on_key(b"f")  # ... and cancel it half way
+        await anyio.sleep(0.5)
+        heading = watcher.poses["turtle1"][-1][2]
+        assert 0.3 < heading < 1.2
+        assert (await teleop.goal.get_result()).status == 5  # CANCELED
+        assert teleop.on_key(b"q") is False
+    assert "Use G|B|V|C|D|E|R|T keys to rotate to absolute orientations. 'F' to cancel a rotation." in (
+        capsys.readouterr().out
+    )
+
+
+async def test_a_bag_of_cmd_vel_replays_the_same_path(tmp_path):
+    pytest.importorskip("mcap")
+    from actors.recording.player import play
+    from actors.recording.reader import Bag
+    from actors.recording.recorder import Recorder
+
+    rng = random.Random(7)
+    drive = [(t * 8_000_000, rng.uniform(-3, 3), rng.uniform(-3, 3)) for t in sorted(rng.sample(range(1, 400, 2), 12))]
+    async with Runtime(attach=[Recorder(tmp_path / "drive", topics=["/turtle1/cmd_vel"])]) as rt:
+        rt.spawn(Turtlesim)
+        recorded = rt.spawn(Watcher, ["turtle1"], {"turtle1": drive})
+        await anyio.sleep(4.0)
+    bag = next((tmp_path / "drive").glob("*.mcap"))
+    async with Runtime() as rt:
+        rt.spawn(Turtlesim)
+        replayed = rt.spawn(Watcher, ["turtle1"])
+        await anyio.sleep(drive[0][0] / 1e9)  # the bag starts with the first command, when it was sent
+        assert await play(rt, Bag(bag)) == len(drive)
+        await anyio.sleep(4.0 - drive[-1][0] / 1e9)
+    first, second = recorded.poses["turtle1"][-1], replayed.poses["turtle1"][-1]
+    assert first[:3] != (CENTRE, CENTRE, 0.0)  # it went somewhere
+    assert second == pytest.approx(first, abs=1e-6)
