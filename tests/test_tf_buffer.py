@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+import logging
 import math
 
+import anyio
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from actors import DurabilityPolicy, Node, QoSProfile, Runtime
 from actors.errors import (
     ConnectivityException,
     ExtrapolationException,
@@ -19,6 +22,9 @@ from actors.ros.tf_buffer import BufferCore
 from actors.ros.time import Duration, Time
 from interfaces.builtin_interfaces.msg import Time as TimeMsg
 from interfaces.geometry_msgs.msg import TransformStamped
+from interfaces.tf2_msgs.msg import TFMessage
+from nodes.static_transform_publisher import StaticTransformPublisher, parse_args
+from nodes.tf2_echo import Tf2Echo
 
 NS = 1_000_000_000
 
@@ -226,3 +232,60 @@ def test_a_repeated_stamp_keeps_one_copy_and_clear_keeps_static_frames():
     buffer.clear()
     assert not buffer.can_transform_core("world", "turtle1", Time())[0]
     assert buffer.can_transform_core("turtle1", "carrot1", Time())[0]
+
+
+class StaticFrames(Node):
+    def __init__(self, *transforms: TransformStamped) -> None:
+        super().__init__("static_frames")
+        latched = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        self.create_publisher(TFMessage, "/tf_static", latched).publish(TFMessage(transforms=list(transforms)))
+
+
+@pytest.mark.virtual_time
+async def test_tf2_echo_prints_the_transform_as_tf2_ros_does(capsys, caplog):
+    caplog.set_level(logging.INFO, logger="actors")
+    async with Runtime() as rt:
+        rt.spawn(Tf2Echo, params={"source_frame": "world", "target_frame": "turtle1"})
+        await anyio.sleep(1.5)
+        rt.spawn(StaticFrames, transform("world", "turtle1", 0.0, (2.796, 1.039, 0.0), yaw(0.405)))
+        await anyio.sleep(1.0)
+    assert any(
+        r.getMessage().startswith('Waiting for transform world ->  turtle1: "world" passed to canTransform')
+        for r in caplog.records
+    )
+    assert capsys.readouterr().out == (
+        "At time 0.0\n"
+        "- Translation: [2.796, 1.039, 0.000]\n"
+        "- Rotation: in Quaternion [0.000, 0.000, 0.201, 0.980]\n"
+        "- Rotation: in RPY (radian) [0.000, -0.000, 0.405]\n"
+        "- Rotation: in RPY (degree) [0.000, -0.000, 23.205]\n"
+        "- Matrix:\n"
+        "  0.919 -0.394  0.000  2.796\n"
+        "  0.394  0.919  0.000  1.039\n"
+        "  0.000  0.000  1.000  0.000\n"
+        "  0.000  0.000  0.000  1.000\n"
+    )
+
+
+@pytest.mark.virtual_time
+async def test_static_transform_publisher_reads_the_real_command_line_and_latches_it(caplog):
+    caplog.set_level(logging.INFO, logger="actors")
+    params = parse_args(["--x", "1", "--yaw", str(math.pi / 2), "--frame-id", "world", "--child-frame-id", "mystatic"])
+    assert (params["translation.x"], params["rotation.z"]) == (1.0, pytest.approx(math.sqrt(0.5)))
+    for wrong, why in (
+        (["--x", "one", "--frame-id", "a", "--child-frame-id", "b"], "'one' is not a number"),
+        (["--x", "1"], "both --frame-id and --child-frame-id are required"),
+        (["--qz", "1", "--yaw", "1", "--frame-id", "a", "--child-frame-id", "b"], "both quaternion and Euler"),
+        (["--size", "3"], "unknown argument '--size'"),
+    ):
+        with pytest.raises(ValueError, match=why):
+            parse_args(wrong)
+    async with Runtime() as rt:
+        rt.spawn(StaticTransformPublisher, params=params)
+        await anyio.sleep(0.5)
+        echo = rt.spawn(Tf2Echo, params={"source_frame": "world", "target_frame": "mystatic"})
+        await anyio.sleep(1.5)
+        assert echo.buffer.lookup_transform_core("world", "mystatic", Time()).transform.translation.x == 1.0
+    text = "\n".join(r.getMessage() for r in caplog.records)
+    assert "translation: ('1.000000', '0.000000', '0.000000')\nrotation: ('0.000000', '0.000000', '0.707107'" in text
+    assert "from 'world' to 'mystatic'" in text
