@@ -27,7 +27,7 @@ class StaticFrame(Node):
 def main() -> None:
     args = rclpy.utilities.remove_ros_args(sys.argv)[1:]
     if len(args) != 7:
-        print("usage: tf2_static_broadcaster.py CHILD X Y Z ROLL PITCH YAW", file=sys.stderr)
+        print("usage: static_turtle_tf2_broadcaster.py CHILD X Y Z ROLL PITCH YAW", file=sys.stderr)
         sys.exit(2)
     rclpy.init()
     node = StaticFrame(args[0], [float(a) for a in args[1:]])

@@ -13,7 +13,7 @@ from conftest import ROOT, python_env
 from actors.compat import overlaid
 from interfaces.geometry_msgs.msg import PointStamped, PoseStamped, TransformStamped, Vector3Stamped
 
-SCRIPTS = ROOT / "tests" / "rclpy_scripts"
+SCRIPTS = ROOT / "scripts"
 GRAPH = str(ROOT / "graphs" / "turtlesim.toml")
 
 
@@ -75,12 +75,12 @@ def follow(*args: str, partners: tuple[str, ...] = (), duration: float = 16) -> 
     for name in ("turtle1", "turtle2"):
         command += [
             "--with",
-            f"{SCRIPTS / 'tf2_turtle_broadcaster.py'} --ros-args -p turtlename:={name} -r __node:=b_{name}",
+            f"{SCRIPTS / 'turtle_tf2_broadcaster.py'} --ros-args -p turtlename:={name} -r __node:=b_{name}",
         ]
     command += ["--with", f"{SCRIPTS / 'turtle_leader.py'} 15"]
     for partner in partners:
         command += ["--with", partner]
-    command += [str(SCRIPTS / "tf2_turtle_listener.py"), *args]
+    command += [str(SCRIPTS / "turtle_tf2_listener.py"), *args]
     return subprocess.run(command, cwd=ROOT, env=python_env(), capture_output=True, text=True, timeout=120)
 
 
@@ -121,7 +121,9 @@ def test_time_travel_and_an_added_frame():
     assert "not yet five seconds" in done.stderr and "extrapolation" not in done.stderr
     turtles = where(done)
     assert math.dist(turtles["turtle2"], (4.0, 2.0)) > 1.0  # it moved, chasing where turtle1 was
-    carrot = follow("--ros-args", "-p", "target_frame:=carrot1", partners=(str(SCRIPTS / "tf2_carrot_broadcaster.py"),))
+    carrot = follow(
+        "--ros-args", "-p", "target_frame:=carrot1", partners=(str(SCRIPTS / "fixed_frame_tf2_broadcaster.py"),)
+    )
     assert carrot.returncode == 0, carrot.stderr
     turtles = where(carrot)
     assert 1.0 < math.dist(turtles["turtle1"], turtles["turtle2"]) < 3.0  # beside turtle1, not on it
@@ -129,7 +131,7 @@ def test_time_travel_and_an_added_frame():
 
 @pytest.mark.slow
 def test_a_static_frame_is_reached():
-    goal = f"{SCRIPTS / 'tf2_static_broadcaster.py'} goal 8 8 0 0 0 0"
+    goal = f"{SCRIPTS / 'static_turtle_tf2_broadcaster.py'} goal 8 8 0 0 0 0"
     done = follow("--ros-args", "-p", "target_frame:=goal", partners=(goal,))
     assert done.returncode == 0, done.stderr
     assert math.dist(where(done)["turtle2"], (8.0, 8.0)) < 0.3

@@ -1,0 +1,128 @@
+"""The beginner CLI tutorials, page by page in our words: their commands, in order, against a running turtlesim."""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+from collections.abc import Iterator
+
+import pytest
+from conftest import ROOT, python_env
+from test_cli_live import GraphProcess, actors, ok
+
+pytestmark = pytest.mark.slow  # the command line runs as child processes beside a graph in another
+
+
+@pytest.fixture(scope="module")
+def turtlesim(tmp_path_factory: pytest.TempPathFactory) -> Iterator[GraphProcess]:
+    path = tmp_path_factory.mktemp("graph") / f"turtlesim_{os.getpid()}.toml"
+    path.write_text((ROOT / "graphs" / "turtlesim.toml").read_text())
+    running = GraphProcess(path)
+    try:
+        running.wait_for("Spawning turtle [turtle1] at x=[5.544445], y=[5.544445], theta=[0.000000]")
+        yield running
+    finally:
+        running.stop()
+
+
+def pose(graph: GraphProcess, turtle: str = "turtle1") -> dict[str, float]:
+    text = ok(graph, "topic", "echo", f"/{turtle}/pose", "--once")
+    return {key: float(value) for key, value in re.findall(r"^(\w+): (\S+)$", text, re.M)}
+
+
+def test_understanding_nodes(turtlesim):
+    assert "/turtlesim\n" in ok(turtlesim, "node", "list")
+    info = ok(turtlesim, "node", "info", "/turtlesim")
+    for line in (
+        "    /turtle1/cmd_vel: geometry_msgs/msg/Twist",
+        "    /turtle1/pose: turtlesim/msg/Pose",
+        "    /spawn: turtlesim/srv/Spawn",
+        "    /turtle1/rotate_absolute: turtlesim/action/RotateAbsolute",
+    ):
+        assert line in info
+
+
+def test_understanding_topics(turtlesim):
+    listed = ok(turtlesim, "topic", "list", "-t")
+    for line in (
+        "/turtle1/cmd_vel [geometry_msgs/msg/Twist]",
+        "/turtle1/color_sensor [turtlesim/msg/Color]",
+        "/turtle1/pose [turtlesim/msg/Pose]",
+    ):
+        assert line in listed
+    assert "Subscription count: 1" in ok(turtlesim, "topic", "info", "/turtle1/cmd_vel")
+    shown = subprocess.run(
+        [sys.executable, "-m", "actors", "interface", "show", "turtlesim/msg/Pose"],
+        cwd=ROOT,
+        env=python_env(),
+        capture_output=True,
+        text=True,
+        timeout=30,
+    )
+    assert "float32 linear_velocity" in shown.stdout, shown.stderr
+    ok(
+        turtlesim,
+        "service",
+        "call",
+        "/turtle1/teleport_absolute",
+        "turtlesim/srv/TeleportAbsolute",
+        "{x: 3.0, y: 3.0, theta: 0.0}",
+    )
+    assert (pose(turtlesim)["x"], pose(turtlesim)["y"]) == (3.0, 3.0)
+    ok(
+        turtlesim,
+        "topic",
+        "pub",
+        "--once",
+        "/turtle1/cmd_vel",
+        "geometry_msgs/msg/Twist",
+        "{linear: {x: 2.0, y: 0.0, z: 0.0}, angular: {x: 0.0, y: 0.0, z: 1.8}}",
+    )
+    moved = pose(turtlesim)
+    assert moved["x"] != 3.0 or moved["theta"] != 0.0  # it drove an arc, for one second
+
+
+def test_understanding_services(turtlesim):
+    listed = ok(turtlesim, "service", "list")
+    for name in ("/clear", "/kill", "/reset", "/spawn", "/turtle1/set_pen", "/turtle1/teleport_absolute"):
+        assert f"{name}\n" in listed
+    assert ok(turtlesim, "service", "type", "/clear") == "std_srvs/srv/Empty\n"
+    assert ok(turtlesim, "service", "find", "std_srvs/srv/Empty") == "/clear\n/reset\n"
+    spawned = ok(turtlesim, "service", "call", "/spawn", "turtlesim/srv/Spawn", "{x: 2, y: 2, theta: 0.2, name: ''}")
+    assert "turtlesim.srv.Spawn_Response(name='turtle2')" in spawned
+    assert pose(turtlesim, "turtle2")["x"] == 2.0
+    ok(turtlesim, "service", "call", "/kill", "turtlesim/srv/Kill", "{name: turtle2}")
+    assert "/turtle2/pose" not in ok(turtlesim, "topic", "list")
+    ok(turtlesim, "service", "call", "/clear", "std_srvs/srv/Empty")
+    turtlesim.wait_for("Clearing turtlesim.")
+
+
+def test_understanding_parameters(turtlesim):
+    listed = ok(turtlesim, "param", "list")
+    assert "/turtlesim:\n  background_b\n  background_g\n  background_r\n  holonomic\n" in listed
+    assert ok(turtlesim, "param", "get", "/turtlesim", "background_g") == "Integer value is: 86\n"
+    assert ok(turtlesim, "param", "set", "/turtlesim", "background_r", "150") == "Set parameter successful\n"
+    dumped = ok(turtlesim, "param", "dump", "/turtlesim")
+    assert "/turtlesim:\n  ros__parameters:\n" in dumped and "    background_r: 150\n" in dumped
+    refused = actors(turtlesim, "param", "set", "/turtlesim", "background_r", "300")
+    assert refused.returncode == 1 and "[0, 255]" in refused.stderr  # the descriptor's range refuses it
+
+
+def test_understanding_actions(turtlesim):
+    assert "/turtle1/rotate_absolute [turtlesim/action/RotateAbsolute]\n" in ok(turtlesim, "action", "list", "-t")
+    info = ok(turtlesim, "action", "info", "/turtle1/rotate_absolute")
+    assert "Action servers: 1\n    /turtlesim\n" in info
+    result = ok(
+        turtlesim,
+        "action",
+        "send_goal",
+        "/turtle1/rotate_absolute",
+        "turtlesim/action/RotateAbsolute",
+        "{theta: 1.57}",
+        "--feedback",
+    )
+    assert "Feedback:\n    remaining:" in result
+    assert result.rstrip().endswith("Goal finished with status: SUCCEEDED")
+    assert abs(pose(turtlesim)["theta"] - 1.57) < 0.02
