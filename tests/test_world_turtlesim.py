@@ -314,3 +314,30 @@ async def test_a_bag_of_cmd_vel_replays_the_same_path(tmp_path):
     first, second = recorded.poses["turtle1"][-1], replayed.poses["turtle1"][-1]
     assert first[:3] != (CENTRE, CENTRE, 0.0)  # it went somewhere
     assert second == pytest.approx(first, abs=1e-6)
+
+
+async def test_the_live_view_scene_shows_the_floor_the_trails_and_each_turtle():
+    fm = pytest.importorskip("foxglove.messages")
+    from world.turtlesim_scene import turtlesim_scene
+
+    async with Runtime() as rt:
+        sim = rt.spawn(Turtlesim, params={"background_g": 0})
+        rt.spawn(Watcher, ["turtle1"], {"turtle1": [(8_000_000, 1.0, 0.0)]})
+        await anyio.sleep(0.5)
+        update = turtlesim_scene(sim, rt.clock.now_ns())
+    assert isinstance(update, fm.SceneUpdate)
+    decoded = _read_scene(fm, update)
+    assert [e.id for e in decoded.entities] == ["turtlesim/floor", "turtlesim/trails", "turtlesim/turtle1"]
+    floor, trails, turtle = decoded.entities
+    assert (floor.cubes[0].color.r, floor.cubes[0].color.g) == (pytest.approx(69 / 255), 0.0)
+    (line,) = trails.lines
+    assert len(line.points) == 2 * len(sim.canvas.segments) > 0
+    assert line.points[-2].x == pytest.approx(sim.turtles["turtle1"].x)  # drawn from where it is now
+    assert turtle.arrows[0].pose.position.x == pytest.approx(sim.turtles["turtle1"].x)
+
+
+def _read_scene(fm, update):
+    from conftest import protobuf_class
+
+    schema = fm.SceneUpdate.get_schema()
+    return protobuf_class(schema.name, schema.data).FromString(update.encode())

@@ -15,36 +15,42 @@ import math
 import os
 import struct
 import zlib
+from collections import deque
 from collections.abc import Iterable
 from pathlib import Path
 
 import numpy as np
 
-__all__ = ["SIZE", "METER", "Canvas", "png_bytes", "write_png"]
+__all__ = ["SIZE", "METER", "SEGMENTS", "Segment", "Canvas", "png_bytes", "write_png"]
 
 SIZE = 500
 METER = 45  # pixels per metre: the height of turtlesim's turtle images
+SEGMENTS = 20_000  # pen segments kept for the live view (the oldest go first); the pixels keep them all
 _TURTLE_BODY = (73, 156, 84)
 _TURTLE_HEAD = (32, 84, 40)
 _RGB = tuple[int, int, int]
+Segment = tuple[float, float, float, float, _RGB, int]  # x0, y0, x1, y1 (window metres), colour, width
 
 
 class Canvas:
-    """The path image the turtles' pens draw on (RGB plus a mask of what was drawn)."""
+    """The path image the turtles' pens draw on (RGB plus a mask of what was drawn), and its latest segments."""
 
-    __slots__ = ("rgb", "drawn")
+    __slots__ = ("rgb", "drawn", "segments")
 
     def __init__(self) -> None:
         self.rgb = np.full((SIZE, SIZE, 3), 255, dtype=np.uint8)
         self.drawn = np.zeros((SIZE, SIZE), dtype=bool)
+        self.segments: deque[Segment] = deque(maxlen=SEGMENTS)
 
     def clear(self) -> None:
         """Make every pixel transparent white again (the ``/clear`` service)."""
         self.rgb[:] = 255
         self.drawn[:] = False
+        self.segments.clear()
 
     def line(self, x0: float, y0: float, x1: float, y1: float, colour: _RGB, width: int) -> None:
         """A segment between two points in window metres (y down), ``width`` pixels wide."""
+        self.segments.append((x0, y0, x1, y1, colour, width))
         ax, ay, bx, by = x0 * METER, y0 * METER, x1 * METER, y1 * METER
         half = max(width, 1) / 2
         left, right = max(0, math.floor(min(ax, bx) - half)), min(SIZE - 1, math.ceil(max(ax, bx) + half))

@@ -24,6 +24,9 @@ from . import frames
 from .arena import World as Arena
 
 if TYPE_CHECKING:
+    from actors.recording.live import SceneHost
+    from actors.runtime import Runtime
+
     from .sim import World
 
 __all__ = [
@@ -34,6 +37,7 @@ __all__ = [
     "ROBOT_HEIGHT",
     "POINT_SIZE",
     "scene_update",
+    "scene_hosts",
 ]
 
 SCENE_TOPIC = "/scene"
@@ -161,3 +165,15 @@ def _pose(fm: Any, x: float, y: float, z: float, yaw: float) -> Any:
     """A pose turned ``yaw`` radians about z."""
     turn = fm.Quaternion(x=0.0, y=0.0, z=math.sin(yaw / 2), w=math.cos(yaw / 2))
     return fm.Pose(position=fm.Vector3(x=x, y=y, z=z), orientation=turn)
+
+
+def scene_hosts(runtime: Runtime) -> list[SceneHost]:
+    """What beside the graph shows 3D scenes (a live view).
+
+    The recording package is imported only when something is attached (it takes tens of ms).
+    """
+    if not runtime.attachments:
+        return []
+    from actors.recording.live import SceneHost
+
+    return [host for host in runtime.attachments if isinstance(host, SceneHost)]

@@ -28,11 +28,10 @@ from interfaces.rcl_interfaces.msg import FloatingPointRange, ParameterDescripto
 
 from .drive import Contact, Pose
 from .record import Recorder
-from .scene import SCENE_TOPIC, scene_update
+from .scene import SCENE_TOPIC, scene_hosts, scene_update
 from .simulation import Scans, Simulation
 
 if TYPE_CHECKING:
-    from actors.recording.live import SceneHost
     from actors.runtime import Runtime
 
 __all__ = ["World", "world_of"]
@@ -84,7 +83,7 @@ class World(Node):
         self._scans = Scans()
         self._scanned_at = -1
         _WORLDS[runtime] = self
-        self._scene_hosts = _scene_hosts(runtime)
+        self._scene_hosts = scene_hosts(runtime)
         for host in self._scene_hosts:
             host.add_scene(SCENE_TOPIC, lambda now_ns: scene_update(self, now_ns))
         self._touching: dict[str, tuple[Contact, ...]] = {}
@@ -142,18 +141,6 @@ class World(Node):
             for host in self._scene_hosts:
                 host.remove_scene(SCENE_TOPIC)
         super().destroy_node()
-
-
-def _scene_hosts(runtime: Runtime) -> list[SceneHost]:
-    """What beside the graph shows 3D scenes (a live view).
-
-    The recording package is imported only when something is attached (it takes tens of ms).
-    """
-    if not runtime.attachments:
-        return []
-    from actors.recording.live import SceneHost
-
-    return [host for host in runtime.attachments if isinstance(host, SceneHost)]
 
 
 def _describe(contact: Contact) -> str:

@@ -11,7 +11,9 @@ same log lines.  Each turtle's own topics, services and action are
 There is no window: the picture (:meth:`Turtlesim.picture`, the background,
 the pens' trails and the turtles) is drawn on request, and written as a PNG at
 shutdown when the parameter ``image`` names a file.  ``image`` is declared only
-when given, so ``param list`` shows what the real node's shows.
+when given, so ``param list`` shows what the real node's shows.  Beside a live
+view (``--foxglove``) the window is a 3D scene on ``/turtlesim/scene``
+(:mod:`world.turtlesim_scene`).
 """
 
 from __future__ import annotations
@@ -29,6 +31,7 @@ from interfaces.std_srvs.srv import Empty
 from interfaces.turtlesim.srv import Kill, Spawn
 
 from .canvas import METER, SIZE, Canvas, write_png
+from .scene import scene_hosts
 from .turtle import Turtle, f32
 
 __all__ = ["BACKGROUND", "FRAME_PERIOD", "WORLD_SIZE", "Turtlesim"]
@@ -69,6 +72,12 @@ class Turtlesim(Node):
         self.get_logger().info(f"Starting turtlesim with node name {self.get_fully_qualified_name()}")
         self.spawn("", WORLD_SIZE / 2, WORLD_SIZE / 2, 0.0)
         self.timer = self.create_timer(FRAME_PERIOD, self.on_frame)
+        self._scene_hosts = scene_hosts(self._core.runtime)
+        if self._scene_hosts:
+            from .turtlesim_scene import TURTLESIM_TOPIC, turtlesim_scene
+
+            for host in self._scene_hosts:
+                host.add_scene(TURTLESIM_TOPIC, lambda now_ns: turtlesim_scene(self, now_ns))
 
     def spawn(self, name: str, x: float, y: float, theta: float) -> str:
         """Add a turtle at (x, y) facing ``theta`` (world metres, y up); its name, or '' if it cannot be."""
@@ -147,3 +156,11 @@ class Turtlesim(Node):
         """Write the window to the file ``image`` names, if any."""
         if self._image:
             self.get_logger().info(f"wrote {self.save_png(self._image)}")
+
+    def destroy_node(self) -> None:
+        if self._scene_hosts:
+            from .turtlesim_scene import TURTLESIM_TOPIC
+
+            for host in self._scene_hosts:
+                host.remove_scene(TURTLESIM_TOPIC)
+        super().destroy_node()
