@@ -5,13 +5,15 @@ The node takes the real one's parameters (``translation.x/y/z``,
 logs what it publishes in the real one's words.  :func:`parse_args` reads the
 real program's command line (``--x 1 --yaw 0.5 --frame-id world
 --child-frame-id mystaticturtle``) into those parameters, refusing what it
-refuses.  The real node's name gets a random suffix; this one is
-``static_transform_publisher`` unless the graph names it.
+refuses; :func:`main` is the program (``actors run tf2_ros
+static_transform_publisher --x 1 ...``).  The real node's name gets a random
+suffix; this one is ``static_transform_publisher`` unless ``-r __node:=`` names it.
 """
 
 from __future__ import annotations
 
 import math
+import sys
 from collections.abc import Sequence
 from typing import Any
 
@@ -20,7 +22,7 @@ from interfaces.geometry_msgs.msg import TransformStamped
 from interfaces.rcl_interfaces.msg import ParameterDescriptor
 from interfaces.tf2_msgs.msg import TFMessage
 
-__all__ = ["USAGE", "StaticTransformPublisher", "parse_args"]
+__all__ = ["USAGE", "StaticTransformPublisher", "parse_args", "main"]
 
 USAGE = (
     "usage: static_transform_publisher [--x X] [--y Y] [--z Z] [--qx QX] [--qy QY] [--qz QZ] [--qw QW] "
@@ -104,3 +106,21 @@ class StaticTransformPublisher(Node):
             f"rotation: ('{rot.x:f}', '{rot.y:f}', '{rot.z:f}', '{rot.w:f}')\n"
             f"from '{t.header.frame_id}' to '{t.child_frame_id}'"
         )
+
+
+def main() -> int:
+    """The real program's command line under ``actors run``: runs until the run ends; 2 for bad arguments."""
+    from actors.compat.programs import run_native
+    from actors.launch.rosargs import parse
+
+    _, args = parse(sys.argv[1:])
+    if args[:1] in (["-h"], ["--help"]):
+        print(USAGE)
+        return 0
+    try:
+        params = parse_args(args)
+    except ValueError as exc:
+        print(f"static_transform_publisher: {exc}\n{USAGE}", file=sys.stderr)
+        return 2
+    run_native(StaticTransformPublisher, "static_transform_publisher", params)
+    return 0

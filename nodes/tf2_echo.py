@@ -1,7 +1,8 @@
 """tf2_echo, as tf2_ros's: prints the transform between two frames, once per ``1 / echo_rate`` seconds.
 
 Parameters ``source_frame`` and ``target_frame`` (the real program's two
-arguments) and ``echo_rate`` (Hz, default 1).  As in tf2_ros the printed
+arguments) and ``echo_rate`` (Hz, default 1); :func:`main` is the program,
+``actors run tf2_ros tf2_echo SOURCE TARGET [RATE]``.  As in tf2_ros the printed
 transform is the one that takes data from ``target_frame`` into
 ``source_frame``, at the latest time both have; until it exists, the node
 logs ``Waiting for transform ...`` with tf2's reason.  The output is the real
@@ -11,6 +12,7 @@ program's, number for number (three decimals, RPY from the rotation matrix).
 from __future__ import annotations
 
 import math
+import sys
 
 from actors import DurabilityPolicy, Node, QoSProfile
 from actors.errors import TransformException
@@ -19,7 +21,7 @@ from actors.ros.time import Time
 from interfaces.geometry_msgs.msg import TransformStamped
 from interfaces.tf2_msgs.msg import TFMessage
 
-__all__ = ["Tf2Echo", "echo_text", "matrix", "roll_pitch_yaw"]
+__all__ = ["Tf2Echo", "echo_text", "matrix", "roll_pitch_yaw", "main"]
 
 _AUTHORITY = "default_authority"
 
@@ -104,3 +106,28 @@ class Tf2Echo(Node):
             now = self.get_clock().now().nanoseconds / 1e9
             print(f"Failure at {now}\nException thrown:{exc}\nThe current list of frames is:", flush=True)
             print(self.buffer.all_frames_as_string(), flush=True)
+
+
+USAGE = "usage: tf2_echo source_frame target_frame [echo_rate]"
+
+
+def main() -> int:
+    """``tf2_echo SOURCE TARGET [RATE]`` under ``actors run``: runs until the run ends; 2 for bad arguments."""
+    from actors.compat.programs import run_native
+    from actors.launch.rosargs import parse
+
+    _, args = parse(sys.argv[1:])
+    if len(args) not in (2, 3):
+        print(f"{USAGE}\nEchoes the transform that takes data from target_frame into source_frame.", file=sys.stderr)
+        return 2
+    rate = 1.0
+    if len(args) == 3:
+        try:
+            rate = float(args[2])
+        except ValueError:
+            rate = 0.0
+        if not 0 < rate < math.inf:
+            print(f"tf2_echo: echo_rate {args[2]!r} is not a positive number of Hz", file=sys.stderr)
+            return 2
+    run_native(Tf2Echo, "tf2_echo", {"source_frame": args[0], "target_frame": args[1], "echo_rate": rate})
+    return 0

@@ -1,4 +1,7 @@
-"""Drives turtle1 around a circle (1 m/s, 0.5 rad/s) and, after SECONDS, prints where both turtles are."""
+"""Drives turtle1 around a circle (1 m/s, 0.5 rad/s) and, after SECONDS, prints where both turtles are.
+
+With ``--still`` it only reports (something else drives turtle1).
+"""
 
 import math
 import sys
@@ -10,13 +13,14 @@ from turtlesim.msg import Pose
 
 
 class Leader(Node):
-    def __init__(self, seconds: float) -> None:
+    def __init__(self, seconds: float, drive: bool) -> None:
         super().__init__("leader")
         self.poses: dict[str, Pose] = {}
         self.cmd = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
         for name in ("turtle1", "turtle2"):
             self.create_subscription(Pose, f"/{name}/pose", lambda p, name=name: self.poses.__setitem__(name, p), 10)
-        self.create_timer(0.1, self.drive)
+        if drive:
+            self.create_timer(0.1, self.drive)
         self.report_timer = self.create_timer(seconds, self.report)
 
     def drive(self) -> None:
@@ -33,7 +37,7 @@ class Leader(Node):
 
 def main() -> None:
     rclpy.init()
-    node = Leader(float(sys.argv[1]))
+    node = Leader(float(sys.argv[1]), "--still" not in sys.argv[2:])
     try:
         rclpy.spin(node)
     except KeyboardInterrupt:

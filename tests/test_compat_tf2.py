@@ -84,6 +84,12 @@ def follow(*args: str, partners: tuple[str, ...] = (), duration: float = 16) -> 
     return subprocess.run(command, cwd=ROOT, env=python_env(), capture_output=True, text=True, timeout=120)
 
 
+def where_turtle1(stdout: str) -> tuple[float, float]:
+    words = re.search(r"^turtle1 (\S+) (\S+)", stdout, re.M)
+    assert words, stdout
+    return float(words[1]), float(words[2])
+
+
 def where(done: subprocess.CompletedProcess[str]) -> dict[str, tuple[float, float]]:
     words = re.search(r"^turtle1 .*$", done.stdout, re.M)
     assert words, done.stdout + done.stderr
@@ -135,3 +141,46 @@ def test_a_static_frame_is_reached():
     done = follow("--ros-args", "-p", "target_frame:=goal", partners=(goal,))
     assert done.returncode == 0, done.stderr
     assert math.dist(where(done)["turtle2"], (8.0, 8.0)) < 0.3
+
+
+def actors_run(*args: str, stdin: str = "") -> subprocess.CompletedProcess[str]:
+    command = [sys.executable, "-m", "actors", "run", *args]
+    return subprocess.run(command, cwd=ROOT, env=python_env(), input=stdin, capture_output=True, text=True, timeout=120)
+
+
+@pytest.mark.slow
+def test_tf2_echo_and_static_transform_publisher_run_as_tf2_ros_executables():
+    publisher = "tf2_ros static_transform_publisher --x 1 --y 2 --yaw 0.5 --frame-id world --child-frame-id mystatic"
+    done = actors_run(
+        "--clock", "virtual", "--duration", "2.5", "--with", publisher, "tf2_ros", "tf2_echo", "world", "mystatic"
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.startswith("At time 0.0\n- Translation: [1.000, 2.000, 0.000]\n")  # first at 1 s
+    assert "- Rotation: in RPY (radian) [0.000, -0.000, 0.500]\n" in done.stdout
+    assert "from 'world' to 'mystatic'" in done.stderr
+    bad = actors_run("tf2_ros", "tf2_echo", "world", "mystatic", "fast")
+    assert (bad.returncode, bad.stderr) == (2, "tf2_echo: echo_rate 'fast' is not a positive number of Hz\n")
+    wrong = actors_run("tf2_ros", "static_transform_publisher", "--x", "1")
+    assert wrong.returncode == 2 and "both --frame-id and --child-frame-id are required" in wrong.stderr
+
+
+@pytest.mark.slow
+def test_turtlesim_and_its_teleop_run_as_ros2_run_starts_them():
+    leader = f"{SCRIPTS / 'turtle_leader.py'} 1.5 --still"
+    done = actors_run(
+        "--clock",
+        "virtual",
+        "--duration",
+        "2",
+        "--with",
+        "turtlesim turtlesim_node",
+        "--with",
+        leader,
+        "turtlesim",
+        "turtle_teleop_key",
+        stdin="\x1b[A",
+    )
+    assert done.returncode == 0, done.stderr
+    assert "Use arrow keys to move the turtle." in done.stdout
+    x, y = where_turtle1(done.stdout)
+    assert (round(x, 3), round(y, 3)) == (7.496, 5.544)  # 2 m/s for a second, forward from the centre

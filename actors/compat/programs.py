@@ -31,7 +31,7 @@ from actors.launch.packages import Executable, find_executable, find_package
 from actors.launch.rosargs import parse
 from actors.ros.node import Node
 
-__all__ = ["Program", "ScriptProgram", "EntryPointProgram", "program_for", "load_target"]
+__all__ = ["Program", "ScriptProgram", "EntryPointProgram", "program_for", "load_target", "run_native"]
 
 
 class Program:
@@ -88,7 +88,7 @@ class EntryPointProgram(Program):
     def run(self, *, main: bool = True) -> None:
         target = load_target(self.executable)
         if isinstance(target, type) and issubclass(target, Node):
-            _run_native(target, self.executable.name)
+            run_native(target, self.executable.name)
             return
         sys.exit(target())
 
@@ -116,7 +116,12 @@ def load_target(executable: Executable) -> Any:
     return target
 
 
-def _run_native(cls: type[Node], executable: str) -> None:
+def run_native(cls: type[Node], executable: str, params: dict[str, Any] | None = None) -> None:
+    """Spawn ``cls`` in the current run with the program's ``--ros-args``, and wait until the run ends.
+
+    ``params`` come from the program's own arguments (a tool's command line);
+    ``--ros-args -p`` overrides them.  Raises PackageError outside ``actors run``.
+    """
     from actors.launch.graph_file import default_node_name
 
     session = current_session()
@@ -124,10 +129,9 @@ def _run_native(cls: type[Node], executable: str) -> None:
         raise PackageError(f"{executable}: a native node runs under actors run or actors launch")
     ros_args, _ = parse(sys.argv[1:])
     setup = ros_args.for_node(default_node_name(cls) or executable, None)
+    given = {**(params or {}), **setup.params}
     session.call(
-        lambda: session.runtime.spawn(
-            cls, name=setup.name, namespace=setup.namespace, params=setup.params, remap=setup.remap
-        )
+        lambda: session.runtime.spawn(cls, name=setup.name, namespace=setup.namespace, params=given, remap=setup.remap)
     )
     session.wait_until(lambda: False, None)  # until the run ends: Ctrl-C, --duration, a failure
 
