@@ -283,7 +283,8 @@ class Client:
         server = self._server
         if server is None or not server._listed:
             server = self._table.servers.get(self.service_name)
-            if server is not None and server.node is self.node:
+            # Only a node whose callbacks run one at a time is refused (NodeCore.answers_own_calls).
+            if server is not None and server.node is self.node and not getattr(self.node, "answers_own_calls", False):
                 self._refuse_own(server)
             self._server = server
         if server is not None:

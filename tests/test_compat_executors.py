@@ -544,16 +544,12 @@ def test_a_timer_callback_taking_timer_info(session):
     assert got[0].actual_call_time.nanoseconds == 700_000_000  # when the spin called it, as rclpy's
 
 
-def test_what_differs_node_names_are_unique_and_a_node_cannot_call_its_own_service(session):
-    from actors.errors import InvalidNameError, ServiceError
+def test_what_differs_node_names_are_unique(session):
+    from actors.errors import InvalidNameError
 
-    node = rclpy.create_node("only_one")
+    rclpy.create_node("only_one")
     with pytest.raises(InvalidNameError, match="already runs"):
         rclpy.create_node("only_one")
-    node.create_service(AddTwoInts, "mine", lambda req, res: res)
-    client = node.create_client(AddTwoInts, "mine")
-    with pytest.raises(ServiceError, match="calls its own service"):
-        client.call_async(AddTwoInts.Request())
 
 
 def test_the_graph_view_shows_a_scripts_nodes(session):

@@ -45,9 +45,13 @@ def _invalid(what: str, text: str) -> InvalidNameError:
 def validate_node_name(name: str) -> str:
     """Return ``name`` if it is a valid ROS node name, else raise InvalidNameError."""
     if not isinstance(name, str) or not _NODE_NAME.match(name):
-        raise InvalidNodeNameException(
-            f"invalid node name {name!r}: use letters, digits and underscores, not starting with a digit"
-        )
+        if not name:
+            rule = "must not be empty"
+        elif isinstance(name, str) and re.fullmatch(r"[A-Za-z0-9_]+", name):
+            rule = "must not start with a number"
+        else:
+            rule = "must not contain characters other than alphanumerics or '_'"
+        raise InvalidNodeNameException(f"invalid node name {name!r}: a node name {rule}")
     return name
 
 
@@ -67,14 +71,18 @@ def is_hidden_name(name: str) -> bool:
 def _check_absolute(name: str, what: str) -> str:
     if name == "/" or _ABSOLUTE.match(name):
         return name  # one regex for the usual case; the loop below finds the culprit
-    tokens = name[1:].split("/")
-    for token in tokens:
+    if not name.startswith("/"):
+        raise _invalid(what, f"invalid {what} {name!r}: it must be absolute (start with '/')")
+    for token in name[1:].split("/"):
         if not _TOKEN.match(token):
-            raise _invalid(
-                what,
-                f"invalid {what} {name!r}: each part between '/' must be letters, digits "
-                f"and underscores, not empty and not starting with a digit",
-            )
+            # rcl's words for each rule, which rclpy's users (and tests) match on
+            if not token:
+                rule = "must not contain repeated '/' or end with '/'"
+            elif re.fullmatch(r"[A-Za-z0-9_]+", token):
+                rule = "must not start with a number in any part"
+            else:
+                rule = "must not contain characters other than alphanumerics, '_' or '/'"
+            raise _invalid(what, f"invalid {what} {name!r}: a {what} {rule}")
     return name
 
 

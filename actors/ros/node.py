@@ -129,6 +129,11 @@ class _Spawning:
 class NodeCore:
     """A node's name, actor, clock, logger and entities: everything behind ``Node``."""
 
+    # Whether a client of this node may call a service of this node.  A native node's callbacks
+    # run one at a time, so it may not: the call would wait forever.  A script node's services
+    # only queue requests for its executor (actors.compat), which rclpy lets answer its own calls.
+    answers_own_calls = False
+
     def __init__(
         self,
         node: Node,

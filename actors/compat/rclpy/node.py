@@ -21,16 +21,19 @@ import weakref
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
-import actors.compat.rclpy.logging  # noqa: F401 - as rclpy's node does: `rclpy.logging` is then set
+import actors.compat.rclpy.executors  # as rclpy's node does: `rclpy.executors` is then set
+import actors.compat.rclpy.logging  # noqa: F401 - and `rclpy.logging`
 from actors.compat.dispatch import NativeWork, ScriptActor, SpinningExecutor, WorkSource
 from actors.compat.rclpy.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup
 from actors.compat.rclpy.client import Client
+from actors.compat.rclpy.clock import ROSClock
 from actors.compat.rclpy.context import Context
 from actors.compat.rclpy.exceptions import NotInitializedException
 from actors.compat.rclpy.guard_condition import GuardCondition
 from actors.compat.rclpy.publisher import Publisher
 from actors.compat.rclpy.service import Service
 from actors.compat.rclpy.subscription import Subscription
+from actors.compat.rclpy.time_source import TimeSource
 from actors.compat.rclpy.timer import Rate, Timer
 from actors.compat.rclpy.utilities import get_default_context
 from actors.launch.rosargs import RosArgs, parse
@@ -89,7 +92,8 @@ class ScriptNodeState:
         self.waitables: list[WorkSource] = []
         self.native_work: dict[Any, NativeWork] = {}
         self.actor: ScriptActor
-        self.clock: Any = None
+        self.clock: ROSClock
+        self.time_source: TimeSource
         self.logger: NodeLogger
         self.destroyed = False
 
@@ -180,11 +184,15 @@ class Node(NativeNode):
                     self, setup.name, namespace=setup.namespace, parameter_overrides=setup.params, **options
                 )
             child.core = self._core
+            self._core.answers_own_calls = True  # its executor answers, as rclpy's (see NodeCore)
             native_logger = NativeNode.get_logger(self)
-            state.clock = NativeNode.get_clock(self)
+            # The node's own ROS clock on the runtime's time, which its time source can move to /clock.
+            state.clock = ROSClock(session.loop)
             state.logger = NodeLogger(native_logger.name, state.clock.now_ns, _threadsafe(native_logger.sink, session))
 
         session.call(build)
+        state.time_source = TimeSource(node=self)
+        state.time_source.attach_clock(state.clock)
         context.track_node(self)
 
     def _callback_failed(self, error: BaseException) -> None:
@@ -260,6 +268,10 @@ class Node(NativeNode):
     def waitables(self) -> list[WorkSource]:
         """The node's other work sources (action clients and servers)."""
         return list(self._rclpy.waitables)
+
+    def get_clock(self) -> ROSClock:
+        """The node's ROS clock: the runtime's time, or ``/clock``'s while ``use_sim_time`` is true."""
+        return self._rclpy.clock
 
     def get_logger(self) -> NodeLogger:
         """The node's logger (usable from any thread)."""
