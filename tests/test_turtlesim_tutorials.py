@@ -1,16 +1,21 @@
-"""The beginner CLI tutorials, page by page in our words: their commands, in order, against a running turtlesim."""
+"""The beginner CLI tutorials, page by page in our words: their commands, in order, against a running turtlesim.
+
+The pages: Understanding nodes, topics, services, parameters and actions, Recording and playing back
+data.  (Using turtlesim's teleop is tests/test_world_turtlesim.py's and test_compat_tf2.py's.)
+"""
 
 from __future__ import annotations
 
 import os
 import re
+import signal
 import subprocess
 import sys
 from collections.abc import Iterator
 
 import pytest
 from conftest import ROOT, python_env
-from test_cli_live import GraphProcess, actors, ok
+from test_cli_live import GraphProcess, actors, ok, started
 
 pytestmark = pytest.mark.slow  # the command line runs as child processes beside a graph in another
 
@@ -126,3 +131,32 @@ def test_understanding_actions(turtlesim):
     assert "Feedback:\n    remaining:" in result
     assert result.rstrip().endswith("Goal finished with status: SUCCEEDED")
     assert abs(pose(turtlesim)["theta"] - 1.57) < 0.02
+
+
+def test_recording_and_playing_back_data(turtlesim, tmp_path):
+    bag = tmp_path / "subset"
+    recorder = started(turtlesim, "bag", "record", "-o", str(bag), "/turtle1/cmd_vel")
+    try:
+        for _ in range(50):  # until the recorder subscribes (topic info counts it)
+            if "Subscription count: 2" in ok(turtlesim, "topic", "info", "/turtle1/cmd_vel"):
+                break
+        twist = "{linear: {x: 1.0, y: 0.0, z: 0.0}, angular: {x: 0.0, y: 0.0, z: 0.5}}"
+        for _ in range(2):
+            ok(turtlesim, "topic", "pub", "--once", "/turtle1/cmd_vel", "geometry_msgs/msg/Twist", twist)
+    finally:
+        recorder.send_signal(signal.SIGINT)
+        assert recorder.wait(timeout=30) == 0, recorder.stderr.read() if recorder.stderr else ""
+    info = subprocess.run(
+        [sys.executable, "-m", "actors", "bag", "info", str(bag)],
+        cwd=ROOT,
+        env=python_env(),
+        capture_output=True,
+        text=True,
+        timeout=30,
+    )
+    assert re.search(r"Topic: /turtle1/cmd_vel \| Type: geometry_msgs/msg/Twist \| Count: 2\b", info.stdout), info
+    ok(turtlesim, "service", "call", "/reset", "std_srvs/srv/Empty")
+    played = actors(turtlesim, "bag", "play", str(bag))
+    assert (played.returncode, played.stderr) == (0, f"played 2 message(s) from {bag}\n")
+    moved = pose(turtlesim)
+    assert (moved["x"], moved["y"]) != (pytest.approx(5.544444), pytest.approx(5.544444))  # the replay drove it
