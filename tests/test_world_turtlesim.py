@@ -341,3 +341,24 @@ def _read_scene(fm, update):
 
     schema = fm.SceneUpdate.get_schema()
     return protobuf_class(schema.name, schema.data).FromString(update.encode())
+
+
+async def test_nothing_a_peer_sends_crashes_turtlesim(caplog):
+    from actors.errors import ServiceError
+
+    async with Runtime() as rt:
+        sim = rt.spawn(Turtlesim)
+        watcher = rt.spawn(Watcher, ["turtle1"])
+        caller = rt.spawn(Caller)
+        wild = Twist()
+        wild.linear.x, wild.angular.z = math.nan, math.inf
+        watcher.pubs["turtle1"].publish(wild)  # refused: dropped and counted, the turtle keeps still
+        with pytest.raises(ServiceError, match="not finite"):
+            await call(caller, TeleportAbsolute, "/turtle1/teleport_absolute", x=math.inf, y=math.nan, theta=0.0)
+        for _ in range(2):  # far beyond the window, twice in one frame: clamped by the walls, not drawn
+            await call(caller, TeleportRelative, "/turtle1/teleport_relative", linear=3e38, angular=0.0)
+        assert (await call(caller, Spawn, "/spawn", x=math.nan, y=1.0, name="")).name == ""
+        await anyio.sleep(0.1)
+        assert rt.node("turtlesim") is sim
+        x, y = watcher.poses["turtle1"][-1][:2]
+        assert (x, y) == (as_f32(WORLD_SIZE), CENTRE)

@@ -49,7 +49,13 @@ class Canvas:
         self.segments.clear()
 
     def line(self, x0: float, y0: float, x1: float, y1: float, colour: _RGB, width: int) -> None:
-        """A segment between two points in window metres (y down), ``width`` pixels wide."""
+        """A segment between two points in window metres (y down), ``width`` pixels wide.
+
+        A segment with an end at infinity (a teleport far beyond the window, before the walls
+        clamp it) is not drawn.
+        """
+        if not all(math.isfinite(v) for v in (x0, y0, x1, y1)):
+            return
         self.segments.append((x0, y0, x1, y1, colour, width))
         ax, ay, bx, by = x0 * METER, y0 * METER, x1 * METER, y1 * METER
         half = max(width, 1) / 2

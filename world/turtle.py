@@ -29,6 +29,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from actors import CancelResponse, QoSProfile, ServerGoalHandle
+from actors.errors import MessageRefused
 from interfaces.geometry_msgs.msg import Twist
 from interfaces.turtlesim.action import RotateAbsolute
 from interfaces.turtlesim.msg import Color, Pose
@@ -102,6 +103,7 @@ class Turtle:
     # -- callbacks ----------------------------------------------------------------
 
     def on_velocity(self, twist: Twist) -> None:
+        _finite("cmd_vel", twist.linear.x, twist.linear.y, twist.angular.z, refuse=MessageRefused)
         self.last_command_ns = self.node.get_clock().now().nanoseconds
         self.lin_x = twist.linear.x
         if self.node.get_parameter("holonomic").value:
@@ -121,12 +123,14 @@ class Turtle:
     def on_teleport_relative(
         self, request: TeleportRelative.Request, response: TeleportRelative.Response
     ) -> TeleportRelative.Response:
+        _finite("teleport_relative", request.linear, request.angular)
         self.teleports.append((True, request.linear, 0.0, request.angular))
         return response
 
     def on_teleport_absolute(
         self, request: TeleportAbsolute.Request, response: TeleportAbsolute.Response
     ) -> TeleportAbsolute.Response:
+        _finite("teleport_absolute", request.x, request.y, request.theta)
         self.teleports.append((False, request.x, request.y, request.theta))
         return response
 
@@ -218,3 +222,9 @@ class Turtle:
             self.lin_x = self.lin_y = 0.0
             self.ang = -1.0 if remaining < 0.0 else 1.0
             self.last_command_ns = now_ns
+
+
+def _finite(what: str, *values: float, refuse: type[Exception] = ValueError) -> None:
+    # The real turtle would carry a NaN into its pose forever; here a peer's NaN or infinity is refused.
+    if not all(math.isfinite(v) for v in values):
+        raise refuse(f"{what}: {', '.join(repr(v) for v in values)} is not finite; refused")

@@ -18,6 +18,7 @@ view (``--foxglove``) the window is a 3D scene on ``/turtlesim/scene``
 
 from __future__ import annotations
 
+import math
 import os
 from pathlib import Path
 
@@ -81,6 +82,9 @@ class Turtlesim(Node):
 
     def spawn(self, name: str, x: float, y: float, theta: float) -> str:
         """Add a turtle at (x, y) facing ``theta`` (world metres, y up); its name, or '' if it cannot be."""
+        if not all(math.isfinite(v) for v in (x, y, theta)):
+            self.get_logger().error(f"Cannot spawn a turtle at x={x}, y={y}, theta={theta}: not finite")
+            return ""
         if not name:
             while True:
                 self._id_counter += 1
