@@ -8,7 +8,7 @@ from typing import Any
 
 from actors.recording.options import add_attachment_options
 
-__all__ = ["register"]
+__all__ = ["register", "add_session_options", "session_options"]
 
 
 def register(groups: Any) -> None:
@@ -23,18 +23,8 @@ def register(groups: Any) -> None:
             "program's (its own arguments and --ros-args ...)."
         ),
     )
-    parser.add_argument("--clock", choices=("wall", "virtual"), help="the runtime clock (default: wall)")
-    parser.add_argument("--duration", type=float, help="stop after this many seconds of runtime clock")
+    add_session_options(parser)
     parser.add_argument("--graph", metavar="GRAPH.toml", help="run the script beside this graph's nodes")
-    parser.add_argument(
-        "--timeout",
-        type=float,
-        metavar="S",
-        help="stop the run after S seconds of wall time, whatever the script does (exit code 124)",
-    )
-    parser.add_argument(
-        "--log-level", choices=("debug", "info", "warn", "error", "fatal"), help="the console's level (default: info)"
-    )
     parser.add_argument(
         "--with",
         dest="partners",
@@ -44,7 +34,6 @@ def register(groups: Any) -> None:
         help="another rclpy program to run beside it in the same runtime, e.g. its action "
         "server (quote it with its arguments: --with 'server.py ARGS' or --with 'PKG EXE ARGS'); repeatable",
     )
-    add_attachment_options(parser)
     parser.add_argument("script", help="the rclpy program, e.g. talker.py, or a package (then its executable)")
     parser.add_argument("args", nargs=argparse.REMAINDER, help="the program's arguments")
     parser.set_defaults(func=_run)
@@ -60,16 +49,41 @@ def _run(args: argparse.Namespace) -> int:
     except (FileNotFoundError, PackageError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    return run_script(
-        program,
-        rest,
-        clock=args.clock,
-        duration=args.duration,
-        graph=args.graph,
-        log_level=args.log_level,
-        partners=args.partners,
-        timeout=args.timeout,
-        record=args.record,
-        topics=args.topics,
-        foxglove=args.foxglove,
+    return run_script(program, rest, graph=args.graph, partners=args.partners, **session_options(args))
+
+
+def add_session_options(parser: argparse.ArgumentParser) -> None:
+    """The options of a run in one session (``actors run``, ``actors launch FILE``): clock, duration,
+    timeout, log level, transport, recording and the live view."""
+    parser.add_argument("--clock", choices=("wall", "virtual"), help="the runtime clock (default: wall)")
+    parser.add_argument("--duration", type=float, help="stop after this many seconds of runtime clock")
+    parser.add_argument(
+        "--timeout",
+        type=float,
+        metavar="S",
+        help="stop the run after S seconds of wall time, whatever the program does (exit code 124)",
     )
+    parser.add_argument(
+        "--log-level", choices=("debug", "info", "warn", "error", "fatal"), help="the console's level (default: info)"
+    )
+    parser.add_argument(
+        "--transport",
+        choices=("zenoh", "none"),
+        default="none",
+        help="reach other processes (another actors run or launch, ROS 2 with rmw_zenoh) over Zenoh; wall clock only",
+    )
+    add_attachment_options(parser)
+
+
+def session_options(args: argparse.Namespace) -> dict[str, Any]:
+    """:func:`add_session_options`' values, as run_script's keyword arguments."""
+    return {
+        "clock": args.clock,
+        "duration": args.duration,
+        "log_level": args.log_level,
+        "timeout": args.timeout,
+        "record": args.record,
+        "topics": args.topics,
+        "foxglove": args.foxglove,
+        "transport": args.transport == "zenoh",
+    }

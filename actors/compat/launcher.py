@@ -49,7 +49,7 @@ from actors.compat.rclpy.utilities import get_default_context, try_shutdown
 from actors.compat.script_state import ScriptArgv
 from actors.compat.session import Session
 from actors.compat.turns import Turn
-from actors.errors import ActorsError, GraphFileError, PackageError, RosArgsError
+from actors.errors import ActorsError, GraphFileError, LaunchFileError, PackageError, RosArgsError
 from actors.launch.graph_file import load_graph
 from actors.launch.rosargs import parse
 from actors.messages.discovery import add_workspace
@@ -73,6 +73,7 @@ def run_script(
     record: str | None = None,
     topics: Sequence[str] = (),
     foxglove: int | None = None,
+    transport: bool = False,
 ) -> int:
     """Run ``script`` (a file, or a :class:`~actors.compat.programs.Program`) with ``argv`` as its
     arguments; return the process's exit code.
@@ -84,8 +85,9 @@ def run_script(
     (:mod:`actors.compat.partners`); one that fails makes the exit code 1.
     ``timeout`` bounds the run in seconds of wall time (exit code 124).
     ``record``, ``topics`` and ``foxglove`` attach a recorder and a live view,
-    as ``python -m actors.run`` does.  Call it on the main thread (it handles
-    SIGINT and SIGTERM).
+    as ``python -m actors.run`` does; ``transport`` reaches other processes over
+    Zenoh (the default settings; the wall clock only).  Call it on the main
+    thread (it handles SIGINT and SIGTERM).
     """
     try:
         program = script if isinstance(script, Program) else program_for([script])[0]
@@ -122,8 +124,19 @@ def run_script(
             file=sys.stderr,
         )
         return 2
+    if transport and clock == "virtual":
+        print(
+            "error: --transport zenoh runs on the wall clock: other processes cannot follow virtual time",
+            file=sys.stderr,
+        )
+        return 2
     try:
         attach = attachments(record=record, topics=topics, foxglove=foxglove)
+        if transport:
+            from actors.launch.graph_file import TransportSection
+            from actors.transport.zenoh import ZenohTransport
+
+            attach.append(ZenohTransport(TransportSection()))
     except (ActorsError, ImportError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
@@ -346,7 +359,7 @@ def _run(program: Program, command_line: MutableSequence[str], stop: _Stop) -> i
         if stop.requested:
             return 0
         raise
-    except (RosArgsError, PackageError) as exc:
+    except (RosArgsError, PackageError, LaunchFileError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     except BaseException as exc:
