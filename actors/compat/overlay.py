@@ -3,7 +3,8 @@
 While installed, a finder first on ``sys.meta_path`` answers for ``rclpy``,
 ``rclpy.<module>`` (the modules of :mod:`actors.compat.rclpy`), ``tf2_ros``,
 ``tf2_geometry_msgs`` and ``tf_transformations`` (tf2's Python side),
-``ament_index_python`` (packages as :mod:`actors.launch.packages` finds them), and every shipped
+``ament_index_python`` (packages as :mod:`actors.launch.packages` finds them),
+``launch`` and ``launch_ros`` (launch files' API), and every shipped
 interface package (``std_msgs``, ``std_msgs.msg``, ``example_interfaces.srv``...,
 the modules of ``interfaces.<pkg>``).  The names are aliases: ``rclpy.node`` *is*
 ``actors.compat.rclpy.node``, so ``std_msgs.msg.String is
@@ -38,6 +39,8 @@ _PROVIDED = {
     "tf2_geometry_msgs": "actors.compat.tf2_geometry_msgs",
     "tf_transformations": "actors.compat.tf_transformations",
     "ament_index_python": "actors.compat.ament_index_python",
+    "launch": "actors.compat.launch",
+    "launch_ros": "actors.compat.launch_ros",
 }
 
 

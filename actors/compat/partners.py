@@ -53,9 +53,16 @@ class Partner:
     """One partner script: its thread, its rclpy state, and how it ended."""
 
     def __init__(
-        self, session: Session, program: Program, argv: Sequence[str], report: Callable[[BaseException, Program], None]
+        self,
+        session: Session,
+        program: Program,
+        argv: Sequence[str],
+        report: Callable[[BaseException, Program], None],
+        on_exit: Callable[[int], None] | None = None,
     ) -> None:
         self.program = program
+        self.returncode: int | None = None
+        self._on_exit = on_exit
         self.state = ScriptState(program.name, [program.argv0, *argv])
         self.failed = False
         self._session = session
@@ -70,15 +77,22 @@ class Partner:
 
     def _main(self) -> None:
         enter(self.state)  # a new thread starts with an empty context: this state is the script's alone
+        code = 0
         try:
             self.program.run(main=False)
         except SystemExit as exc:
             self.failed = exc.code not in (None, 0)
+            code = exc.code if isinstance(exc.code, int) else int(self.failed)
         except (KeyboardInterrupt, ExternalShutdownException):
             self.failed = not self._stopping
+            code = int(self.failed)
         except BaseException as exc:
             self.failed = True
+            code = 1
             self._report(exc, self.program)
+        self.returncode = code
+        if self._on_exit is not None:
+            self._on_exit(code)
 
     @property
     def running(self) -> bool:

@@ -26,12 +26,22 @@ from pathlib import Path
 from typing import Any
 
 from actors.compat.rclpy.context import current_session
+from actors.compat.session import Session
 from actors.errors import PackageError
 from actors.launch.packages import Executable, find_executable, find_package
 from actors.launch.rosargs import parse
 from actors.ros.node import Node
 
-__all__ = ["Program", "ScriptProgram", "EntryPointProgram", "program_for", "load_target", "run_native"]
+__all__ = [
+    "Program",
+    "ScriptProgram",
+    "EntryPointProgram",
+    "program_for",
+    "program_of",
+    "load_target",
+    "run_native",
+    "spawn_native",
+]
 
 
 class Program:
@@ -122,18 +132,35 @@ def run_native(cls: type[Node], executable: str, params: dict[str, Any] | None =
     ``params`` come from the program's own arguments (a tool's command line);
     ``--ros-args -p`` overrides them.  Raises PackageError outside ``actors run``.
     """
-    from actors.launch.graph_file import default_node_name
-
     session = current_session()
     if session is None:
         raise PackageError(f"{executable}: a native node runs under actors run or actors launch")
-    ros_args, _ = parse(sys.argv[1:])
+    spawn_native(session, cls, executable, sys.argv[1:], params)
+    session.wait_until(lambda: False, None)  # until the run ends: Ctrl-C, --duration, a failure
+
+
+def spawn_native(
+    session: Session, cls: type[Node], executable: str, argv: Sequence[str], params: dict[str, Any] | None = None
+) -> Node:
+    """Spawn ``cls`` in the session's runtime with the name, namespace, remappings and parameters its
+    ``--ros-args`` in ``argv`` give it (over ``params``); RosArgsError for malformed ones."""
+    from actors.launch.graph_file import default_node_name
+
+    ros_args, _ = parse(argv)
     setup = ros_args.for_node(default_node_name(cls) or executable, None)
     given = {**(params or {}), **setup.params}
-    session.call(
+    return session.call(
         lambda: session.runtime.spawn(cls, name=setup.name, namespace=setup.namespace, params=given, remap=setup.remap)
     )
-    session.wait_until(lambda: False, None)  # until the run ends: Ctrl-C, --duration, a failure
+
+
+def program_of(executable: Executable, folder: Path | None, prefix: Path | None) -> Program:
+    """The program that runs ``executable`` of the package in ``folder`` (sources) or at ``prefix`` (an install)."""
+    if executable.target is not None:
+        assert folder is not None
+        return EntryPointProgram(executable, folder)
+    assert executable.path is not None and prefix is not None
+    return _installed_program(executable.path, prefix)
 
 
 def program_for(words: Sequence[str]) -> tuple[Program, list[str]]:
@@ -155,11 +182,7 @@ def program_for(words: Sequence[str]) -> tuple[Program, list[str]]:
         raise PackageError(f"actors run {first}: name one of package {package.name!r}'s executables after it")
     executable = find_executable(first, rest[0])
     package = find_package(first)
-    if executable.target is not None:
-        assert package.source is not None
-        return EntryPointProgram(executable, package.source), rest[1:]
-    assert executable.path is not None and package.installed_prefix is not None
-    return _installed_program(executable.path, package.installed_prefix), rest[1:]
+    return program_of(executable, package.source, package.installed_prefix), rest[1:]
 
 
 def _installed_program(path: Path, prefix: Path) -> Program:
