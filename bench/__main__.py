@@ -15,6 +15,7 @@ from typing import NamedTuple
 from bench import (
     cdr,
     interfaces,
+    launch,
     memory,
     recording,
     scale,
@@ -53,6 +54,7 @@ SCENARIOS = (
     Scenario("k", "zenoh", transport.run),
     Scenario("l", "recording", recording.run),
     Scenario("m", "interfaces", interfaces.run),
+    Scenario("n", "launch", launch.run),
 )
 
 

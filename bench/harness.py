@@ -188,8 +188,16 @@ def run_child(args: Sequence[str], env: Mapping[str, str] | None = None, timeout
     return json.loads(lines[-1])
 
 
-def time_to_line(args: Sequence[str], marker: str, env: Mapping[str, str] | None = None, timeout: float = 60) -> float:
-    """Seconds from starting ``python ARGS`` until it prints a line containing ``marker``.
+def time_to_line(
+    args: Sequence[str],
+    marker: str,
+    env: Mapping[str, str] | None = None,
+    timeout: float = 60,
+    *,
+    stderr_too: bool = False,
+) -> float:
+    """Seconds from starting ``python ARGS`` until it prints a line containing ``marker`` (on stdout, or
+    with ``stderr_too`` on either: rclpy programs log on stderr).
 
     The child is then stopped with SIGTERM (killed if it lingers, or once
     ``timeout`` seconds have passed).  Raises RuntimeError, with the child's last
@@ -198,7 +206,12 @@ def time_to_line(args: Sequence[str], marker: str, env: Mapping[str, str] | None
     with tempfile.TemporaryFile("w+") as errors:
         start = time.perf_counter()
         proc = subprocess.Popen(
-            [sys.executable, *args], cwd=ROOT, env=env or child_env(), stdout=subprocess.PIPE, stderr=errors, text=True
+            [sys.executable, *args],
+            cwd=ROOT,
+            env=env or child_env(),
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT if stderr_too else errors,
+            text=True,
         )
         watchdog = threading.Timer(timeout, proc.kill)
         watchdog.start()

@@ -1,4 +1,4 @@
-"""The performance targets of issues 7, 16 and 29, checked against the results of one run."""
+"""The performance targets of issues 7, 16, 29 and 31, checked against the results of one run."""
 
 from __future__ import annotations
 
@@ -13,6 +13,7 @@ __all__ = ["Target", "TARGETS", "check"]
 Lookup = Callable[[str, str], Result | None]
 
 INTERFACES = "m. interfaces, 30-type package import"
+LAUNCH = "n. launch, 100 nodes"
 
 
 @dataclass(frozen=True)
@@ -157,6 +158,16 @@ TARGETS = (
         _at_most(INTERFACES, "first import (empty cache)", 0.150, "s"),
     ),
     Target("m", "a cached import of it ≤ 20 ms", _at_most(INTERFACES, "cached import", 0.020, "s")),
+    # Issue 31's: a ROS 2 launch file against the same graph as TOML (fresh processes, to the 100th node's message).
+    Target("n", "a launch of 100 nodes starts ≤ 1 s", _at_most(LAUNCH, "launch file (.launch.py)", 1.0, "s")),
+    Target(
+        "n",
+        "a launch file's parse + start adds ≤ 100 ms over the TOML graph",
+        _all(
+            _at_most(LAUNCH, "launch file (.launch.py) less TOML", 0.100, "s"),
+            _at_most(LAUNCH, "launch file (.launch.xml) less TOML", 0.100, "s"),
+        ),
+    ),
     # Issue 13's: across two processes on loopback, actors over Zenoh against rclpy over Fast DDS.
     Target(
         "k",

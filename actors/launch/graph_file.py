@@ -253,8 +253,18 @@ def default_node_name(cls: type[Node]) -> str | None:
     ``super().__init__("talker")`` or ``super().__init__(node_name="talker")``
     in the class's own ``__init__`` (or the nearest base that has one).  A name
     computed at run time is None: the runtime still refuses a duplicate when
-    it starts the node.
+    it starts the node.  Read once per class (its source does not change while
+    the process runs, and reading it is not cheap: a launch of many nodes asks often).
     """
+    if cls not in _default_names:
+        _default_names[cls] = _default_name(cls)
+    return _default_names[cls]
+
+
+_default_names: dict[type[Node], str | None] = {}
+
+
+def _default_name(cls: type[Node]) -> str | None:
     for klass in cls.__mro__:
         if klass is Node or "__init__" not in vars(klass):
             continue

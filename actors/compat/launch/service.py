@@ -47,7 +47,7 @@ from actors.compat.rclpy.context import current_session
 from actors.compat.script_state import ScriptArgv
 from actors.compat.session import Session
 from actors.errors import LaunchFileError, PackageError, RosArgsError
-from actors.launch.packages import Executable, find_package
+from actors.launch.packages import Executable, Package, find_executable, find_package
 from actors.ros.node import Node as NativeNode
 
 __all__ = ["LaunchProgram", "LaunchService", "find_launch_file", "parse_launch_arguments"]
@@ -143,6 +143,7 @@ class LaunchService:
         self._counts: Counter[str] = Counter()
         self._shutdown: str | None = None
         self._folder = tempfile.mkdtemp(prefix="actors-launch-")
+        self._executables: dict[tuple[str, str], tuple[Executable, Package]] = {}
 
     # -- the main loop -------------------------------------------------------------------
 
@@ -191,6 +192,13 @@ class LaunchService:
                 stack.extend(reversed(list(result)))
 
     # -- what actions ask for --------------------------------------------------------------
+
+    def executable(self, package: str, executable: str) -> tuple[Executable, Package]:
+        """A package's executable and the package, looked up once per launch (PackageError if there is none)."""
+        key = (package, executable)
+        if key not in self._executables:
+            self._executables[key] = (find_executable(package, executable), find_package(package))
+        return self._executables[key]
 
     def load(self, path: str, where: str | None = None) -> LaunchDescription:
         """The description in the launch file ``path``."""
@@ -243,15 +251,14 @@ class LaunchService:
         self,
         action: Any,
         executable: Executable,
-        folder: Path | None,
+        package: Package,
         argv: list[str],
         label: str,
         respawn: bool,
         respawn_delay: float,
     ) -> None:
         """Start a package's executable as a node of this launch."""
-        package = find_package(executable.package)
-        program = program_of(executable, folder, package.installed_prefix)
+        program = program_of(executable, package.source, package.installed_prefix)
         self._counts[label] += 1
         name = f"{label}-{self._counts[label]}"
         for path in reversed(program.paths):
@@ -259,7 +266,7 @@ class LaunchService:
                 sys.path.insert(0, str(path))
         running = _Running(action, name, os.getpid(), " ".join([executable.name, *argv]))
         if respawn:
-            running.respawn = lambda: self.start_node(action, executable, folder, argv, label, respawn, respawn_delay)
+            running.respawn = lambda: self.start_node(action, executable, package, argv, label, respawn, respawn_delay)
             running.extra["delay"] = respawn_delay
         target = load_target(executable) if executable.target is not None else None
         if isinstance(target, type) and issubclass(target, NativeNode):

@@ -154,13 +154,10 @@ class Node(Action):
         self.respawn_delay = respawn_delay
 
     def execute(self, context: LaunchContext) -> None:
-        from actors.launch.packages import find_executable, find_package
-
         package = perform_substitutions(context, self.package)
         executable = perform_substitutions(context, self.executable)
         try:
-            found = find_executable(package, executable)
-            folder = find_package(package).source
+            found, where = context.service.executable(package, executable)
         except PackageError as exc:
             raise LaunchFileError(f"{self.where}: {exc}") from None
         argv = [perform_substitutions(context, word) for word in self.arguments]
@@ -197,4 +194,4 @@ class Node(Action):
         if not isinstance(respawn, bool):
             respawn = perform_substitutions(context, respawn).strip().lower() in ("true", "1")
         label = perform_substitutions(context, self.exec_name) if self.exec_name else executable
-        context.service.start_node(self, found, folder, argv, label, respawn, float(self.respawn_delay or 0.0))
+        context.service.start_node(self, found, where, argv, label, respawn, float(self.respawn_delay or 0.0))
