@@ -89,8 +89,8 @@ def runs_a_graph(words: list[str]) -> bool:
 
 
 def until_interrupted(words: list[str]) -> bool:
-    """A graph file run without a duration: on the wall clock, until Ctrl-C."""
-    return words[2:4] != ["actors", "run"] and "--duration" not in words
+    """A graph file run without a duration: on the wall clock, until Ctrl-C (``--show-args`` runs nothing)."""
+    return words[2:4] != ["actors", "run"] and "--duration" not in words and "--show-args" not in words
 
 
 def streams(words: list[str]) -> bool:
