@@ -441,6 +441,42 @@ def test_a_thread_holding_virtual_time_for_long_is_named_in_a_warning(session, m
     assert now(session) == start + 1.0
 
 
+class Busy(NativeNode):
+    """A native node whose 1 kHz timer takes real time: the loop has work while the script waits."""
+
+    def __init__(self) -> None:
+        super().__init__("busy")
+        self.create_timer(0.001, lambda: time.perf_counter_ns() and sum(range(2000)))
+
+
+def test_the_main_thread_running_the_loop_in_its_waits_is_not_named_in_a_warning(monkeypatch):
+    # The main thread's waits run the loop's iterations themselves (VirtualTurn._drive): the loop's
+    # own thread sees no hand-over for a long time, yet nobody holds virtual time still.  A session
+    # of its own: the loop's thread first waits with the warning's bound patched.
+    import logging
+
+    import actors.compat.turns
+
+    monkeypatch.setattr(actors.compat.turns, "HOLD_WARNING", 0.05)
+    warnings, _warned, catch = _catch_warnings()
+    logging.getLogger("actors").addHandler(catch)
+    session = Session(clock="virtual").start()
+    try:
+        spawn_native(session, Busy)
+        start, real = now(session), time.perf_counter()
+        while time.perf_counter() - real < 0.5:  # real time, many times the warning's bound
+            session.sleep(0.01)  # a wait, in which this thread runs the loop
+            busy = time.perf_counter() + 0.002  # then it works between two waits, far below the bound
+            while time.perf_counter() < busy:
+                pass
+        assert now(session) > start
+        assert session.turn._drives > 10  # type: ignore[attr-defined]  # it did run the loop
+    finally:
+        session.close()
+        logging.getLogger("actors").removeHandler(catch)
+    assert warnings == []
+
+
 def test_a_thread_blocked_in_a_c_call_holds_virtual_time_until_it_returns(session, monkeypatch):
     # input(), a socket, a bare lock: the clock waits for it (that keeps runs repeatable), and a
     # warning names it with the line where it last left the runtime.

@@ -367,6 +367,7 @@ class VirtualTurn(Turn):
         # Who gets the baton when no thread queues for it: the loop's thread, or the main thread
         # while it runs the loop itself (see _drive).
         self._party = self._loop_waiter
+        self._drives = 0  # how often the main thread has run the loop: the hold warning's clue
         self._loop_ident: int | None = None
         self.expected = 0  # threads told to come and take the baton that have not queued yet
         self._where: dict[int, tuple[str, str, int] | None] = {}  # where each holder last left a wait
@@ -466,6 +467,7 @@ class VirtualTurn(Turn):
         # goes round between two iterations, as the loop's select would send it round, and the
         # loop stops there for ``waiter``, before the iteration the loop's thread would run after.
         loop: Any = self.loop
+        self._drives += 1
         self._party = waiter  # the baton comes back here: as the loop's share, or as waiter's own
         outer = _get_running_loop()
         _set_running_loop(loop)
@@ -606,11 +608,15 @@ class VirtualTurn(Turn):
 
     def _park_loop(self) -> None:
         sem = self._party._sem
+        drives = self._drives
         while not sem.acquire(timeout=HOLD_WARNING):
-            if sem is self._party._sem:  # else the main thread runs the loop meanwhile, and waits for nobody
+            # The main thread running the loop (now, or since the last look) waits as often as it
+            # runs: only a holder that did neither for the whole time is named.
+            if sem is self._party._sem and drives == self._drives:
                 self._warn_holding()
                 sem.acquire()
                 break
+            drives = self._drives
         self.holder = _get_ident()
         self._depth = 1
 
