@@ -317,3 +317,27 @@ def test_a_launch_argument_outside_its_choices_or_not_name_value(tmp_path):
     assert done.stderr == f"error: {tmp_path}/c.launch.xml:2: launch argument 'm' is 'z', not one of a, b\n"
     done = launch(str(tmp_path / "c.launch.xml"), "m=z", cwd=tmp_path)
     assert (done.returncode, done.stderr) == (2, "error: launch arguments are name:=value, got 'm=z'\n")
+
+
+TWO_TURTLES = {
+    "py": "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n\n\n"
+    "def generate_launch_description():\n    return LaunchDescription([\n"
+    "        Node(package='turtlesim', namespace='turtlesim1', executable='turtlesim_node', name='sim'),\n"
+    "        Node(package='turtlesim', namespace='turtlesim2', executable='turtlesim_node', name='sim'),\n    ])\n",
+    "xml": '<launch>\n  <node pkg="turtlesim" exec="turtlesim_node" name="sim" namespace="turtlesim1"/>\n'
+    '  <node pkg="turtlesim" exec="turtlesim_node" name="sim" namespace="turtlesim2"/>\n</launch>\n',
+    "yaml": "launch:\n- node: {pkg: turtlesim, exec: turtlesim_node, name: sim, namespace: turtlesim1}\n"
+    "- node: {pkg: turtlesim, exec: turtlesim_node, name: sim, namespace: turtlesim2}\n",
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("front_end", sorted(TWO_TURTLES))
+def test_two_shipped_turtlesims_in_namespaces_as_the_launch_tutorial_starts_them(tmp_path, front_end):
+    # "Creating a launch file": two turtlesim nodes of one name in two namespaces (its mimic node is not shipped).
+    path = tmp_path / f"turtles.launch.{front_end}"
+    path.write_text(TWO_TURTLES[front_end])
+    done = launch("--clock", "virtual", "--duration", "1", str(path), cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    for namespace in ("turtlesim1", "turtlesim2"):
+        assert f"[{namespace}.sim]: Starting turtlesim with node name /{namespace}/sim" in done.stderr
