@@ -160,3 +160,43 @@ def test_recording_and_playing_back_data(turtlesim, tmp_path):
     assert (played.returncode, played.stderr) == (0, f"played 2 message(s) from {bag}\n")
     moved = pose(turtlesim)
     assert (moved["x"], moved["y"]) != (pytest.approx(5.544444), pytest.approx(5.544444))  # the replay drove it
+
+
+LAUNCH = """
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package="turtlesim", namespace="turtlesim1", executable="turtlesim_node", name="sim"),
+        Node(package="turtlesim", namespace="turtlesim2", executable="turtlesim_node", name="sim"),
+        Node(
+            package="turtlesim",
+            executable="mimic",
+            name="mimic",
+            remappings=[
+                ("/input/pose", "/turtlesim1/turtle1/pose"),
+                ("/output/cmd_vel", "/turtlesim2/turtle1/cmd_vel"),
+            ],
+        ),
+    ])
+"""
+
+
+def test_launching_nodes(tmp_path):
+    path = tmp_path / "turtlesim_mimic_launch.py"
+    path.write_text(LAUNCH)
+    done = subprocess.run(
+        [sys.executable, "-m", "actors", "launch", str(path), "--clock", "virtual", "--duration", "1"],
+        cwd=ROOT,
+        env=python_env(),
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert done.returncode == 0, done.stderr
+    out = done.stdout + done.stderr
+    assert "Starting turtlesim with node name /turtlesim1/sim" in out
+    assert "Starting turtlesim with node name /turtlesim2/sim" in out
+    assert "[mimic-1]: process started" in out  # ros2 launch numbers each executable's processes

@@ -19,6 +19,7 @@ from interfaces.turtlesim.action import RotateAbsolute
 from interfaces.turtlesim.msg import Color, Pose
 from interfaces.turtlesim.srv import Kill, SetPen, Spawn, TeleportAbsolute, TeleportRelative
 from world.canvas import METER, png_bytes
+from world.mimic import Mimic
 from world.teleop_key import TeleopTurtle
 from world.turtlesim import BACKGROUND, WORLD_SIZE, Turtlesim
 
@@ -362,3 +363,21 @@ async def test_nothing_a_peer_sends_crashes_turtlesim(caplog):
         assert rt.node("turtlesim") is sim
         x, y = watcher.poses["turtle1"][-1][:2]
         assert (x, y) == (as_f32(WORLD_SIZE), CENTRE)
+
+
+async def test_mimic_makes_the_second_turtlesim_copy_the_first():
+    async with Runtime() as rt:
+        rt.spawn(Turtlesim, namespace="turtlesim1", name="sim")
+        rt.spawn(Turtlesim, namespace="turtlesim2", name="sim")
+        rt.spawn(
+            Mimic,
+            remap={"input/pose": "/turtlesim1/turtle1/pose", "output/cmd_vel": "/turtlesim2/turtle1/cmd_vel"},
+        )
+        watcher = rt.spawn(Watcher, ["turtlesim1/turtle1", "turtlesim2/turtle1"])
+        twist = Twist()
+        twist.linear.x, twist.angular.z = 2.0, 1.8
+        watcher.pubs["turtlesim1/turtle1"].publish(twist)
+        await anyio.sleep(2.0)
+    leader, follower = watcher.poses["turtlesim1/turtle1"][-1], watcher.poses["turtlesim2/turtle1"][-1]
+    assert leader[:3] != (CENTRE, CENTRE, 0.0)
+    assert math.dist(leader[:2], follower[:2]) < 0.1  # the same arc, a frame or two behind
