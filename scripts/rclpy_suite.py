@@ -125,7 +125,8 @@ def _read_records(path: Path, result: FileResult) -> None:
         outcome = record["outcome"]
         if outcome == "failed":
             result.outcomes[test] = "failed" if phase == "call" else "error"
-            result.messages.setdefault(test, f"{phase}: {record.get('message', '')}")
+            message = " ".join(str(record.get("message", "")).split())  # one line in the listing
+            result.messages.setdefault(test, f"{phase}: {message}")
         elif outcome == "skipped":
             result.outcomes[test] = "skipped"
         elif phase == "call" and result.outcomes.get(test) == "hung":

@@ -48,7 +48,7 @@ def test_a_profile_needs_a_history_or_a_depth():
     assert (profile.history, profile.depth) == (HistoryPolicy.KEEP_LAST, 7)
     assert profile.reliability is ReliabilityPolicy.RELIABLE and profile.durability is DurabilityPolicy.VOLATILE
     assert profile.liveliness is LivelinessPolicy.SYSTEM_DEFAULT and profile.deadline == Duration()
-    with pytest.warns(UserWarning, match="depth of 0"):
+    with pytest.warns(UserWarning, match="zero depth"):
         QoSProfile(depth=0)
     with pytest.raises(ValueError):
         QoSProfile(depth=-1)

@@ -100,6 +100,11 @@ class RosArgs:
     params: tuple[ParamRule, ...] = ()
     log_levels: dict[str, int] = field(default_factory=dict)  # "" is the default level
     enclave: str | None = None
+    log_outputs: dict[str, bool] = field(default_factory=dict)  # --enable/--disable-<what>-logs: what -> on
+
+    def logs_to(self, what: str) -> bool:
+        """Whether logs go to ``what`` (``stdout``, ``rosout``, ``external-lib``): on unless disabled."""
+        return self.log_outputs.get(what, True)
 
     @property
     def log_level(self) -> int | None:
@@ -113,6 +118,7 @@ class RosArgs:
             self.params + other.params,
             {**self.log_levels, **other.log_levels},
             other.enclave or self.enclave,
+            {**self.log_outputs, **other.log_outputs},
         )
 
     def for_node(self, name: str, namespace: str | None) -> NodeArgs:
@@ -144,6 +150,7 @@ def parse(argv: Sequence[str]) -> tuple[RosArgs, list[str]]:
     params: list[ParamRule] = []
     levels: dict[str, int] = {}
     enclave: str | None = None
+    outputs: dict[str, bool] = {}
     rest: list[str] = []
     unknown: list[str] = []
     in_ros = False
@@ -164,6 +171,8 @@ def parse(argv: Sequence[str]) -> tuple[RosArgs, list[str]]:
             in_ros = False
             continue
         if arg in _FLAGS:
+            state, what = arg[2:-5].split("-", 1)  # --enable-rosout-logs -> enable, rosout
+            outputs[what] = state == "enable"
             continue
         takes_value = arg in ("-p", "--param", "-r", "--remap", "--params-file", "--log-level")
         if not (takes_value or arg in _ENCLAVE or arg in _IGNORED_WITH_VALUE):
@@ -186,7 +195,7 @@ def parse(argv: Sequence[str]) -> tuple[RosArgs, list[str]]:
             enclave = value
     if unknown:
         raise RosArgsError(f"--ros-args: unknown ROS arguments {unknown}")
-    return RosArgs(tuple(remaps), tuple(params), levels, enclave), rest
+    return RosArgs(tuple(remaps), tuple(params), levels, enclave, outputs), rest
 
 
 def remove_ros_args(argv: Sequence[str]) -> list[str]:

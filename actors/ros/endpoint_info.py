@@ -7,6 +7,8 @@ from typing import Any
 
 import msgspec
 
+from actors.codec import type_hash
+from actors.ros.qos import QoSProfile, QoSSnapshot
 from actors.ros.topics import type_name
 
 __all__ = ["TopicEndpointTypeEnum", "TopicEndpointInfo", "endpoint_info"]
@@ -24,13 +26,14 @@ class TopicEndpointInfo(msgspec.Struct, kw_only=True):
     """A publisher or subscription of a topic, with the fields rclpy's has.
 
     ``endpoint_gid`` is an opaque id, unique among the endpoints alive in the
-    process (as a GID is in a ROS graph).  rclpy's ``topic_type_hash`` is not
-    given.
+    process (as a GID is in a ROS graph); ``topic_type_hash`` is the type's
+    RIHS01 hash ("" when unknown, printed INVALID as rclpy does).
     """
 
     node_name: str = ""
     node_namespace: str = ""
     topic_type: str = ""
+    topic_type_hash: str = ""
     endpoint_type: TopicEndpointTypeEnum = TopicEndpointTypeEnum.INVALID
     endpoint_gid: list[int] = msgspec.field(default_factory=list)
     qos_profile: Any = None
@@ -41,17 +44,26 @@ class TopicEndpointInfo(msgspec.Struct, kw_only=True):
             f"Node name: {self.node_name}",
             f"Node namespace: {self.node_namespace}",
             f"Topic type: {self.topic_type}",
+            f"Topic type hash: {self.topic_type_hash or 'INVALID'}",
             f"Endpoint type: {self.endpoint_type.name}",
             f"GID: {'.'.join(format(b, '02x') for b in self.endpoint_gid)}",
             "QoS profile:",
         ]
-        if qos is not None:
-            depth = f" ({qos.depth})" if qos.history.name == "KEEP_LAST" else ""
-            lines += [
-                f"  Reliability: {qos.reliability.name}",
-                f"  History (Depth): {qos.history.name}{depth}",
-                f"  Durability: {qos.durability.name}",
-            ]
+        if qos is None:  # an info made by hand: rmw's unknown profile
+            lines += [f"  {name}: UNKNOWN" for name in ("Reliability", "History (Depth)", "Durability")]
+            lines += ["  Lifespan: 0 nanoseconds", "  Deadline: 0 nanoseconds", "  Liveliness: UNKNOWN"]
+            lines.append("  Liveliness lease duration: 0 nanoseconds")
+            return "\n".join(lines)
+        depth = f" ({qos.depth})" if qos.history.name == "KEEP_LAST" else ""
+        lines += [
+            f"  Reliability: {qos.reliability.name}",
+            f"  History (Depth): {qos.history.name}{depth}",
+            f"  Durability: {qos.durability.name}",
+            f"  Lifespan: {qos.lifespan.nanoseconds} nanoseconds",
+            f"  Deadline: {qos.deadline.nanoseconds} nanoseconds",
+            f"  Liveliness: {qos.liveliness.name}",
+            f"  Liveliness lease duration: {qos.liveliness_lease_duration.nanoseconds} nanoseconds",
+        ]
         return "\n".join(lines)
 
 
@@ -62,7 +74,12 @@ def endpoint_info(endpoint: Any, kind: TopicEndpointTypeEnum) -> TopicEndpointIn
         node_name=node_name,
         node_namespace=namespace or "/",
         topic_type=type_name(endpoint.msg_type),
+        topic_type_hash=type_hash(endpoint.msg_type),
         endpoint_type=kind,
         endpoint_gid=list(id(endpoint).to_bytes(8, "little")) + [0] * 8,
-        qos_profile=endpoint.qos,
+        qos_profile=_profile(endpoint.qos),
     )
+
+
+def _profile(qos: Any) -> QoSProfile:
+    return qos.to_profile() if isinstance(qos, QoSSnapshot) else qos

@@ -105,6 +105,15 @@ class NodeLogger:
 
     __slots__ = ("name", "_logger", "_now_ns", "_sink", "_sites")
 
+    # Whether every call site is checked for a changed level or filters (rclpy's loggers do it),
+    # or only those with a filter, which spares the usual call its frame lookup.
+    _every_site = False
+    # Whether a throttled call site counts as last logged at time zero (rcutils' habit, so that
+    # nothing logs in the first throttle period of a clock starting at zero) or never.
+    _throttled_since_zero = False
+    # The files whose frames are this logger's own, skipped when looking for the call site.
+    _internal_files: frozenset[str] = frozenset({__file__})
+
     def __init__(
         self,
         name: str,
@@ -112,7 +121,7 @@ class NodeLogger:
         sink: Callable[[int, str, str, int], None] | None = None,
     ) -> None:
         if not name:
-            raise ValueError("a logger needs a name")
+            raise ValueError("Logger name must not be empty")
         self.name = name
         self._logger = logging.getLogger(f"{ROOT_LOGGER}.node.{name}")
         self._now_ns = now_ns
@@ -127,8 +136,8 @@ class NodeLogger:
     def get_child(self, suffix: str) -> NodeLogger:
         """A logger named ``<name>.<suffix>``, as rclpy's ``get_child``; ValueError for an empty suffix."""
         if not suffix:
-            raise ValueError("a child logger needs a name")
-        return NodeLogger(f"{self.name}.{suffix}", self._now_ns, self._sink)
+            raise ValueError("Child logger name must not be empty")
+        return type(self)(f"{self.name}.{suffix}", self._now_ns, self._sink)
 
     def set_level(self, level: int | str) -> None:
         """Set this logger's threshold: a LoggingSeverity, a number, or a name such as ``"debug"``.
@@ -155,46 +164,71 @@ class NodeLogger:
         throttle_duration_sec: float | None = None,
         throttle_time_source_type: Clock | None = None,
         exc_info: Any = None,
+        name: str | None = None,
     ) -> bool:
         """Emit ``message`` at ``level``; return whether it was emitted.
 
         The filters (``once``, ``skip_first``, ``throttle_duration_sec``) keep
         their state per call site; they are applied, in rclpy's order (throttle,
-        skip first, once), only when the level is enabled.  Raises ValueError
-        when one call site changes its level or filters between calls, as rclpy.
+        skip first, once), only when the level is enabled.  ``name`` logs under
+        another logger's name.  Raises ValueError when one call site changes its
+        level, name or filters between calls, as rclpy.
         """
-        if not self._logger.isEnabledFor(level):
+        logger = self._logger if name is None else logging.getLogger(f"{ROOT_LOGGER}.node.{name}")
+        if not self._enabled(logger, level):
+            if self._every_site:
+                self._site(level, once, skip_first, throttle_duration_sec, throttle_time_source_type, name)
             return False
-        if (once or skip_first or throttle_duration_sec) and not self._passes(
-            level, once, skip_first, throttle_duration_sec, throttle_time_source_type
+        if (once or skip_first or throttle_duration_sec or name or self._every_site) and not self._passes(
+            self._site(level, once, skip_first, throttle_duration_sec, throttle_time_source_type, name),
+            once,
+            skip_first,
+            throttle_duration_sec,
+            throttle_time_source_type,
         ):
             return False
         text = str(message)
         stamp = self._now_ns()
-        self._logger.log(level, text, exc_info=exc_info, extra={"ros_stamp": stamp, "ros_name": self.name})
+        ros_name = self.name if name is None else name
+        # Logger._log: the level was decided above (by _enabled), so Python's check is not repeated.
+        logger._log(level, text, (), exc_info=exc_info, extra={"ros_stamp": stamp, "ros_name": ros_name})
         if self._sink is not None:
-            self._sink(level, self.name, text, stamp)
+            self._sink(level, ros_name, text, stamp)
         return True
 
-    def _passes(self, level: int, once: bool, skip_first: bool, throttle: float | None, source: Clock | None) -> bool:
+    def _enabled(self, logger: logging.Logger, level: int) -> bool:
+        # Python's levels decide; rclpy's loggers (actors.compat) fall back to INFO, as rcutils'.
+        return logger.isEnabledFor(level)
+
+    def _site(self, *arguments: Any) -> _CallSite:
         frame = sys._getframe(2)
-        while frame.f_code.co_filename == __file__:  # from debug()/info()... to the user's call
+        internal = self._internal_files
+        while frame.f_code.co_filename in internal:  # from debug()/info()... to the user's call
             frame = frame.f_back  # type: ignore[assignment]  # never None: the user's call is above
         key = (frame.f_code, frame.f_lasti)
-        arguments = (level, once, skip_first, throttle, source)
         if self._sites is None:
             self._sites = {}
         site = self._sites.get(key)
         if site is None:
             site = self._sites[key] = _CallSite(arguments)
         elif site.arguments != arguments:
-            raise ValueError(
-                f"a logging call site cannot change its level or filters between calls "
-                f"(was {site.arguments[:4]}, now {arguments[:4]})"
-            )
+            # rclpy's words for each change, which its users (and tests) match on
+            if site.arguments[0] != arguments[0]:
+                changed = "Logger severity"
+            elif site.arguments[-1] != arguments[-1]:
+                changed = "Logger name"
+            else:
+                changed = "Logging parameters"
+            raise ValueError(f"{changed} cannot be changed between calls (was {site.arguments}, now {arguments})")
+        return site
+
+    def _passes(
+        self, site: _CallSite, once: bool, skip_first: bool, throttle: float | None, source: Clock | None
+    ) -> bool:
         if throttle:
             now = source.now().nanoseconds if source is not None else self._now_ns()
-            if site.last_logged is not None and now < site.last_logged + throttle * 1e9:
+            last = 0 if site.last_logged is None and self._throttled_since_zero else site.last_logged
+            if last is not None and now < last + throttle * 1e9:
                 return False
             site.last_logged = now
         if skip_first and not site.skipped_first:

@@ -41,6 +41,8 @@ __all__ = [
     "qos_policy_name_from_kind",
     "QoSProfile",
     "QoSSnapshot",
+    "PolicyRecord",
+    "InvalidQoSProfileException",
     "DeadlineBestAvailable",
     "LivelinessLeaseDurationeBestAvailable",
     "qos_profile_unknown",
@@ -227,7 +229,9 @@ class QoSProfile:
             raise ValueError(f"QoS depth must be >= 0, got {value}")
         if value == 0 and self._history is HistoryPolicy.KEEP_LAST:
             warnings.warn(
-                "a KEEP_LAST QoS depth of 0 keeps nothing: it is taken as the default depth (10)", stacklevel=2
+                "A zero depth with KEEP_LAST doesn't make sense; no data could be stored: "
+                "it is taken as the default depth (10)",
+                stacklevel=2,
             )
         self._depth = value
 
@@ -303,9 +307,26 @@ class QoSProfile:
 
     __hash__ = None  # type: ignore[assignment]  # mutable, as rclpy's: unhashable, which object types as hashable
 
+    def get_c_qos_profile(self) -> PolicyRecord:
+        """rclpy's hand-over to rmw: a copy whose ``to_dict()`` gives this profile's keyword arguments."""
+        return PolicyRecord(self)
+
     def __repr__(self) -> str:
         fields = ", ".join(f"{slot[1:]}={getattr(self, slot)!r}" for slot in self.__slots__)
         return f"QoSProfile({fields})"
+
+
+class PolicyRecord:
+    """A profile's policies as rmw holds them (rclpy's ``rmw_qos_profile_t``): ``to_dict()`` for QoSProfile(**...)."""
+
+    __slots__ = ("_values",)
+
+    def __init__(self, profile: QoSProfile) -> None:
+        self._values = {slot[1:]: getattr(profile, slot) for slot in profile.__slots__}
+
+    def to_dict(self) -> dict[str, Any]:
+        """The policies by QoSProfile's keyword names."""
+        return dict(self._values)
 
 
 def _policy(kind: type[QoSPolicyEnum], value: Any, what: str) -> Any:

@@ -30,6 +30,7 @@ from actors.compat.rclpy.clock import ROSClock
 from actors.compat.rclpy.context import Context
 from actors.compat.rclpy.exceptions import NotInitializedException
 from actors.compat.rclpy.guard_condition import GuardCondition
+from actors.compat.rclpy.logging import RcutilsLogger
 from actors.compat.rclpy.publisher import Publisher
 from actors.compat.rclpy.service import Service
 from actors.compat.rclpy.subscription import Subscription
@@ -188,7 +189,9 @@ class Node(NativeNode):
             native_logger = NativeNode.get_logger(self)
             # The node's own ROS clock on the runtime's time, which its time source can move to /clock.
             state.clock = ROSClock(session.loop)
-            state.logger = NodeLogger(native_logger.name, state.clock.now_ns, _threadsafe(native_logger.sink, session))
+            # rcl's rule: records reach /rosout when both the node and the context's arguments allow it.
+            sink = native_logger.sink if enable_rosout and args.logs_to("rosout") else None
+            state.logger = RcutilsLogger(native_logger.name, state.clock.now_ns, _threadsafe(sink, session))
 
         session.call(build)
         state.time_source = TimeSource(node=self)

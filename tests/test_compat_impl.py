@@ -1,0 +1,57 @@
+"""The stand-in for rclpy's C extension, QoS hand-over records, and endpoint infos as rclpy prints them."""
+
+from __future__ import annotations
+
+import pytest
+
+import actors.compat.rclpy as rclpy
+from actors.compat.rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
+from actors.compat.rclpy.topic_endpoint_info import TopicEndpointInfo, TopicEndpointTypeEnum
+from actors.errors import RosArgsError
+from actors.ros.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, qos_profile_sensor_data
+from actors.ros.time import Duration
+from interfaces.std_msgs.msg import String
+
+
+@pytest.fixture
+def session(rclpy_session):
+    return rclpy_session
+
+
+def test_the_stand_in_names_the_middleware_and_the_argument_errors():
+    assert _rclpy.rclpy_get_rmw_implementation_identifier() == rclpy.get_rmw_implementation_identifier()
+    with pytest.raises(_rclpy.UnknownROSArgsError, match=r"\['--shout'\]"):
+        rclpy.Context().init(["--ros-args", "--shout"])
+    assert _rclpy.RCLInvalidROSArgsError is RosArgsError
+
+
+def test_a_profile_survives_the_hand_over_record():
+    profile = QoSProfile(history=HistoryPolicy.KEEP_ALL, lifespan=Duration(seconds=3), deadline=Duration(seconds=5))
+    assert QoSProfile(**profile.get_c_qos_profile().to_dict()) == profile
+    assert QoSProfile(**_rclpy.rmw_qos_profile_t.predefined("qos_profile_sensor_data").to_dict()) == (
+        qos_profile_sensor_data
+    )
+    with pytest.raises(ValueError, match="unknown predefined"):
+        _rclpy.rmw_qos_profile_t.predefined("qos_profile_fastest")
+
+
+def test_an_info_made_by_hand_prints_as_unknown():
+    text = str(TopicEndpointInfo(node_name="n"))
+    assert text.splitlines()[:5] == [
+        "Node name: n",
+        "Node namespace: ",
+        "Topic type: ",
+        "Topic type hash: INVALID",
+        "Endpoint type: INVALID",
+    ]
+    assert "  Liveliness: UNKNOWN" in text
+
+
+def test_a_publishers_info_carries_its_profile_and_type_hash(session):
+    node = rclpy.create_node("informer", namespace="/ns")
+    node.create_publisher(String, "said", QoSProfile(depth=3, durability=DurabilityPolicy.TRANSIENT_LOCAL))
+    (info,) = node.get_publishers_info_by_topic("/ns/said")
+    assert info.endpoint_type is TopicEndpointTypeEnum.PUBLISHER
+    assert info.qos_profile.depth == 3 and info.qos_profile.lifespan == Duration()
+    assert info.topic_type_hash.startswith("RIHS01_")
+    assert "  Durability: TRANSIENT_LOCAL" in str(info)
