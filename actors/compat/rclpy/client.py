@@ -14,12 +14,13 @@ from collections import deque
 from typing import Any
 
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
+from actors.compat.rclpy._destroyable import Destroyable
 from actors.compat.rclpy.task import Future
 
 __all__ = ["Client"]
 
 
-class Client(WorkSource, NativeProxy):
+class Client(Destroyable, WorkSource, NativeProxy):
     """Calls one service (``Node.create_client``)."""
 
     def __init__(self, node: ScriptNode, native: Any, callback_group: Any) -> None:

@@ -471,6 +471,12 @@ class Node(NativeNode):
         rate.destroy()
         return self.destroy_timer(rate._timer)
 
+    def __enter__(self) -> Node:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.destroy_node()
+
     def destroy_node(self) -> None:
         """Destroy the node and everything it has; its executor forgets it.  Idempotent."""
         state = self._rclpy

@@ -5,12 +5,13 @@ from __future__ import annotations
 from typing import Any
 
 from actors.compat.dispatch import NativeProxy, ScriptNode
+from actors.compat.rclpy._destroyable import Destroyable
 from actors.compat.rclpy.exceptions import InvalidHandle
 
 __all__ = ["Publisher"]
 
 
-class Publisher(NativeProxy):
+class Publisher(Destroyable, NativeProxy):
     """Publishes on one topic (``Node.create_publisher``); other attributes are the native publisher's."""
 
     catcher = None  # nothing of the runtime calls into a publisher (its event callbacks are native)

@@ -13,12 +13,13 @@ from collections.abc import Callable
 from typing import Any
 
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
+from actors.compat.rclpy._destroyable import Destroyable
 from actors.compat.rclpy.task import await_or_execute
 
 __all__ = ["Service"]
 
 
-class Service(WorkSource, NativeProxy):
+class Service(Destroyable, WorkSource, NativeProxy):
     """Answers requests while its node is spun (``Node.create_service``)."""
 
     def __init__(

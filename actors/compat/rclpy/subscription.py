@@ -15,6 +15,7 @@ from collections.abc import Callable
 from typing import Any, TypedDict
 
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
+from actors.compat.rclpy._destroyable import Destroyable
 from actors.compat.rclpy.task import await_or_execute
 from actors.messages import cdr
 from actors.ros.qos import HistoryPolicy
@@ -41,7 +42,7 @@ def _wants_info(callback: Callable[..., Any]) -> bool:
     return False
 
 
-class Subscription(WorkSource, NativeProxy):
+class Subscription(Destroyable, WorkSource, NativeProxy):
     """Receives one topic (``Node.create_subscription``); other attributes are the native one's."""
 
     def __init__(

@@ -13,6 +13,7 @@ from collections.abc import Callable
 from typing import Any
 
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
+from actors.compat.rclpy._destroyable import Destroyable
 from actors.compat.rclpy.exceptions import ROSInterruptException
 from actors.compat.rclpy.task import await_or_execute
 from actors.compat.turns import Waiter
@@ -21,7 +22,7 @@ from actors.ros.timers import TimerInfo
 __all__ = ["Timer", "Rate", "TimerInfo"]
 
 
-class Timer(WorkSource, NativeProxy):
+class Timer(Destroyable, WorkSource, NativeProxy):
     """Calls ``callback`` every period while its node is spun (``Node.create_timer``)."""
 
     def __init__(self, node: ScriptNode, callback: Callable[..., Any] | None, callback_group: Any) -> None:
