@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from actors.codec import decode_cdr
 from actors.compat.dispatch import NativeProxy, ScriptNode
 from actors.compat.rclpy._destroyable import Destroyable
 from actors.compat.rclpy.exceptions import InvalidHandle
@@ -24,8 +25,9 @@ class Publisher(Destroyable, NativeProxy):
     _destroyed = False  # set when its node destroys it
 
     def publish(self, msg: Any) -> None:
-        """Deliver ``msg``; TypeError (or a validation error) if it does not fit the topic's type,
-        InvalidHandle once the publisher or its node is destroyed (``rclpy.shutdown()`` does it).
+        """Deliver ``msg`` (a message or its CDR bytes); TypeError (or a validation error) if it does
+        not fit the topic's type, InvalidHandle once the publisher or its node is destroyed
+        (``rclpy.shutdown()`` does it).
 
         Every subscription in the runtime has it when this returns (a script's
         once its executor looks for work), so the script may reuse or change
@@ -33,6 +35,8 @@ class Publisher(Destroyable, NativeProxy):
         """
         if self._destroyed or self._node._rclpy.destroyed:
             raise InvalidHandle("cannot use Destroyable because destruction was requested")
+        if isinstance(msg, (bytes, bytearray, memoryview)):  # already serialized, as rclpy accepts
+            msg = decode_cdr(msg, self._native.msg_type)
         self._session.call(self._native.publish, msg)
 
     @property
