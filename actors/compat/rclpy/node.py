@@ -39,6 +39,7 @@ from actors.compat.rclpy.timer import Rate, Timer
 from actors.compat.rclpy.utilities import get_default_context
 from actors.launch.rosargs import RosArgs, parse
 from actors.ros.log import NodeLogger
+from actors.ros.names import expand
 from actors.ros.node import Node as NativeNode
 from actors.ros.node import SpawnRequest, spawning
 from actors.system.supervisor import RestartType
@@ -271,6 +272,34 @@ class Node(NativeNode):
     def waitables(self) -> list[WorkSource]:
         """The node's other work sources (action clients and servers)."""
         return list(self._rclpy.waitables)
+
+    def resolve_topic_name(self, topic: str, *, only_expand: bool = False) -> str:
+        """``topic`` made absolute for this node, and remapped unless ``only_expand``; InvalidTopicNameException."""
+        return self._resolve(topic, only_expand, "topic name")
+
+    def resolve_service_name(self, service: str, *, only_expand: bool = False) -> str:
+        """``service`` made absolute for this node, and remapped unless ``only_expand``."""
+        return self._resolve(service, only_expand, "service name")
+
+    def _resolve(self, name: str, only_expand: bool, what: str) -> str:
+        resolver = self._core.resolver
+        if only_expand:
+            return expand(name, resolver.namespace, resolver.node_name, what=what)
+        return resolver.resolve(name, what=what)
+
+    def wait_for_node(self, fully_qualified_node_name: str, timeout: float) -> bool:
+        """Wait until a node of that full name is in the graph (``timeout`` seconds of runtime clock at most)."""
+        if not fully_qualified_node_name.startswith("/"):
+            fully_qualified_node_name = f"/{fully_qualified_node_name}"
+        session = self._rclpy.session
+        deadline = session.loop.time() + timeout
+        # Nodes join the graph without an event a waiter could take: look every tenth of a second.
+        while fully_qualified_node_name not in self.get_fully_qualified_node_names():
+            left = deadline - session.loop.time()
+            if left <= 0:
+                return False
+            session.sleep(min(0.1, left))
+        return True
 
     def get_clock(self) -> ROSClock:
         """The node's ROS clock: the runtime's time, or ``/clock``'s while ``use_sim_time`` is true."""

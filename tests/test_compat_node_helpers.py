@@ -1,4 +1,4 @@
-"""rclpy 8's ``with`` forms: a node and its entities are destroyed when their block ends."""
+"""rclpy 8's ``with`` forms, and the small Node helpers rclpy programs call: name resolution, wait_for_node."""
 
 from __future__ import annotations
 
@@ -32,3 +32,19 @@ def test_each_entity_is_destroyed_when_its_block_ends(session):
             assert node.clients == [client]
         assert (node.subscriptions, node.timers, node.services, node.clients) == ([], [], [], [])
     rclpy.create_node("scoped")  # the name is free again: the node was destroyed with its block
+
+
+def test_names_resolve_as_the_node_sees_them(session):
+    node = rclpy.create_node("resolver", namespace="/ns", cli_args=["-r", "cmd:=cmd_vel"])
+    assert node.resolve_topic_name("cmd") == "/ns/cmd_vel"
+    assert node.resolve_topic_name("cmd", only_expand=True) == "/ns/cmd"
+    assert node.resolve_service_name("~/reset") == "/ns/resolver/reset"
+
+
+def test_waiting_for_a_node_counts_runtime_time(session):
+    node = rclpy.create_node("waiter")
+    rclpy.create_node("awaited", namespace="/ns")
+    assert node.wait_for_node("/ns/awaited", 1.0)
+    start = session.loop.time()
+    assert not node.wait_for_node("absent", 2.5)
+    assert session.loop.time() - start == pytest.approx(2.5)
