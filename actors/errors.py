@@ -40,6 +40,7 @@
     │   ├── InvalidArgumentException     an empty frame id, or one starting with '/'
     │   └── TimeoutException             a wait for a transform ran out
     ├── VirtualTimeDeadlock          virtual time has nothing left to wait for
+    ├── ScriptEnded                  a graded script ended by itself before its test was done
     └── Escalation                   the supervisor gave up: too many restarts
 
 The classes named ``...Exception`` carry rclpy's names (``rclpy.exceptions``), so
@@ -94,6 +95,7 @@ __all__ = [
     "InvalidArgumentException",
     "TimeoutException",
     "VirtualTimeDeadlock",
+    "ScriptEnded",
     "Escalation",
 ]
 
@@ -283,6 +285,10 @@ class TimeoutException(TransformException):
 
 class VirtualTimeDeadlock(ActorsError):
     """Under virtual time every task waits and nothing could ever wake one."""
+
+
+class ScriptEnded(ActorsError):
+    """A student's script ended by itself (returned or called ``sys.exit``) before a test that then failed."""
 
 
 class Escalation(ActorsError):

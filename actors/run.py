@@ -18,13 +18,13 @@ import sys
 import traceback
 from collections.abc import Iterator, Sequence
 from pathlib import Path
-from types import FrameType
 from typing import Any
 
 import anyio
 import anyio.abc
 import msgspec
 
+from actors.core._frames import is_users
 from actors.core.loops import WALL_LOOPS, VirtualTimeLoop
 from actors.core.tomlfile import MAX_SECONDS
 from actors.errors import ActorsError, Escalation, GraphFileError
@@ -208,16 +208,6 @@ def _leaves(exc: BaseException) -> Iterator[BaseException]:
         yield exc
 
 
-# Frames from these top-level packages are the machinery, not the user's code.
-_MACHINERY = frozenset({"actors", "anyio", "asyncio", "runpy", "contextlib", "sniffio", "importlib", "selectors"})
-
-
-def _is_users(frame: FrameType) -> bool:
-    spec = frame.f_globals.get("__spec__")  # __name__ is "__main__" under python -m
-    module = str(getattr(spec, "name", None) or frame.f_globals.get("__name__", ""))
-    return module.partition(".")[0] not in _MACHINERY and not module.startswith("<frozen")
-
-
 def _user_traceback(error: BaseException) -> list[str]:
     """The user's own frames of ``error``, then its causes' alike.
 
@@ -232,7 +222,7 @@ def _user_traceback(error: BaseException) -> list[str]:
         if current is not error:
             lines.append(f"caused by {one_line(current)}\n")
         frames = list(traceback.walk_tb(current.__traceback__))
-        users = [(frame, line) for frame, line in frames if _is_users(frame)]
+        users = [(frame, line) for frame, line in frames if is_users(frame)]
         if not users and not isinstance(current, ActorsError):
             users = frames  # a bug of the machinery itself: show where
         lines += traceback.StackSummary.extract(iter(users)).format()

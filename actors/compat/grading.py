@@ -12,8 +12,14 @@ The script runs as ``actors run`` runs it (``__main__``, ``sys.argv``, the
 overlay), on a thread of its own, while the test's thread drives: virtual time
 moves only while the test waits (``wait``, ``call``) and the script waits too,
 so a run is the same every time and takes milliseconds.  Leaving the block
-stops the script as Ctrl-C would (its spin raises ExternalShutdownException)
-and re-raises what the script raised, if anything.
+stops the script as Ctrl-C would (its spin raises ExternalShutdownException).
+
+What the student's code does wrong is what the test shows first, with the
+student's own frames: what it raised (an import, a constructor, a callback)
+is raised by the next thing the test does (entering the block, ``wait``,
+``record``...); a script that ended by itself before a test that then failed
+gives :class:`~actors.errors.ScriptEnded`; and a test that fails while the
+script still runs says where the script was.
 """
 
 from __future__ import annotations
@@ -35,10 +41,13 @@ from actors.compat.rclpy.executors import ExternalShutdownException
 from actors.compat.rclpy.utilities import get_default_context, try_shutdown
 from actors.compat.session import Session
 from actors.compat.turns import Waiter
+from actors.core._frames import users_stack, users_traceback
+from actors.errors import ScriptEnded
 from actors.launch.graph_file import load_graph
 from actors.ros.log import INFO, ROOT_LOGGER, RosFormatter
 from actors.ros.node import Node as NativeNode
 from actors.ros.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy
+from actors.system.supervisor import Child, RestartType
 
 __all__ = ["ScriptRun", "run_script", "run_node"]
 
@@ -53,10 +62,13 @@ def run_script(script: str | Path, *args: str, graph: str | Path | None = None, 
 
 
 def run_node(node: str | type, *args: str, graph: str | Path | None = None, clock: str = "virtual") -> ScriptRun:
-    """A :class:`ScriptRun` that spins one node of ``node``'s class, as ``rclpy.spin(Cls())`` would.
+    """A :class:`ScriptRun` that runs one node of ``node``'s class.
 
-    ``node`` is ``"path/to/file.py:Class"`` (imported inside the overlay) or a
-    class imported under it already.
+    ``node`` is ``"path/to/file.py:Class"``, ``"module:Class"`` (imported inside
+    the overlay) or the class itself.  An rclpy node class is spun as
+    ``rclpy.spin(Cls())`` would; a native one (:class:`actors.Node`) is spawned
+    in the graph, and a crash ends it instead of restarting it.  Entering the
+    block raises TypeError for any other class.
     """
     return ScriptRun(node, [str(a) for a in args], graph, clock)
 
@@ -91,12 +103,18 @@ class ScriptRun:
         self._clients: dict[str, Any] = {}
         self._stopping = False
         self._done = False
+        self._ended_at: float | None = None
+        self._exit: SystemExit | None = None
+        self._reported = False
         self._thread: threading.Thread | None = None
         self._ended: Waiter
+        self._loaded: type | None = None  # run_node's class, once the script thread has imported it
+        self._native: Child | None = None  # run_node's native node
 
     # -- the run ----------------------------------------------------------------
 
     def __enter__(self) -> ScriptRun:
+        __tracebackhide__ = True  # pytest shows the test's line, then the student's frames
         loaded = load_graph(self.graph) if self.graph is not None else None
         stack = self._stack
         try:
@@ -108,6 +126,9 @@ class ScriptRun:
             stack.callback(_clean_default_context)
             self._probe = self._session.call(self._session.runtime.spawn, _Probe)
             self._start()
+            self._check()  # an import or a constructor that failed fails the test here
+            if self._loaded is not None:
+                self._spawn_native(self._loaded)
         except BaseException:
             stack.close()
             raise
@@ -134,6 +155,7 @@ class ScriptRun:
             finally:
                 with self._session.lock:
                     self._done = True
+                    self._ended_at = self._session.loop.time()
                     ended.wake()
 
         self._thread = self._session.start_thread(main, "student script")
@@ -144,9 +166,10 @@ class ScriptRun:
             if isinstance(self.target, Path):
                 runpy.run_path(str(self.target), run_name="__main__")
             else:
-                _spin_one(self.target)
+                self._run_class(self.target)
         except SystemExit as exc:
             self.exit_code = exc.code if isinstance(exc.code, int) else int(exc.code is not None)
+            self._exit = exc
             return
         except (KeyboardInterrupt, ExternalShutdownException) as exc:
             if not self._stopping:
@@ -157,21 +180,57 @@ class ScriptRun:
             return
         self.exit_code = 0
 
+    def _run_class(self, target: str | type) -> None:
+        from actors.compat.rclpy import init, spin
+        from actors.compat.rclpy.node import Node
+
+        cls = _load_class(target) if isinstance(target, str) else target
+        if isinstance(cls, type) and issubclass(cls, Node):
+            init(args=sys.argv)
+            make = cast("Callable[[], Node]", cls)  # a user's subclass: its __init__ names the node itself
+            spin(make())
+        else:
+            self._loaded = cls  # the test's thread spawns a native node, or refuses anything else
+
+    def _spawn_native(self, cls: Any) -> None:
+        __tracebackhide__ = True
+        if not (isinstance(cls, type) and issubclass(cls, NativeNode)):
+            raise TypeError(f"run_node() takes an rclpy or an actors node class, got {cls!r}")
+        runtime = self._session.runtime
+
+        def spawn() -> Child:
+            runtime.spawn(cls, restart=RestartType.TEMPORARY)  # a crash is the student's error: no restart
+            return next(reversed(runtime.supervisor.children))
+
+        try:
+            self._native = self._session.call(spawn)
+        except BaseException as exc:
+            self.error, self.exit_code = exc, 1
+            self._check()
+            raise
+        self.exit_code = None
+
     def __exit__(
         self, exc_type: type[BaseException] | None, exc: BaseException | None, tb: TracebackType | None
     ) -> None:
+        __tracebackhide__ = True
+        where = self._where() if exc is not None and self.running else None
         try:
             self.stop()
         finally:
             self._stack.close()
-        if exc is None and self.error is not None:
-            raise self.error
+        if exc is None:
+            self._check()
+        elif not self._reported:
+            self._explain(exc, where)
 
     def stop(self) -> None:
         """Stop the script as Ctrl-C would and wait for it to end.
 
         Raises RuntimeError if it is still running after a minute of simulated time.
         """
+        if self._native is not None and self.exit_code is None:
+            self.exit_code = 0 if self._native.state == "running" else 1
         if self._thread is None or self._done:
             return
         self._stopping = True
@@ -183,8 +242,58 @@ class ScriptRun:
 
     @property
     def running(self) -> bool:
-        """Whether the script is still running."""
+        """Whether the script (or run_node's node) is still running."""
+        if self._native is not None:
+            return self._native.state == "running"
         return self._thread is not None and not self._done
+
+    # -- the student's failures, first ----------------------------------------------
+
+    def _failure(self) -> BaseException | None:
+        """What the student's code raised, if anything: the script, or the native node's crash."""
+        if self.error is not None:
+            return self.error
+        if self._native is not None and self._native.state == "crashed":
+            return self._native.last_exception
+        return None
+
+    def _check(self) -> None:
+        """Raise what the student's code raised, once, with the student's own frames."""
+        __tracebackhide__ = True
+        error = self._failure()
+        if error is None or self._reported:
+            return
+        self._reported = True
+        raise _theirs(error)
+
+    def _explain(self, exc: BaseException, where: str | None) -> None:
+        """The test failed: say first what the student's code did, if it went wrong."""
+        __tracebackhide__ = True
+        error = self._failure()
+        self._reported = True
+        then = f"then the test failed: {type(exc).__name__}: {exc}".rstrip()
+        if error is not None:
+            error = _theirs(error)
+            error.add_note(then)
+            raise error from None
+        if self._native is None and self._done and self._ended_at is not None and not self._stopping:
+            code = 0 if self.exit_code is None else self.exit_code
+            ended = ScriptEnded(
+                f"{self._name()} ended by itself at {self._ended_at:.3f} s (exit code {code}), before the test was done"
+            )
+            ended.add_note(then)
+            raise ended.with_traceback(_users_or_none(self._exit)) from None
+        if where:
+            exc.add_note(f"{self._name()} was running, at:\n{where}".rstrip())
+
+    def _where(self) -> str | None:
+        thread = self._thread
+        frame = sys._current_frames().get(thread.ident) if thread is not None and thread.ident else None
+        return "".join(users_stack(frame).format()) if frame is not None else None
+
+    def _name(self) -> str:
+        target = self.target
+        return target.name if isinstance(target, Path) else getattr(target, "__name__", str(target))
 
     # -- what the test does -------------------------------------------------------
 
@@ -197,10 +306,13 @@ class ScriptRun:
         """Let ``seconds`` of simulated time pass; the script runs meanwhile.
 
         What falls due at the very end (a timer of the script at exactly that
-        time) has run when it returns.
+        time) has run when it returns.  Raises what the student's code raised
+        meanwhile, if anything.
         """
+        __tracebackhide__ = True
         self._session.sleep(seconds)
         self._session.settle()  # and what the loop and the script have due at this instant
+        self._check()
 
     def record(self, topic: str, msg_type: type[Any] | None = None) -> list[Any]:
         """A list that receives every message on ``topic`` from now on, in order.
@@ -208,6 +320,8 @@ class ScriptRun:
         ``msg_type`` is needed only for a topic nobody uses yet.  Raises
         LookupError for such a topic without it.
         """
+        __tracebackhide__ = True
+        self._check()
         received: list[Any] = []
         msg_type = msg_type or self._topic_type(topic)
         self._session.call(self._probe.create_subscription, msg_type, topic, received.append, _RECORDING)
@@ -215,6 +329,8 @@ class ScriptRun:
 
     def publish(self, topic: str, msg: Any) -> None:
         """Publish ``msg`` on ``topic`` (as ``ros2 topic pub --once``); subscribers have it on return."""
+        __tracebackhide__ = True
+        self._check()
         publisher = self._publishers.get(topic)
         if publisher is None:
             publisher = self._publishers[topic] = self._session.call(self._probe.create_publisher, type(msg), topic, 10)
@@ -226,6 +342,8 @@ class ScriptRun:
         A script's service answers only while the script spins, as in ROS.
         Raises TimeoutError, and ServiceError when the server fails.
         """
+        __tracebackhide__ = True
+        self._check()
         client = self._clients.get(service)
         if client is None:
             srv_type = get_type(type(request).__ros_type__.removesuffix("_Request"))
@@ -234,6 +352,8 @@ class ScriptRun:
 
     def node(self, name: str) -> Any:
         """The node ``name`` of the run (the student's or the graph's), for a closer look."""
+        __tracebackhide__ = True
+        self._check()
         return self._session.call(self._session.runtime.node, name)
 
     def _topic_type(self, topic: str) -> type[Any]:
@@ -244,16 +364,13 @@ class ScriptRun:
         raise LookupError(f"nobody uses {name} yet: give its type, e.g. record({name!r}, Twist)")
 
 
-def _spin_one(target: str | type) -> None:
-    from actors.compat.rclpy import init, spin
-    from actors.compat.rclpy.node import Node
+def _theirs(error: BaseException) -> BaseException:
+    """``error`` with only the student's frames (all of them when it has none of theirs)."""
+    return error.with_traceback(users_traceback(error.__traceback__) or error.__traceback__)
 
-    cls = _load_class(target) if isinstance(target, str) else target
-    if not (isinstance(cls, type) and issubclass(cls, Node)):
-        raise TypeError(f"{cls!r} is not an rclpy node class of the overlay: pass 'file.py:Class'")
-    init(args=sys.argv)
-    make = cast("Callable[[], Node]", cls)  # a user's subclass: its __init__ names the node itself
-    spin(make())
+
+def _users_or_none(error: BaseException | None) -> TracebackType | None:
+    return None if error is None else users_traceback(error.__traceback__)
 
 
 def _load_class(target: str) -> Any:

@@ -188,7 +188,8 @@ def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy", trusted: T
         lines.append("    try:")
     if mode == "copy":
         lines.append(f"{indent}c0 = m.__copy__()")
-    names: dict[str, Any] = {**_HELPERS, "ros_type": top.ros_type}
+    # __name__ makes its frames ours, not the user's, in the tracebacks actors prints
+    names: dict[str, Any] = {**_HELPERS, "ros_type": top.ros_type, "__name__": __name__}
     counter = itertools.count(1)
     untrusted = set(trusted)  # the paths not met yet: any left at the end names no field
 

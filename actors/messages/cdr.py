@@ -192,7 +192,7 @@ class _Source:
     def __init__(self, lay: MessageLayout, top: bool, pad: str, pad_to: str) -> None:
         self.lay = lay
         self.lines: list[str] = []
-        self.namespace: dict[str, Any] = {"array": array, "_Bad": _Bad}
+        self.namespace: dict[str, Any] = {"array": array, "_Bad": _Bad, "__name__": __name__}  # ours, in tracebacks
         self.phase: int | None = 0 if top else None
         self.run: list[tuple[str, int, int, str, str]] = []  # code, size, align, argument, path
         self.where: list[Any] = []  # per field index: a path, or a run's items
