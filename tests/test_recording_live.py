@@ -6,6 +6,7 @@ import base64
 import contextlib
 import json
 import math
+import shutil
 import signal
 import struct
 import subprocess
@@ -97,8 +98,8 @@ class FoxgloveClient:
                 return log_time, frame[13:]
 
 
-def _open(port: int) -> Any:
-    return websockets.connect(f"ws://127.0.0.1:{port}", subprotocols=SUBPROTOCOLS, max_size=None)
+def _open(port: int, subprotocols: list[str] = SUBPROTOCOLS) -> Any:
+    return websockets.connect(f"ws://127.0.0.1:{port}", subprotocols=subprotocols, max_size=None)
 
 
 @contextlib.contextmanager
@@ -230,6 +231,81 @@ def test_foxglove_client_sees_the_turtlebot_world_as_a_3d_scene_tied_to_tf():
     on_walls = [p for p in points if max(abs(p[0]), abs(p[1])) >= 3.0 - 1e-6]
     assert len(on_walls) >= len(points) / 2
     assert all(math.dist((x, y), p) <= 3.5 + 0.3 for p in points)  # range_max, from where the scan was taken
+
+
+@pytest.mark.parametrize("subprotocol", ["foxglove.websocket.v1", "foxglove.sdk.v1"])
+@pytest.mark.slow
+def test_clients_of_either_subprotocol_name_see_odom_and_the_scene(subprotocol):
+    # foxglove.websocket.v1 is what clients built on the published ws-protocol libraries ask for
+    # (and Lichtblick before it learnt the SDK's name); the SDK's server alone refuses it.
+    pytest.importorskip("google.protobuf", reason="the scene is decoded with its protobuf schema (test extra)")
+    with serving_turtlebot("virtual") as (proc, port):
+
+        async def watch() -> tuple[str, Odometry, Any]:
+            with anyio.fail_after(60):
+                async with _open(port, [subprotocol]) as ws:
+                    client = FoxgloveClient(ws)
+                    scene = await client.wait_for("channels", "/scene")
+                    SceneUpdate = protobuf_class(scene["schemaName"], base64.b64decode(scene["schema"]))
+                    await client.subscribe("/odom", 1)
+                    odom = codec.decode_cdr((await client.message(1))[1], Odometry)
+                    await client.subscribe("/scene", 2)
+                    update = SceneUpdate.FromString((await client.message(2))[1])
+                    return ws.subprotocol, odom, update
+
+        chosen, odom, update = anyio.run(watch)
+    assert chosen == subprotocol  # answered under the name it asked for
+    assert odom.header.frame_id == "odom" and odom.child_frame_id == "base_footprint"
+    assert {"walls", "/turtlebot"} <= {e.id for e in update.entities}
+    assert proc.returncode == 0
+
+
+def _npm_client() -> list[str]:
+    """The command that runs tests/ws_protocol_client.js under node; skips where node or its packages are missing."""
+    node = shutil.which("node")
+    if node is None:
+        pytest.skip("node is not installed")
+    found = subprocess.run(
+        [node, "-e", "require.resolve('@foxglove/ws-protocol'); require.resolve('ws')"],
+        cwd=ROOT / "tests",
+        capture_output=True,
+    )
+    if found.returncode != 0:
+        pytest.skip("npm install @foxglove/ws-protocol ws (or set NODE_PATH) to run Foxglove's own client")
+    return [node, str(ROOT / "tests" / "ws_protocol_client.js")]
+
+
+@pytest.mark.slow
+def test_foxglove_ws_protocol_npm_client_decodes_odom_and_the_scene():
+    pytest.importorskip("google.protobuf", reason="the scene is decoded with its protobuf schema (test extra)")
+    command = _npm_client()
+    with serving_turtlebot("virtual") as (proc, port):
+        done = subprocess.run(
+            [*command, f"ws://127.0.0.1:{port}", "/odom", "/scene"], capture_output=True, text=True, timeout=60
+        )
+    assert done.returncode == 0, done.stderr
+    seen = json.loads(done.stdout)
+    assert seen["subprotocol"] == "foxglove.websocket.v1"  # what the published client asks for
+    odom, scene = seen["topics"]["/odom"], seen["topics"]["/scene"]
+    assert odom["channel"]["schemaName"] == "nav_msgs/msg/Odometry"
+    assert codec.decode_cdr(base64.b64decode(odom["payload"]), Odometry).header.frame_id == "odom"
+    SceneUpdate = protobuf_class(scene["channel"]["schemaName"], base64.b64decode(scene["channel"]["schema"]))
+    update = SceneUpdate.FromString(base64.b64decode(scene["payload"]))
+    assert {"walls", "/turtlebot"} <= {e.id for e in update.entities}
+    assert proc.returncode == 0
+
+
+@pytest.mark.slow
+def test_a_client_of_neither_name_is_still_refused():
+    with serving_turtlebot("virtual") as (_, port):
+
+        async def knock() -> None:
+            with anyio.fail_after(30):
+                async with _open(port, ["foxglove.websocket.v2"]):
+                    pass
+
+        with pytest.raises(websockets.exceptions.InvalidStatus, match="HTTP 400"):
+            anyio.run(knock)
 
 
 class Switch(Node):

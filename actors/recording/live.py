@@ -35,6 +35,7 @@ import anyio.abc
 from actors import codec
 from actors.core._actor import Owner
 from actors.errors import ActorsError
+from actors.recording._subprotocols import SubprotocolFront
 from actors.recording.tap import Tap, TapOwner, TapSet, latched
 from actors.ros.names import is_hidden_name
 from actors.ros.topics import type_name
@@ -103,6 +104,7 @@ class FoxgloveView:
         self._fox: Any = None
         self._context: Any = None
         self._server: Any = None
+        self._front = SubprotocolFront(host, port, 0)  # replaced by the one started
         self._taps = TapSet(VIEW_NODE, self._wants, self._deliver, label="foxglove", tapped=self._advertise)
         self._now_ns: Any = None
         self._loop: asyncio.AbstractEventLoop | None = None
@@ -117,19 +119,28 @@ class FoxgloveView:
             fox = self._fox = _foxglove()
             self._context = fox.Context()
             capabilities = [fox.websocket.Capability.Time, fox.websocket.Capability.Services]
+            # The SDK's server listens on a loopback port of its own, behind the front that
+            # also lets foxglove.websocket.v1 clients in (recording/_subprotocols.py).
             try:
                 self._server = fox.start_server(
                     name="actors",
-                    host=self.host,
-                    port=self.port,
+                    host="127.0.0.1",
+                    port=0,
                     capabilities=capabilities,
                     supported_encodings=["cdr"],
                     context=self._context,
                     server_listener=self,
                 )
-            except Exception as exc:  # the SDK raises RuntimeError for an address in use
-                raise ActorsError(f"--foxglove: cannot serve on {self.host}:{self.port}: {exc}") from None
-            self.port = self._server.port
+            except Exception as exc:  # the SDK raises RuntimeError when it cannot listen
+                raise ActorsError(f"--foxglove: cannot serve on 127.0.0.1: {exc}") from None
+            self._front = SubprotocolFront(self.host, self.port, self._server.port)
+            try:
+                self.port = self._front.start()
+            except OSError as exc:
+                self._server.stop()
+                self._server = None
+                where = f"{self.host}:{self.port}"
+                raise ActorsError(f"--foxglove: cannot serve on {where}: {exc.strerror or exc}") from None
             for topic in self._scenes:
                 self._open_scene(topic)
         return self.port
@@ -163,6 +174,7 @@ class FoxgloveView:
             self._taps.stop()
             if self in runtime.services.listeners:
                 runtime.services.listeners.remove(self)
+            self._front.stop()
             self._server.stop()
 
     # -- scenes (SceneHost) -----------------------------------------------------------------
