@@ -24,6 +24,11 @@ def pytest_configure(config: pytest.Config) -> None:
     cache = tempfile.mkdtemp(prefix="actors-interface-cache-")
     os.environ["ACTORS_INTERFACE_CACHE"] = cache
     config.add_cleanup(lambda: shutil.rmtree(cache, ignore_errors=True))
+    # Graphs of one run find each other's control sockets here, not among the user's graphs nor
+    # another worker's (pytest -n): a second graph of a name in use would warn in its output.
+    sockets = tempfile.mkdtemp(prefix="actors-run-")  # short: a socket's path holds 108 bytes
+    os.environ["XDG_RUNTIME_DIR"] = sockets
+    config.add_cleanup(lambda: shutil.rmtree(sockets, ignore_errors=True))
     config.addinivalue_line(
         "markers",
         "slow: a test that takes about a third of a second or more (a child Python, a wall-clock wait); "

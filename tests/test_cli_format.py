@@ -36,10 +36,12 @@ def test_yaml_text_of_a_message_a_field_and_a_scalar():
         field(msg, "angular.w")
 
 
-def test_the_dot_graph_leaves_out_rosout_and_hidden_endpoints_unless_asked():
-    def end(node: str) -> EndpointInfo:
-        return EndpointInfo(node=node, type="std_msgs/msg/String", qos=QoSSnapshot())
+def _end(node: str) -> EndpointInfo:
+    return EndpointInfo(node=node, type="std_msgs/msg/String", qos=QoSSnapshot())
 
+
+def test_the_dot_graph_leaves_out_rosout_and_hidden_endpoints_unless_asked():
+    end = _end
     graph = GraphSnapshot(
         name="demo",
         clock="wall",
@@ -72,6 +74,27 @@ def test_the_dot_graph_leaves_out_rosout_and_hidden_endpoints_unless_asked():
     )
     everything = to_dot(graph, everything=True)
     assert '"t:/chatter" -> "n:/_actors_cli_1";' in everything and '"n:/_demo" -> "t:/rosout";' in everything
+
+
+def test_the_pillow_drawing_has_arrowheads(tmp_path):
+    pytest.importorskip("PIL")
+    from PIL import Image
+
+    from actors.cli.graph import _draw_png
+
+    chatter = TopicInfo(
+        name="/chatter", type="std_msgs/msg/String", publishers=(_end("/talker"),), subscriptions=(_end("/listener"),)
+    )
+    graph = GraphSnapshot(name="demo", clock="wall", nodes=(), services=(), topics=(chatter,))
+    assert _draw_png(graph, False, tmp_path / "g.png")
+    image = Image.open(tmp_path / "g.png").convert("L")
+    # The edge /talker -> /chatter ends on the box's left side, halfway down its first row.
+    line = [x for x in range(image.width) if image.getpixel((x, 55)) < 250]
+    box_left = next(x for x in range(330, image.width) if image.getpixel((x, 45)) == 0)
+    assert box_left in line
+    for back, across in ((2, 0), (9, 3), (9, -3)):  # inside the head: black, wider than the line
+        assert image.getpixel((box_left - back, 55 + across)) == 0, (back, across)
+    assert image.getpixel((box_left - 9, 55 + 8)) == 255  # and narrower than 12 px at 9 px back
 
 
 def test_no_arr_and_no_str_print_ros2s_summaries_at_every_depth():

@@ -366,6 +366,7 @@ def test_graph_writes_a_dot_file(graph, tmp_path):
 def test_user_errors_exit_2_with_one_line(graph, args, error):
     result = actors(graph, *args)
     assert result.returncode == 2, result
+    assert "beginning loop" not in result.stdout  # topic pub: the publisher never began
     assert len(result.stderr.splitlines()) == 1 and result.stderr.startswith(f"actors: {error}"), result.stderr
     assert "Traceback" not in result.stdout + result.stderr
 
@@ -385,11 +386,19 @@ def test_a_closed_stdout_pipe_ends_echo_quietly(graph):
 def test_with_no_running_graph_every_verb_says_so_in_one_line(tmp_path, monkeypatch, capsys):
     # In this process: what is checked is the command line's answer, not anything of a child's.
     monkeypatch.setenv("XDG_RUNTIME_DIR", str(tmp_path))
-    for args in (("node", "list"), ("topic", "echo", "/topic"), ("doctor",), ("graph",)):
+    bag = tmp_path / "nothing"
+    for args in (
+        ("node", "list"),
+        ("topic", "echo", "/topic"),
+        ("doctor",),
+        ("graph",),
+        ("bag", "record", "-a", "-o", str(bag)),
+    ):
         assert main(list(args)) == 2
         assert capsys.readouterr().err == (
             "actors: no running actors graph found (start one with: python -m actors.run graph.toml)\n"
         )
+    assert not bag.exists()  # and a retry once the graph runs does not find it "already exists"
 
 
 @pytest.fixture(scope="module")

@@ -151,13 +151,18 @@ async def test_a_bad_request_gets_an_error_reply_and_the_connection_stays_open(n
             assert replies.ok  # the second request, after the failed first one
 
 
-async def test_a_graph_name_in_use_moves_on_and_a_stale_socket_is_replaced(name):
+async def test_a_graph_name_in_use_moves_on_and_a_stale_socket_is_replaced(name, caplog):
     async with (
         Runtime(name=name, attach=[ControlEndpoint()]) as first,
         Runtime(name=name, attach=[ControlEndpoint()]) as second,
     ):
         assert server(first).path.name == f"{name}.sock"
         assert server(second).path.name == f"{name}-2.sock"
+    # Not silently: the second graph says how to reach it, and what its own name reaches.
+    assert [r.getMessage() for r in caplog.records if r.levelname == "WARNING"] == [
+        f"another graph named {name!r} is running: the command line reaches this one "
+        f"as --graph {name}-2, and --graph {name} reaches the other"
+    ]
     stale = endpoint_dir() / f"{name}.sock"
     import socket
 

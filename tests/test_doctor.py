@@ -15,7 +15,7 @@ import pytest
 from actors import DurabilityPolicy, Node, QoSProfile, ReliabilityPolicy, Runtime, SupervisorPolicy
 from actors.cli._client import connect
 from actors.ops.control import ControlEndpoint, Subscribe
-from actors.ops.doctor import Report, diagnose
+from actors.ops.doctor import LagEvent, Report, diagnose
 from interfaces.std_msgs.msg import Int64, String
 
 
@@ -429,3 +429,15 @@ def test_the_run_queue_counter_counts_a_threads_wait_for_a_cpu_not_its_time_on_o
             hog.wait()
     (ratio,) = measured
     assert ratio > 1.4, ratio
+
+
+def test_a_loop_lag_line_names_the_callback_or_says_none_held_the_loop():
+    from actors.cli.doctor import lag_line
+
+    blamed = LagEvent(stamp=1.5, lag=0.25, node="/sleeper", callback="timer callback on_tick")
+    assert lag_line(blamed) == ("1.500", "0.250 s late, running /sleeper timer callback on_tick")
+    unblamed = LagEvent(stamp=2.0, lag=0.1)
+    assert lag_line(unblamed) == (
+        "2.000",
+        "0.100 s late, no node's callback held the loop (another task, or the process was not scheduled)",
+    )

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from actors.errors import GraphFileError
@@ -126,6 +128,37 @@ params_file = "params.yaml"
     assert graph.nodes[1].params == {"everyone": 1, "rate": 5.0}
 
 
+NODES_PY = """\
+from actors import Node
+
+NAME = "computed"
+
+
+class Configured(Node):
+    def __init__(self):
+        super().__init__("configured")
+
+
+class Computed(Node):
+    def __init__(self):
+        super().__init__(NAME)
+"""
+
+
+def nodes_module(folder: Path) -> str:
+    """NODES_PY in ``folder`` under a module name of its own (one process imports each name once)."""
+    name = f"nodes_{folder.name}"
+    (folder / f"{name}.py").write_text(NODES_PY)
+    return name
+
+
+def test_a_params_file_matches_the_name_the_node_gives_itself(tmp_path):
+    (tmp_path / "params.yaml").write_text("/configured:\n  ros__parameters: {rate: 2.0}\n")
+    use = f"{nodes_module(tmp_path)}:Configured"
+    path = write(tmp_path, f'[[nodes]]\nuse = "{use}"\nparams_file = "params.yaml"\n')
+    assert load_graph(path)[0].nodes[0].params == {"rate": 2.0}
+
+
 @pytest.mark.parametrize(
     ("yaml", "name", "expected"),
     [
@@ -137,10 +170,9 @@ params_file = "params.yaml"
 def test_params_file_mistakes_name_the_key(tmp_path, yaml, name, expected):
     if yaml is not None:
         (tmp_path / "params.yaml").write_text(yaml)
+    use = f"{nodes_module(tmp_path)}:Computed"  # its name is known only once it runs
     name_line = f"name = {name}\n" if name else ""
-    path = write(
-        tmp_path, f'[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\n{name_line}params_file = "params.yaml"\n'
-    )
+    path = write(tmp_path, f'[[nodes]]\nuse = "{use}"\n{name_line}params_file = "params.yaml"\n')
     with pytest.raises(GraphFileError) as info:
         load_graph(path)
     assert str(info.value).startswith(f"{path}: nodes[0].params_file: ")

@@ -190,9 +190,11 @@ def record_bag(args: argparse.Namespace) -> None:
     wanted = {expand(t, "/", "_") for t in args.topics}
     exclude = re.compile(args.exclude) if args.exclude else None
     output = args.output or time.strftime("rosbag2_%Y_%m_%d-%H_%M_%S")
+    graph = connect(args.graph)  # before the bag: without a graph, no empty bag is left behind
     try:
         bag = BagWriter(output)
     except OSError as exc:
+        graph.close()
         raise BagError(f"cannot record to {output}: {exc.strerror or exc}") from None
 
     def wanted_topic(name: str) -> bool:
@@ -222,7 +224,7 @@ def record_bag(args: argparse.Namespace) -> None:
 
     print(f"Recording to {bag.path} (Ctrl-C stops)", file=sys.stderr, flush=True)
     try:
-        with connect(args.graph) as conn:
+        with graph as conn:
             virtual = conn.graph().clock == "virtual"
             next_look = 0.0
             while True:

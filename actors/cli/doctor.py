@@ -9,9 +9,9 @@ from typing import TYPE_CHECKING, Any
 from actors.cli._client import add_verb, connect
 
 if TYPE_CHECKING:
-    from actors.ops.doctor import Check
+    from actors.ops.doctor import Check, LagEvent
 
-__all__ = ["register"]
+__all__ = ["register", "lag_line"]
 
 
 def register(subparsers: Any) -> None:
@@ -90,10 +90,7 @@ def doctor(args: argparse.Namespace) -> None:
                 for t in graph.topics
             ],
         )
-        lag = [
-            (f"{e.stamp:.3f}", f"{e.lag:.3f} s late, running {e.node or '?'} {e.callback}".rstrip())
-            for e in report.lag_events
-        ]
+        lag = [lag_line(e) for e in report.lag_events]
         _section(
             "LOOP LAG",
             (lag or [("events", "none")]) if report.lag_measured else [("measured", "no (virtual time)")],
@@ -127,3 +124,12 @@ def _section(title: str, rows: Iterable[tuple[str, str]]) -> None:
     print(f"\n   {title}")
     for key, value in rows:
         print(f"{key:<{width}}: {value}")
+
+
+def lag_line(event: LagEvent) -> tuple[str, str]:
+    """One LOOP LAG line: when, how late, and the node's callback that held the loop, if one did."""
+    if event.node:
+        held = f"running {event.node} {event.callback}".rstrip()
+    else:
+        held = "no node's callback held the loop (another task, or the process was not scheduled)"
+    return f"{event.stamp:.3f}", f"{event.lag:.3f} s late, {held}"

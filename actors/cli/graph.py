@@ -11,6 +11,7 @@ DOT file is written and a note says why there is no image.
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -121,6 +122,14 @@ def to_dot(graph: GraphSnapshot, *, everything: bool = False) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _arrowhead(a: tuple[float, float], b: tuple[float, float]) -> list[tuple[float, float]]:
+    """The triangle at ``b`` of an arrow from ``a``: 12 px long, 12 px wide, its point on ``b``."""
+    length = math.dist(a, b) or 1.0
+    ux, uy = (b[0] - a[0]) / length, (b[1] - a[1]) / length  # along the arrow
+    back = (b[0] - 12 * ux, b[1] - 12 * uy)
+    return [b, (back[0] - 6 * uy, back[1] + 6 * ux), (back[0] + 6 * uy, back[1] - 6 * ux)]
+
+
 def _draw_png(graph: GraphSnapshot, everything: bool, path: Path) -> bool:
     """Draw columns (publishing nodes, topics, other nodes) with Pillow; False without it."""
     try:
@@ -153,6 +162,6 @@ def _draw_png(graph: GraphSnapshot, everything: bool, path: Path) -> bool:
         a = (start[2], (start[1] + start[3]) / 2) if start[0] < end[0] else (start[0], (start[1] + start[3]) / 2)
         b = (end[0], (end[1] + end[3]) / 2) if start[0] < end[0] else (end[2], (end[1] + end[3]) / 2)
         draw.line([a, b], fill="gray", width=2)
-        draw.ellipse((b[0] - 4, b[1] - 4, b[0] + 4, b[1] + 4), fill="black")  # the arrow's head
+        draw.polygon(_arrowhead(a, b), fill="black")
     image.save(path)
     return True

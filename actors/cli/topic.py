@@ -171,16 +171,17 @@ def publish(args: argparse.Namespace) -> None:
     request = Publish(topic=args.topic, type=codec.ros_name(msg_type), msg=codec.to_builtins(msg))
     period = 1.0 / args.rate
     with connect(args.graph) as conn:
-        print("publisher: beginning loop")
         start = time.monotonic()  # the command's own pace, on the wall clock, as ros2's
-        count = 0
+        conn.request(request)  # the graph refuses a topic of another type here, before anything is printed
+        print("publisher: beginning loop")
+        count = 1
         while True:
-            conn.request(request)
-            count += 1
             print(f"publishing #{count}: {ros_repr(msg)}\n", flush=True)
             if count == times:
                 return
             time.sleep(max(0.0, start + count * period - time.monotonic()))
+            conn.request(request)
+            count += 1
 
 
 def topic_hz(args: argparse.Namespace) -> None:

@@ -208,10 +208,10 @@ def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
                 expand(target, namespace, entry.name or "node", what="remap target")
             except InvalidNameError as exc:
                 raise GraphFileError(f"{path}: {key}.remap.{source}: {exc}") from None
-        if entry.params_file is not None:
-            params = _file_params(Path(path).parent / entry.params_file, entry, namespace, f"{path}: {key}")
-            nodes[i] = msgspec.structs.replace(entry, params={**params, **entry.params})
         name = entry.name or default_node_name(cls)
+        if entry.params_file is not None:
+            params = _file_params(Path(path).parent / entry.params_file, name, namespace, f"{path}: {key}")
+            nodes[i] = msgspec.structs.replace(entry, params={**params, **entry.params})
         if name is not None:
             fqn = fully_qualified(namespace, name)
             if fqn in taken:
@@ -224,16 +224,20 @@ def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
     return msgspec.structs.replace(graph, nodes=nodes), classes
 
 
-def _file_params(file: Path, entry: NodeEntry, namespace: str, where: str) -> dict[str, Any]:
-    """What a ROS parameter file gives the node of ``entry``: matched by its full name, as rcl does."""
+def _file_params(file: Path, name: str | None, namespace: str, where: str) -> dict[str, Any]:
+    """What a ROS parameter file gives the node ``name``: matched by its full name, as rcl does.
+
+    ``name`` is the entry's, or the one its class gives itself plainly; None when
+    only running it would tell.
+    """
     try:
         rules = load_params_file(file)
     except RosArgsError as exc:
         raise GraphFileError(f"{where}.params_file: {exc}") from None
-    if entry.name is not None:
-        return values_for(rules, fully_qualified(namespace, entry.name))
-    # Without a name the node's own default decides, known only once it runs: only keys that
-    # match any node name (wildcards) can be applied here.
+    if name is not None:
+        return values_for(rules, fully_qualified(namespace, name))
+    # A name computed at run time is known only once the node runs: only keys that match any
+    # node name (wildcards) can be applied here.
     named = [rule.node_key for rule in rules if not _any_name(rule.node_key, namespace)]
     if named:
         raise GraphFileError(

@@ -313,10 +313,15 @@ def _claim_lock(directory: Path) -> Iterator[None]:
         os.close(fd)
 
 
+def _endpoint_base(name: str) -> str:
+    """The endpoint name a graph called ``name`` asks for first: its characters safe in a file name."""
+    return "".join(c if c.isalnum() or c in "-_." else "_" for c in name) or "actors"
+
+
 def _bind(name: str) -> tuple[socket.socket, Path]:
     """A listening socket on the first free ``<name>[-n].sock``; raises ControlError or OSError."""
     directory = endpoint_dir(create=True)
-    base = "".join(c if c.isalnum() or c in "-_." else "_" for c in name) or "actors"
+    base = _endpoint_base(name)
     with _claim_lock(directory):
         for n in range(1, 1000):
             path = directory / f"{base if n == 1 else f'{base}-{n}'}{_SUFFIX}"
@@ -707,6 +712,12 @@ class ControlEndpoint:
             runtime.logger.warning(f"no control endpoint, the command line cannot reach this graph: {exc}")
             task_status.started()
             return
+        endpoint = path.name[: -len(_SUFFIX)]
+        if endpoint != _endpoint_base(runtime.name):
+            runtime.logger.warning(
+                f"another graph named {runtime.name!r} is running: the command line reaches this one "
+                f"as --graph {endpoint}, and --graph {runtime.name} reaches the other"
+            )
         inode = -1  # the socket file is ours only once we know its inode
         try:
             inode = os.stat(path).st_ino
