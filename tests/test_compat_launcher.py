@@ -350,3 +350,19 @@ def test_ctrl_c_while_the_main_thread_holds_the_overlays_lock_does_not_deadlock(
     assert done.returncode == 0, done.stderr
     assert done.stdout == "KeyboardInterrupt\n"
     assert "Traceback" not in done.stderr
+
+
+@pytest.mark.slow
+def test_two_scripts_naming_one_node_alike_get_the_error_on_the_scripts_own_line(tmp_path):
+    first, second = tmp_path / "first.py", tmp_path / "second.py"
+    for path in (first, second):
+        path.write_text("import rclpy\nrclpy.init()\nnode = rclpy.create_node('same')\nrclpy.spin(node)\n")
+    done = actors_run("--with", str(second), "--clock", "virtual", "--duration", "1", str(first))
+    assert done.returncode == 1
+    lines = [line for line in done.stderr.splitlines() if line.strip(" ^~")]  # carets vary by Python
+    assert lines == [
+        "Traceback (most recent call last):",
+        f'  File "{second}", line 3, in <module>',
+        "    node = rclpy.create_node('same')",
+        "actors.errors.InvalidNameError: a node named /same already runs in runtime 'first'",
+    ]

@@ -163,3 +163,31 @@ def test_the_repositorys_graph_toml_still_says_nodes_and_world_and_gets_the_repo
     assert done.returncode == 0, done.stderr
     pairs = [pair.partition("=") for pair in done.stdout.split()]
     assert pairs and all(m.split(".")[0] in ("nodes", "world") and Path(f).is_relative_to(ROOT) for m, _, f in pairs)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("where", ["graph folder", "installed"])
+def test_a_node_module_whose_import_fails_is_one_line_naming_its_line_and_exits_2(tmp_path, where):
+    # In the graph's folder the module is run from its file; otherwise it is imported by name.
+    home = tmp_path / "home"
+    home.mkdir()
+    module = f"needs_missing_{where.split()[0]}"
+    folder = tmp_path if where == "graph folder" else home
+    (folder / f"{module}.py").write_text("import rclpy_helpers_nobody_installed\n")
+    graph = graph_file(tmp_path, f"{module}:Mine")
+    env = child_env()
+    if where == "installed":
+        env["PYTHONPATH"] = str(home)
+    done = subprocess.run(
+        [sys.executable, "-m", "actors.run", str(graph), "--clock", "virtual", "--duration", "1"],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert done.returncode == 2
+    assert done.stderr == (
+        f"error: {graph}: nodes[0].use: cannot import '{module}': No module named "
+        f"'rclpy_helpers_nobody_installed' ({folder / module}.py, line 1)\n"
+    )

@@ -49,6 +49,7 @@ from actors.compat.rclpy.utilities import get_default_context, try_shutdown
 from actors.compat.script_state import ScriptArgv
 from actors.compat.session import Session
 from actors.compat.turns import Turn
+from actors.core._frames import users_traceback
 from actors.errors import ActorsError, GraphFileError, LaunchFileError, PackageError, RosArgsError
 from actors.launch.graph_file import load_graph
 from actors.launch.rosargs import parse
@@ -381,10 +382,9 @@ def _exit_code(code: Any) -> int:
 
 
 def _print_script_traceback(exc: BaseException, program: Program) -> None:
-    # Leave out the launcher's and runpy's frames: the traceback starts in the program.
-    tb = exc.__traceback__
-    while tb is not None and not program.owns(tb.tb_frame.f_code.co_filename):
-        tb = tb.tb_next
+    # The program's frames (and its own modules'), not the launcher's, runpy's or the overlay's:
+    # a mistake of the program's reads as a line of it, not as seventeen frames of actors.
+    tb = users_traceback(exc.__traceback__)
     traceback.print_exception(type(exc), exc, tb or exc.__traceback__, file=sys.stderr)
 
 

@@ -30,9 +30,11 @@ import importlib.resources
 import importlib.util
 import os
 import sys
+import traceback
 from pathlib import Path
 from types import ModuleType
 
+from actors.core._frames import is_users
 from actors.core.explain import did_you_mean
 
 __all__ = ["SHIPPED", "UseError", "shipped_graphs", "find_graph", "import_use"]
@@ -124,6 +126,9 @@ def _adopt(top: str, spec: importlib.machinery.ModuleSpec, place: Path) -> None:
     try:
         if spec.loader is not None:
             spec.loader.exec_module(module)
+    except Exception as exc:  # whatever the module raised while importing: one line, where it did
+        del sys.modules[top]
+        raise _cannot_import(top, exc) from None
     except BaseException:
         del sys.modules[top]
         raise
@@ -166,6 +171,13 @@ def _import(module_name: str, hidden: str | None = None) -> ModuleType:
                 f"{module_name} ({hidden}): write {SHIPPED[top]}.{module_name.partition('.')[2]} "
                 f"to use the shipped one, or rename yours"
             ) from None
-        raise UseError(f"cannot import {module_name!r}: {exc}") from None
+        raise _cannot_import(module_name, exc) from None
     except Exception as exc:  # whatever the module raised while importing
-        raise UseError(f"cannot import {module_name!r}: {exc}") from None
+        raise _cannot_import(module_name, exc) from None
+
+
+def _cannot_import(module_name: str, exc: Exception) -> UseError:
+    """One line: what failed, and the user's line that raised it (the last of theirs in the traceback)."""
+    theirs = [(frame, line) for frame, line in traceback.walk_tb(exc.__traceback__) if is_users(frame)]
+    where = f" ({theirs[-1][0].f_code.co_filename}, line {theirs[-1][1]})" if theirs else ""
+    return UseError(f"cannot import {module_name!r}: {exc}{where}")
