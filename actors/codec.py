@@ -31,7 +31,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 import msgspec
 import msgspec.inspect as mi
 
-from actors.core.explain import explain
+from actors.core.explain import closest, explain
 from actors.errors import InterfaceError, MessageValidationError, UnknownInterfaceError
 from actors.messages import cdr, typehash
 from actors.messages.discovery import discovered, package_sources
@@ -111,7 +111,26 @@ def get_type(name: str) -> type[Any]:
         if found is not None:
             _types[name] = found
             return found
-    raise UnknownInterfaceError(f"unknown interface type {name!r}")
+    raise UnknownInterfaceError(f"unknown interface type {name!r}{_near_miss(parts)}")
+
+
+def _near_miss(parts: list[str]) -> str:
+    """`` (did you mean 'pkg/msg/Name'?)`` for a known type one part away from ``parts``, or nothing.
+
+    The name is matched within its package, or, with the package misspelt, the
+    packages that have a type of exactly that name: only names that exist.
+    """
+    pkg, leaf = parts[0], parts[-1]
+    kinds = parts[1:2] if len(parts) == 3 else list(_KINDS)
+    known = [t.split("/") for t in list_types()]
+    mine = [t[2] for t in known if t[0] == pkg and t[1] in kinds]
+    if mine:
+        match = closest(leaf, mine)
+        fixed = [*parts[:-1], match] if match else None
+    else:
+        match = closest(pkg, {t[0] for t in known if t[2] == leaf and t[1] in kinds})
+        fixed = [match, *parts[1:]] if match else None
+    return f" (did you mean '{'/'.join(fixed)}'?)" if fixed else ""
 
 
 _KINDS = ("msg", "srv", "action")

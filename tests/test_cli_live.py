@@ -261,7 +261,7 @@ def test_param_set_reaches_the_node_and_get_list_dump_read_it(graph):
     assert ok(graph, "param", "get", "minimal_client_async", "a") == "Integer value is: 41\n"
     assert (
         ok(graph, "param", "list", "/minimal_param_node")
-        == "/minimal_param_node:\n  my_parameter\n  use_sim_time\n"  # every ROS node has use_sim_time
+        == "  my_parameter\n  use_sim_time\n"  # every ROS node has use_sim_time; one node: no header, as ros2
     )
     assert "/minimal_client_async:\n  a\n  b\n  use_sim_time\n" in ok(graph, "param", "list")
     dumped = yaml.safe_load(ok(graph, "param", "dump", "/minimal_client_async"))

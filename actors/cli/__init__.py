@@ -29,6 +29,7 @@ GROUPS = (
     "run",
     "pkg",
     "bag",
+    "daemon",
 )
 
 
@@ -58,7 +59,9 @@ def main(argv: Sequence[str] | None = None) -> int:
 
         return launch(argv[1:])
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args, unknown = parser.parse_known_args(argv)
+    if unknown:  # the verb's usage, as ros2 prints it, not the whole command line's
+        getattr(args, "verb_parser", parser).error(f"unrecognized arguments: {' '.join(unknown)}")
     try:
         for folder in args.workspace:
             add_workspace(folder)

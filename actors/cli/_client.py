@@ -16,7 +16,7 @@ import contextlib
 import functools
 import socket
 import time
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
 from typing import Any, TypeVar, overload
 
@@ -58,9 +58,11 @@ BUSY_RETRY = 2.0
 _sample_decoder = msgspec.msgpack.Decoder(Sample)
 
 
-def add_verb(verbs: Any, name: str, func: Callable[[argparse.Namespace], int | None], help: str) -> Any:
+def add_verb(
+    verbs: Any, name: str, func: Callable[[argparse.Namespace], int | None], help: str, aliases: Sequence[str] = ()
+) -> Any:
     """Add a verb that runs ``func(args)`` and takes ``--graph NAME`` and ``--transport``; return its parser."""
-    parser = verbs.add_parser(name, help=help)
+    parser = verbs.add_parser(name, help=help, aliases=list(aliases))
     parser.add_argument(
         "--graph",
         metavar="NAME",
@@ -72,7 +74,7 @@ def add_verb(verbs: Any, name: str, func: Callable[[argparse.Namespace], int | N
         help="zenoh: see every process's nodes over Zenoh (actors graphs, ROS 2 with rmw_zenoh_cpp) "
         "instead of one graph; default: $ACTORS_TRANSPORT, else none",
     )
-    parser.set_defaults(func=functools.partial(_through_transport, func))
+    parser.set_defaults(func=functools.partial(_through_transport, func), verb_parser=parser)
     return parser
 
 
@@ -319,8 +321,11 @@ def call_service(conn: Connection, service: str, srv_type: type[Any], request: A
     return codec.convert(conn.request(call, timeout=timeout + 5.0), srv_type.Response)
 
 
-def print_names(entries: Iterable[Any], show_types: bool) -> None:
-    """Each entry's ``name``, with `` [type]`` under ``-t``: how ros2's list verbs print."""
+def print_names(entries: Iterable[Any], show_types: bool, count: bool = False) -> None:
+    """Each entry's ``name``, with `` [type]`` under ``-t``, or under ``-c`` how many: as ros2's list verbs print."""
+    if count:
+        print(len(list(entries)))
+        return
     for entry in entries:
         print(f"{entry.name} [{entry.type}]" if show_types else entry.name)
 

@@ -21,6 +21,7 @@ def register(subparsers: Any) -> None:
         "doctor",
         doctor,
         help="check the graph's health: topics, QoS, crashes, drops, lag",
+        aliases=["wtf"],
     )
     parser.add_argument(
         "-r",

@@ -20,6 +20,7 @@ def register(subparsers: Any) -> None:
 
     listing = add_verb(verbs, "list", list_nodes, help="list the graph's nodes")
     listing.add_argument("-a", "--all", action="store_true", help="also list hidden nodes (names starting with _)")
+    listing.add_argument("-c", "--count-nodes", action="store_true", help="only print how many nodes there are")
 
     info = add_verb(
         verbs,
@@ -32,10 +33,13 @@ def register(subparsers: Any) -> None:
 
 
 def list_nodes(args: argparse.Namespace) -> None:
-    """Print every node's full name, sorted."""
-    for name in sorted(node.name for node in graph_snapshot(args).nodes):
-        if args.all or not is_hidden(name):
-            print(name)
+    """Print every node's full name, sorted (under ``-c``, how many there are)."""
+    names = sorted(node.name for node in graph_snapshot(args).nodes if args.all or not is_hidden(node.name))
+    if args.count_nodes:
+        print(len(names))
+        return
+    for name in names:
+        print(name)
 
 
 def node_info(args: argparse.Namespace) -> None:

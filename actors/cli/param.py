@@ -9,9 +9,11 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 from actors.cli._client import add_verb, call_service, connect
+from actors.core.explain import did_you_mean
 from actors.errors import ControlError
 
 if TYPE_CHECKING:
@@ -40,10 +42,16 @@ def register(subparsers: Any) -> None:
 
     listing = add_verb(verbs, "list", list_parameters, help="list the parameters of one node, or of every node")
     listing.add_argument("node", metavar="NODE", nargs="?")
+    listing.add_argument("--filter", metavar="REGEX", help="only the parameters whose names the regex matches")
+    listing.add_argument(
+        "--param-prefixes", nargs="+", default=[], metavar="PREFIX", help="only the parameters under these prefixes"
+    )
+    listing.add_argument("--param-type", action="store_true", help="print each parameter's type beside its name")
 
     get = add_verb(verbs, "get", get_parameter, help="print a parameter's type and value")
     get.add_argument("node", metavar="NODE")
     get.add_argument("name", metavar="NAME")
+    get.add_argument("--hide-type", action="store_true", help="print the value alone")
 
     set_ = add_verb(
         verbs,
@@ -77,12 +85,29 @@ def register(subparsers: Any) -> None:
 
 
 def list_parameters(args: argparse.Namespace) -> None:
-    """Print ``/node:`` then each parameter name indented, for NODE or every node."""
+    """Print each parameter name indented, for NODE, or under a ``/node:`` line for every node.
+
+    As ``ros2 param list``: ``--filter`` keeps the names the regex matches (from
+    their start), ``--param-prefixes`` those under the prefixes, and
+    ``--param-type`` adds ``(type: double)``.  ControlError for a bad regex.
+    """
+    import re
+
+    try:
+        pattern = re.compile(args.filter) if args.filter is not None else None
+    except re.error as exc:
+        raise ControlError(f"--filter {args.filter!r} is not a regular expression: {exc}") from None
     with connect(args.graph) as conn:
         for node in _nodes(conn, args.node):
-            print(f"{node}:")
-            for name in _names(conn, node):
-                print(f"  {name}")
+            names = [n for n in _names(conn, node, args.param_prefixes) if pattern is None or pattern.match(n)]
+            if args.node is None and names:
+                print(f"{node}:")
+            types: dict[str, str] = {}
+            if args.param_type and names:
+                described = _call(conn, node, "describe_parameters", names=names).descriptors
+                types = {d.name: _TYPE_NAMES.get(d.type, "not set") for d in described}
+            for name in names:
+                print(f"  {name} (type: {types[name]})" if args.param_type else f"  {name}")
 
 
 def get_parameter(args: argparse.Namespace) -> None:
@@ -94,7 +119,7 @@ def get_parameter(args: argparse.Namespace) -> None:
         (value,) = _call(conn, node, "get_parameters", names=[args.name]).values
     if value.type not in _LABELS:
         raise ControlError(f"parameter {args.name!r} is not set on {node}")
-    print(f"{_LABELS[value.type]}: {value_from_msg(value)}")
+    print(value_from_msg(value) if args.hide_type else f"{_LABELS[value.type]}: {value_from_msg(value)}")
 
 
 def describe_parameters(args: argparse.Namespace) -> None:
@@ -247,12 +272,13 @@ def _nodes(conn: Connection, name: str | None) -> list[str]:
         return nodes
     full = expand(name, "/", "_", what="node name")
     if full not in nodes:
-        raise ControlError(f"unknown node {full}")
+        raise ControlError(f"unknown node {full}{did_you_mean(full, nodes)}")
     return [full]
 
 
-def _names(conn: Connection, node: str) -> list[str]:
-    return sorted(_call(conn, node, "list_parameters").result.names)  # the node answers in declaration order
+def _names(conn: Connection, node: str, prefixes: Sequence[str] = ()) -> list[str]:
+    # The node answers in declaration order.
+    return sorted(_call(conn, node, "list_parameters", prefixes=list(prefixes)).result.names)
 
 
 def _call(conn: Connection, node: str, service: str, **fields: Any) -> Any:

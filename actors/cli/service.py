@@ -20,6 +20,7 @@ def register(subparsers: Any) -> None:
     listing.add_argument(
         "--include-hidden-services", action="store_true", help="also list hidden services (an action's)"
     )
+    listing.add_argument("-c", "--count-services", action="store_true", help="only print how many services there are")
 
     add_type_and_find(verbs, "service", "rcl_interfaces/srv/ListParameters", lambda graph: graph.services)
 
@@ -41,7 +42,8 @@ def list_services(args: argparse.Namespace) -> None:
     from actors.ros.names import is_hidden_name
 
     services = graph_snapshot(args).services
-    print_names([s for s in services if args.include_hidden_services or not is_hidden_name(s.name)], args.show_types)
+    shown = [s for s in services if args.include_hidden_services or not is_hidden_name(s.name)]
+    print_names(shown, args.show_types, args.count_services)
 
 
 def call(args: argparse.Namespace) -> None:

@@ -23,6 +23,10 @@ def register(subparsers: Any) -> None:
     listing = add_verb(verbs, "list", list_topics, help="list the graph's topics")
     listing.add_argument("-t", "--show-types", action="store_true", help="also show each topic's type")
     listing.add_argument("--include-hidden-topics", action="store_true", help="also list hidden topics (an action's)")
+    listing.add_argument("-c", "--count-topics", action="store_true", help="only print how many topics there are")
+    listing.add_argument(
+        "-v", "--verbose", action="store_true", help="the published, then the subscribed topics, with their counts"
+    )
 
     info = add_verb(verbs, "info", topic_info, help="a topic's type and its publishers and subscriptions")
     info.add_argument("topic", metavar="TOPIC")
@@ -87,19 +91,32 @@ def list_topics(args: argparse.Namespace) -> None:
     """Print each topic's name, with ``[type]`` under ``-t``; hidden ones only when asked."""
     from actors.ros.names import is_hidden_name
 
-    topics = graph_snapshot(args).topics
-    print_names([t for t in topics if args.include_hidden_topics or not is_hidden_name(t.name)], args.show_types)
+    topics = [t for t in graph_snapshot(args).topics if args.include_hidden_topics or not is_hidden_name(t.name)]
+    if args.verbose and not args.count_topics:
+        for title, kind, ends in (
+            ("Published", "publisher", "publishers"),
+            ("Subscribed", "subscriber", "subscriptions"),
+        ):
+            print(f"{title} topics:")
+            for topic in topics:
+                if n := len(getattr(topic, ends)):
+                    print(f" * {topic.name} [{topic.type}] {n} {kind}{'s' if n > 1 else ''}")
+            print()
+        return
+    print_names(topics, args.show_types, args.count_topics)
 
 
 def topic_info(args: argparse.Namespace) -> None:
     """Print the type and endpoint counts (with ``-v``, each endpoint); ControlError if unknown."""
+    from actors.core.explain import did_you_mean
     from actors.errors import ControlError
     from actors.ros.names import expand
 
     name = expand(args.topic, "/", "_")
-    topic = next((t for t in graph_snapshot(args).topics if t.name == name), None)
+    topics = graph_snapshot(args).topics
+    topic = next((t for t in topics if t.name == name), None)
     if topic is None:
-        raise ControlError(f"unknown topic {name}")
+        raise ControlError(f"unknown topic {name}{did_you_mean(name, [t.name for t in topics])}")
     sections = (
         ("Publisher", "PUBLISHER", topic.publishers),
         ("Subscription", "SUBSCRIPTION", topic.subscriptions),

@@ -21,7 +21,7 @@ from typing import Any, NamedTuple
 import msgspec
 import msgspec.inspect as mi
 
-__all__ = ["Words", "MESSAGE_WORDS", "FILE_WORDS", "Explained", "explain", "did_you_mean", "shown"]
+__all__ = ["Words", "MESSAGE_WORDS", "FILE_WORDS", "Explained", "explain", "did_you_mean", "closest", "shown"]
 
 
 class Words(msgspec.Struct, frozen=True, kw_only=True):
@@ -97,8 +97,14 @@ def explain(exc: msgspec.MsgspecError, type_: Any, data: Any, words: Words = MES
 
 def did_you_mean(given: str, known: Iterable[str]) -> str:
     """`` (did you mean 'x'?)`` for the closest of ``known`` to ``given``, or nothing."""
+    close = closest(given, known)
+    return f" (did you mean '{close}'?)" if close is not None else ""
+
+
+def closest(given: str, known: Iterable[str]) -> str | None:
+    """The one of ``known`` closest to ``given``, if any is close enough to be a typo of it."""
     close = difflib.get_close_matches(given, list(known), n=1, cutoff=0.6)
-    return f" (did you mean '{close[0]}'?)" if close else ""
+    return close[0] if close else None
 
 
 def shown(value: Any, words: Words = MESSAGE_WORDS) -> str:

@@ -60,7 +60,7 @@ import msgspec
 
 from actors import codec
 from actors.core._actor import Actor, CallbackFailed, Owner
-from actors.core.explain import explain
+from actors.core.explain import did_you_mean, explain
 from actors.core.tomlfile import MAX_SECONDS
 from actors.errors import ActorsError, ControlError, InterfaceError
 from actors.ops._connections import Connection, ConnectionLimits, ConnectionPool, ConnectionStats
@@ -535,7 +535,8 @@ class _Session:
         full = name if name.startswith("/") else f"/{name}"
         node = next((n for n in self.runtime.graph.remote_nodes() if n.name == full), None)
         if node is None:
-            raise ControlError(f"unknown node {name}")
+            known = [n.name for n in self.runtime.graph.nodes()]
+            raise ControlError(f"unknown node {name}{did_you_mean(full, known)}")
 
         def pairs(kind: str) -> tuple[tuple[str, str], ...]:
             return tuple(sorted({(e.name, e.type) for e in node.endpoints if e.kind == kind}))
@@ -559,7 +560,8 @@ class _Session:
             asked = remote.type if remote is not None else ""
         msg_type = codec.get_type(asked) if asked else None
         if topic is None and msg_type is None:
-            raise ControlError(f"unknown topic {name}")
+            known = [t.name for t in self.runtime.graph.topics()]
+            raise ControlError(f"unknown topic {name}{did_you_mean(name, known)}")
         if topic is not None and msg_type is not None and topic.msg_type is not msg_type:
             raise ControlError(f"topic {name} carries {type_name(topic.msg_type)}, not {asked}")
         if msg_type is None:
@@ -626,7 +628,8 @@ class _Session:
         name = expand(request.service, "/", "_", what="service name")
         server = self.runtime.services.get(name)
         if server is None:
-            raise ControlError(f"unknown service {name}")
+            known = [s.name for s in self.runtime.graph.services()]
+            raise ControlError(f"unknown service {name}{did_you_mean(name, known)}")
         srv_type = codec.get_type(request.type)
         if srv_type is not server.srv_type:
             raise ControlError(f"service {name} has type {type_name(server.srv_type)}, not {request.type}")
