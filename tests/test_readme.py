@@ -271,9 +271,11 @@ def test_the_fragments_are_python_inside_an_async_method(body):
 @pytest.mark.parametrize("body", python_blocks("script"))
 @pytest.mark.slow
 def test_the_scripts_run_and_their_nodes_are_heard(body, private_endpoints, tmp_path):
+    # Outside the repository, as a reader runs it: the shipped nodes come from the installed actors.
     script = tmp_path / "example.py"
     script.write_text(body)
-    result = python(str(script), env=private_endpoints)
+    outside = {**private_endpoints, "PYTHONPATH": ""}
+    result = python(str(script), env=outside, cwd=tmp_path)
     assert result.returncode == 0, result.stderr
     assert re.search(r"^\[INFO\] \[\d+\.\d{9}\] \[\w+\]: ", result.stderr, re.MULTILINE), result.stderr
     assert "Traceback" not in result.stderr
