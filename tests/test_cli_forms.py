@@ -15,6 +15,7 @@ import pytest
 from actors import Node, Runtime
 from actors.cli import main
 from actors.ops.control import ControlEndpoint
+from interfaces.rcl_interfaces.srv import GetParameters
 from interfaces.std_msgs.msg import String
 
 
@@ -32,6 +33,7 @@ class Listener(Node):
     def __init__(self, name: str) -> None:
         super().__init__(name)
         self.create_subscription(String, "/chatter", lambda msg: None, 10)
+        self.create_client(GetParameters, "/talker/get_parameters")
 
 
 @pytest.fixture(autouse=True)
@@ -105,6 +107,16 @@ async def test_param_get_hide_type_prints_the_value_alone(capsys):
         hidden = await actors(capsys, "param", "get", "/talker", "speed", "--hide-type")
     assert shown == (0, "Double value is: 0.5\n", "")
     assert hidden == (0, "0.5\n", "")
+
+
+async def test_service_info_counts_clients_and_servers(capsys):
+    async with chatter():
+        asked = await actors(capsys, "service", "info", "/talker/get_parameters")
+        unasked = await actors(capsys, "service", "info", "talker/set_parameters")
+        unknown = await actors(capsys, "service", "info", "/talker/get_parameter")
+    assert asked == (0, "Type: rcl_interfaces/srv/GetParameters\nClients count: 2\nServices count: 1\n", "")
+    assert unasked == (0, "Type: rcl_interfaces/srv/SetParameters\nClients count: 0\nServices count: 1\n", "")
+    assert unknown[0] == 2 and "did you mean '/talker/get_parameters'?" in unknown[2]
 
 
 async def test_wtf_is_doctor(capsys):

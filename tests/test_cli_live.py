@@ -137,7 +137,12 @@ def test_node_list_shows_every_node_and_no_hidden_one(graph):
 @pytest.mark.slow
 def test_node_info_prints_ros2s_sections(graph):
     out = ok(graph, "node", "info", "/minimal_publisher")
-    assert out.startswith("/minimal_publisher\n  Subscribers:\n\n  Publishers:\n    /topic: std_msgs/msg/String\n")
+    assert out.startswith(
+        "/minimal_publisher\n  Subscribers:\n\n  Publishers:\n"
+        "    /parameter_events: rcl_interfaces/msg/ParameterEvent\n"  # every ROS node's, as ros2 lists them
+        "    /rosout: rcl_interfaces/msg/Log\n"
+        "    /topic: std_msgs/msg/String\n"
+    )
     assert (
         "  Service Servers:\n    /minimal_publisher/describe_parameters: rcl_interfaces/srv/DescribeParameters\n" in out
     )

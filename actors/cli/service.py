@@ -24,6 +24,9 @@ def register(subparsers: Any) -> None:
 
     add_type_and_find(verbs, "service", "rcl_interfaces/srv/ListParameters", lambda graph: graph.services)
 
+    info = add_verb(verbs, "info", service_info, help="a service's type and how many clients and servers it has")
+    info.add_argument("service", metavar="NAME")
+
     caller = add_verb(verbs, "call", call, help="call a service and print the response")
     caller.add_argument("service", metavar="NAME")
     caller.add_argument("type", metavar="TYPE", help="e.g. example_interfaces/srv/AddTwoInts")
@@ -44,6 +47,25 @@ def list_services(args: argparse.Namespace) -> None:
     services = graph_snapshot(args).services
     shown = [s for s in services if args.include_hidden_services or not is_hidden_name(s.name)]
     print_names(shown, args.show_types, args.count_services)
+
+
+def service_info(args: argparse.Namespace) -> None:
+    """Print ``Type:``, ``Clients count:`` and ``Services count:``, as ``ros2 service info``.
+
+    ControlError (exit 2) for a service nobody serves.
+    """
+    from actors.core.explain import did_you_mean
+    from actors.errors import ControlError
+    from actors.ros.names import expand
+
+    graph = graph_snapshot(args)
+    name = expand(args.service, "/", "_", what="service name")
+    servers = [s for s in graph.services if s.name == name]
+    if not servers:
+        raise ControlError(f"unknown service {name}{did_you_mean(name, [s.name for s in graph.services])}")
+    print(f"Type: {servers[0].type}")
+    print(f"Clients count: {sum(called == name for node in graph.nodes for called in node.calls)}")
+    print(f"Services count: {len(servers)}")
 
 
 def call(args: argparse.Namespace) -> None:

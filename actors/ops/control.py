@@ -69,6 +69,7 @@ from actors.ros.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from actors.ros.topics import Publisher, Subscription, type_name
 from actors.services import Client
 from actors.system.introspection import NodeInfo, ServiceInfo, TopicInfo
+from interfaces.rcl_interfaces.msg import Log, ParameterEvent
 
 if TYPE_CHECKING:
     from actors.ops.doctor import LagMonitor, Report
@@ -525,7 +526,7 @@ class _Session:
         return NodeDetail(
             name=core.fqn,
             subscribers=_pairs((s.topic_name, s.msg_type) for s in core.subscriptions),
-            publishers=_pairs((p.topic_name, p.msg_type) for p in core.publishers),
+            publishers=_pairs([*((p.topic_name, p.msg_type) for p in core.publishers), *_EVERY_NODE_PUBLISHES]),
             servers=_pairs(core.served()),
             clients=_pairs((c.service_name, c.srv_type) for c in core.clients),
         )
@@ -684,6 +685,11 @@ class _Session:
         self._publishers.clear()
         self._subscriptions.clear()
         self._clients.clear()
+
+
+# Every ROS node publishes its log and its parameter changes, so ros2's node info lists both for
+# each; here the runtime's one publisher of each carries them for all its nodes.
+_EVERY_NODE_PUBLISHES = (("/parameter_events", ParameterEvent), ("/rosout", Log))
 
 
 def _pairs(items: Iterable[tuple[str, type]]) -> tuple[tuple[str, str], ...]:
