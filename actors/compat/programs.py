@@ -21,6 +21,7 @@ import builtins
 import importlib
 import runpy
 import sys
+from abc import ABC, abstractmethod
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -44,24 +45,24 @@ __all__ = [
 ]
 
 
-class Program:
+class Program(ABC):
     """A program to run on the main thread (or a partner's), under the overlay."""
 
     name: str  # the runtime's name, and what messages call the program
     argv0: str  # sys.argv[0] while it runs
     paths: Sequence[Path] = ()  # put first on sys.path while it runs
 
+    @abstractmethod
     def run(self, *, main: bool = True) -> None:
         """Run it to its end; raises what it raises (SystemExit with its exit code).
 
         ``main``: on the main thread, the only program of the process that owns
         ``sys.modules["__main__"]``; a partner's script gets a ``__main__`` namespace of its own.
         """
-        raise NotImplementedError
 
+    @abstractmethod
     def owns(self, filename: str) -> bool:
         """Whether a traceback frame of ``filename`` is the program's own (where a shown traceback starts)."""
-        raise NotImplementedError
 
 
 class ScriptProgram(Program):
