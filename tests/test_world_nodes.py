@@ -18,6 +18,7 @@ from interfaces.nav_msgs.msg import Odometry
 from interfaces.sensor_msgs.msg import LaserScan
 from interfaces.std_msgs.msg import Bool
 from nodes.constant_control import ConstantControl
+from world.lidar import Lidar
 from world.robot import TurtleBot
 from world.sim import World
 
@@ -194,6 +195,51 @@ async def test_scans_at_10_hz_odometry_at_20_hz_and_the_ground_truth_without_odo
     # The robot stands still at the origin: the truth says so, the odometry is off by its noise.
     assert {(x, y) for _, x, y in observer.poses} == {(0.0, 0.0)} and len(observer.poses) == 20
     assert all(odom.pose.pose.position.x != 0.0 for odom in observer.odom)
+
+
+class LateScanReader(Node):
+    """Subscribes to the scan only at t = 1 s."""
+
+    def __init__(self) -> None:
+        super().__init__("late_reader")
+        self.scans: list[LaserScan] = []
+        self.timer = self.create_timer(1.0, self.join)
+
+    def join(self) -> None:
+        self.timer.cancel()
+        self.create_subscription(LaserScan, "scan", self.scans.append, 100)
+
+
+def test_the_lidar_is_cast_only_for_a_reader_and_a_late_reader_gets_the_same_noisy_scans(monkeypatch):
+    casts = []
+    cast = Lidar.distances
+
+    def counted(self: Lidar, *args: object, **kwargs: object) -> object:
+        casts.append(self)
+        return cast(self, *args, **kwargs)
+
+    monkeypatch.setattr(Lidar, "distances", counted)
+
+    async def scans_after_one_second(reader: type[Node]) -> list[list[float]]:
+        async with Runtime() as rt:
+            rt.spawn(World, params={"world": "signs"})
+            rt.spawn(TurtleBot, params={"noise_ranges": 0.02, "seed": 5})
+            rt.spawn(ConstantControl, params={"v": 0.2, "omega": 0.3})
+            node = rt.spawn(reader)
+            await anyio.sleep(2.05)
+        return [list(scan.ranges) for scan in node.scans if scan.header.stamp.sec >= 1 and scan.header.stamp.nanosec]
+
+    def run(reader: type[Node]) -> list[list[float]]:
+        # Each on its own virtual clock from 0, as two processes would.
+        casts.clear()
+        return anyio.run(scans_after_one_second, reader, backend_options={"loop_factory": VirtualTimeLoop})
+
+    from_start = run(Observer)
+    assert len(casts) == 20
+    late = run(LateScanReader)
+    assert len(casts) <= 11  # from t = 1 s on only
+    assert len(late) == len(from_start) == 9 and late == from_start
+    assert len({tuple(ranges) for ranges in late}) == 9  # the robot moves and the noise is on
 
 
 async def test_namespaced_robots_have_their_own_topics():

@@ -5,10 +5,12 @@ from __future__ import annotations
 import math
 
 import anyio
+import anyio.abc
 import pytest
 from conftest import protobuf_class
 
-from actors import Runtime
+from actors import Node, Runtime
+from interfaces.sensor_msgs.msg import LaserScan
 from world.robot import TurtleBot
 from world.scene import OBSTACLE_HEIGHT, scene_update
 from world.sim import World
@@ -34,17 +36,48 @@ vertices = [[1.0, -1.0], [1.5, -1.0], [1.0, -0.5]]
 """
 
 
+class ScanReader(Node):
+    """Subscribes to scan: without a reader the robot casts no lidar."""
+
+    def __init__(self) -> None:
+        super().__init__("scan_reader")
+        self.create_subscription(LaserScan, "scan", lambda msg: None, 10)
+
+
 def _read(update):
     schema = fm.SceneUpdate.get_schema()
     return protobuf_class(schema.name, schema.data).FromString(update.encode())
 
 
-async def test_the_scene_holds_the_arena_and_each_robot_and_its_scan_once_it_has_one(tmp_path):
+class Host:
+    """A live view as the World sees it: an attachment that shows scenes (it draws none here)."""
+
+    def __init__(self) -> None:
+        self.scenes: dict[str, object] = {}
+
+    async def __call__(self, runtime: Runtime, *, task_status: anyio.abc.TaskStatus[None]) -> None:
+        task_status.started()
+        await anyio.sleep_forever()
+
+    def add_scene(self, topic: str, draw: object) -> None:
+        self.scenes[topic] = draw
+
+    def remove_scene(self, topic: str) -> None:
+        self.scenes.pop(topic, None)
+
+
+@pytest.mark.parametrize("reader", ["a /scan subscription", "a live view alone"])
+async def test_the_scene_holds_the_arena_and_each_robot_and_its_scan_once_it_has_one(tmp_path, reader):
     path = tmp_path / "wedge.toml"
     path.write_text(WORLD_FILE)
-    async with Runtime() as rt:
+    host = Host()
+    async with Runtime(attach=[host] if reader == "a live view alone" else []) as rt:
         world = rt.spawn(World, params={"world": str(path)})
         rt.spawn(TurtleBot, name="turtlebot", namespace="robot1", params={"x": 0.5, "theta": math.pi / 2})
+        if reader == "a /scan subscription":
+            rt.spawn(ScanReader, namespace="robot1")
+        else:
+            assert list(host.scenes) == ["/scene"]
         before = _read(scene_update(world, rt.clock.now_ns()))
         await anyio.sleep(0.15)  # one scan
         now = rt.clock.now_ns()

@@ -62,3 +62,8 @@ class NoiseSource:
         if self.noise.ranges:
             distances += self._ranges.normal(0.0, self.noise.ranges, distances.shape)
         return distances
+
+    def skip_ranges(self, beams: int) -> None:
+        """Draw one scan's range noise and drop it: the stream moves on as ``ranges`` of ``beams`` would."""
+        if self.noise.ranges:
+            self._ranges.normal(0.0, self.noise.ranges, beams)

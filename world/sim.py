@@ -118,6 +118,16 @@ class World(Node):
             self._scanned_at = self.sim.steps
         return self._scans[robot]
 
+    def skip_scan(self, robot: str) -> None:
+        """Take no scan of ``robot`` this tick; its range noise moves on as a scan's would."""
+        body = self.sim.robots[robot]
+        body.noise_source.skip_ranges(body.model.lidar.beams)
+
+    @property
+    def draws_scans(self) -> bool:
+        """Whether a live view draws the robots' scans, so that they are taken with nobody on /scan."""
+        return bool(self._scene_hosts)
+
     def latest_scans(self) -> dict[str, tuple[Pose, np.ndarray]]:
         """The last batch of scans by robot, each with the pose it was taken from (empty before the first)."""
         poses = self._scans.poses()
