@@ -5,8 +5,10 @@ from __future__ import annotations
 import pytest
 
 import actors.compat.rclpy as rclpy
+from actors import codec
 from actors.compat.rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
 from actors.compat.rclpy.topic_endpoint_info import TopicEndpointInfo, TopicEndpointTypeEnum
+from actors.compat.rclpy.type_hash import TypeHash
 from actors.errors import RosArgsError
 from actors.ros.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, qos_profile_sensor_data
 from actors.ros.time import Duration
@@ -53,5 +55,7 @@ def test_a_publishers_info_carries_its_profile_and_type_hash(session):
     (info,) = node.get_publishers_info_by_topic("/ns/said")
     assert info.endpoint_type is TopicEndpointTypeEnum.PUBLISHER
     assert info.qos_profile.depth == 3 and info.qos_profile.lifespan == Duration()
-    assert info.topic_type_hash.startswith("RIHS01_")
+    assert isinstance(info.topic_type_hash, TypeHash) and info.topic_type_hash.version == 1
+    assert str(info.topic_type_hash) == codec.type_hash(String)
+    assert "Topic type hash: RIHS01_" in str(info)
     assert "  Durability: TRANSIENT_LOCAL" in str(info)

@@ -38,6 +38,7 @@ __all__ = [
     "ParameterImmutableException",
     "ParameterUninitializedException",
     "TimerCancelledError",
+    "NoTypeSupportImportedException",
 ]
 
 NameValidationException = InvalidNameError
@@ -53,6 +54,13 @@ class NotInitializedException(Exception):
 
     def __init__(self, msg: str = "rclpy.init() has not been called", *args: object) -> None:
         super().__init__(msg, *args)
+
+
+class NoTypeSupportImportedException(Exception):
+    """A message or service class has no type support (``type_support.check_for_type_support``)."""
+
+    def __init__(self) -> None:
+        super().__init__("no type_support imported")
 
 
 class ROSInterruptException(Exception):

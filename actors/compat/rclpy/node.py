@@ -21,6 +21,8 @@ import weakref
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
+import msgspec
+
 import actors.compat.rclpy.executors  # as rclpy's node does: `rclpy.executors` is then set
 import actors.compat.rclpy.logging  # noqa: F401 - and `rclpy.logging`
 from actors.compat.dispatch import NativeWork, ScriptActor, SpinningExecutor, WorkSource
@@ -36,8 +38,10 @@ from actors.compat.rclpy.service import Service
 from actors.compat.rclpy.subscription import Subscription
 from actors.compat.rclpy.time_source import TimeSource
 from actors.compat.rclpy.timer import Rate, Timer
+from actors.compat.rclpy.type_hash import TypeHash
 from actors.compat.rclpy.utilities import get_default_context
 from actors.launch.rosargs import RosArgs, parse
+from actors.ros.endpoint_info import TopicEndpointInfo
 from actors.ros.log import NodeLogger
 from actors.ros.names import expand
 from actors.ros.node import Node as NativeNode
@@ -301,6 +305,16 @@ class Node(NativeNode):
             session.sleep(min(0.1, left))
         return True
 
+    def get_publishers_info_by_topic(self, topic_name: str, no_mangle: bool = False) -> list[TopicEndpointInfo]:
+        """rclpy's infos of ``topic_name``'s publishers: the type hash is a :class:`TypeHash`."""
+        found = self._rclpy.session.call(NativeNode.get_publishers_info_by_topic, self, topic_name, no_mangle)
+        return [_rclpy_info(info) for info in found]
+
+    def get_subscriptions_info_by_topic(self, topic_name: str, no_mangle: bool = False) -> list[TopicEndpointInfo]:
+        """rclpy's infos of ``topic_name``'s subscriptions: the type hash is a :class:`TypeHash`."""
+        found = self._rclpy.session.call(NativeNode.get_subscriptions_info_by_topic, self, topic_name, no_mangle)
+        return [_rclpy_info(info) for info in found]
+
     def get_clock(self) -> ROSClock:
         """The node's ROS clock: the runtime's time, or ``/clock``'s while ``use_sim_time`` is true."""
         return self._rclpy.clock
@@ -530,6 +544,11 @@ class Node(NativeNode):
                 kind.clear()
             state.native_work.clear()
         state.context.untrack_node(self)
+
+
+def _rclpy_info(info: TopicEndpointInfo) -> TopicEndpointInfo:
+    # rclpy's infos carry the hash as an object (a TypeHash), not the native RIHS01 string.
+    return msgspec.structs.replace(info, topic_type_hash=TypeHash.from_string(info.topic_type_hash))
 
 
 def _discard(entities: list[Any], entity: Any) -> None:
