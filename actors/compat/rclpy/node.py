@@ -16,6 +16,7 @@ runtime's state while it runs.
 
 from __future__ import annotations
 
+import copy
 import functools
 import weakref
 from collections.abc import Callable, Sequence
@@ -34,6 +35,7 @@ from actors.compat.rclpy.exceptions import NotInitializedException
 from actors.compat.rclpy.guard_condition import GuardCondition
 from actors.compat.rclpy.logging import RcutilsLogger
 from actors.compat.rclpy.publisher import Publisher
+from actors.compat.rclpy.qos_overriding_options import QoSOverridingOptions, _declare_qos_parameters
 from actors.compat.rclpy.service import Service
 from actors.compat.rclpy.subscription import Subscription
 from actors.compat.rclpy.time_source import TimeSource
@@ -46,6 +48,7 @@ from actors.ros.log import NodeLogger
 from actors.ros.names import expand
 from actors.ros.node import Node as NativeNode
 from actors.ros.node import SpawnRequest, spawning
+from actors.ros.qos import QoSProfile
 from actors.system.supervisor import RestartType
 
 if TYPE_CHECKING:
@@ -344,9 +347,16 @@ class Node(NativeNode):
         qos_profile: Any,
         *,
         callback_group: CallbackGroup | None = None,
+        qos_overriding_options: QoSOverridingOptions | None = None,
         **options: Any,
     ) -> Publisher:
-        """A publisher of ``msg_type`` on ``topic`` (a QoSProfile or a depth)."""
+        """A publisher of ``msg_type`` on ``topic`` (a QoSProfile or a depth).
+
+        With ``qos_overriding_options`` its QoS policies may be set by parameters
+        (:mod:`~actors.compat.rclpy.qos_overriding_options`).
+        """
+        if qos_overriding_options is not None:
+            qos_profile = self._overridden(Publisher, topic, qos_profile, qos_overriding_options)
         native = self._rclpy.session.call(NativeNode.create_publisher, self, msg_type, topic, qos_profile, **options)
         publisher = Publisher(self, native)
         self._rclpy.publishers.append(publisher)
@@ -361,12 +371,16 @@ class Node(NativeNode):
         *,
         callback_group: CallbackGroup | None = None,
         raw: bool = False,
+        qos_overriding_options: QoSOverridingOptions | None = None,
         **options: Any,
     ) -> Subscription:
         """Call ``callback(msg)`` (or ``callback(msg, info)``) for each message, while spun.
 
-        With ``raw=True`` the callback gets the message's CDR bytes, as ROS serializes it.
+        With ``raw=True`` the callback gets the message's CDR bytes, as ROS serializes it;
+        ``qos_overriding_options`` as for :meth:`create_publisher`.
         """
+        if qos_overriding_options is not None:
+            qos_profile = self._overridden(Subscription, topic, qos_profile, qos_overriding_options)
         subscription = Subscription(self, msg_type, callback, None, raw)
         subscription.callback_group = self._group(callback_group, subscription)
         self._create(
@@ -375,6 +389,12 @@ class Node(NativeNode):
         self._rclpy.subscriptions.append(subscription)
         self._wake_executor()
         return subscription
+
+    def _overridden(self, entity_type: type, topic: str, qos: Any, options: QoSOverridingOptions) -> QoSProfile:
+        # The endpoint's profile after its override parameters (declared here) are applied.
+        profile = QoSProfile(depth=qos) if isinstance(qos, int) else copy.copy(qos)
+        _declare_qos_parameters(entity_type, self, self.resolve_topic_name(topic), profile, options)
+        return profile
 
     def create_timer(  # type: ignore[override]  # rclpy's signature and entity
         self,
