@@ -125,7 +125,7 @@ async def test_2_more_connections_than_the_limit_are_refused_and_the_command_lin
             for _ in range(200):  # more than the limit, all open at once
                 sock = socket.socket(socket.AF_UNIX)
                 sock.connect(str(path))  # blocking: waits while the listen backlog is full
-                sock.settimeout(5)
+                sock.settimeout(30)  # a bound for a loaded machine, not a wait: replies come at once
                 held.append(sock)
             replies = []
             for sock in held:
@@ -147,7 +147,7 @@ async def test_2_more_connections_than_the_limit_are_refused_and_the_command_lin
         refused = [r for r in replies if r != "answered"]
         assert set(refused) == {"the graph is busy: 64 connections are open; try again"}
         assert 0 < len(refused) < 200 and all(lookups)
-        with anyio.fail_after(5):
+        with anyio.fail_after(30):
             while endpoint.server.pool.connections:  # the server notices each hang-up
                 await anyio.sleep(0.01)
         assert open_fds() == baseline
