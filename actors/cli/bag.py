@@ -99,6 +99,7 @@ def format_info(bag: Any) -> str:
         t for t in topics if t.name.endswith("/_service_event") and "/srv/" in t.type and t.type.endswith("_Event")
     ]
     plain = [t for t in topics if t not in services]
+    dropped = sum(t.dropped for t in topics)
     names = [str(f.relative_to(bag.path)) if bag.path.is_dir() else str(bag.path) for f in bag.files]
     distros = {s.ros_distro for s in bag.summaries if s.ros_distro}
     lines = [
@@ -111,9 +112,12 @@ def format_info(bag: Any) -> str:
         f"Start:             {_stamp(bag.start)}",
         f"End:               {_stamp(bag.end)}",
         f"Messages:          {bag.message_count - sum(t.count for t in services)}",
+        *([f"Dropped:           {dropped} (recorded lossy: the disk fell behind)"] if dropped else []),
         "Topic information: "
         + f"\n{pad}".join(
-            f"Topic: {t.name} | Type: {t.type} | Count: {t.count} | Serialization Format: {t.serialization_format}"
+            f"Topic: {t.name} | Type: {t.type} | Count: {t.count}"
+            + (f" | Dropped: {t.dropped}" if t.dropped else "")
+            + f" | Serialization Format: {t.serialization_format}"
             for t in plain
         ),
         f"Service:           {len(services)}",

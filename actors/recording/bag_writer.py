@@ -9,7 +9,7 @@ end rosbag2's ``rosbag2`` metadata record and, for a bag directory,
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -87,8 +87,11 @@ class BagWriter:
         """Bytes in the file so far."""
         return self.mcap.size
 
-    def close(self) -> None:
+    def close(self, *, dropped: Mapping[str, int] | None = None) -> None:
         """Write the last chunk, rosbag2's metadata, the summary; then ``metadata.yaml``.
+
+        ``dropped`` counts, by topic, the messages a lossy recorder left out:
+        kept in the metadata's ``custom_data`` (``bag info`` shows them).
 
         Raises OSError when ``metadata.yaml`` cannot be written (the MCAP file
         is complete by then).
@@ -100,7 +103,12 @@ class BagWriter:
             record.message_count = counts.get(channel, 0)
         start, end = mcap.time_range
         metadata = metadata_dict(
-            list(self._topics.values()), start=start, end=end, count=mcap.message_count, files=[self.path.name]
+            list(self._topics.values()),
+            start=start,
+            end=end,
+            count=mcap.message_count,
+            files=[self.path.name],
+            dropped=dropped,
         )
         mcap.add_metadata("rosbag2", {"serialized_metadata": metadata_yaml(metadata, top_level=False)})
         mcap.close()

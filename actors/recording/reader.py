@@ -12,6 +12,7 @@ in :attr:`Bag.problems` instead.
 from __future__ import annotations
 
 import io
+import json
 import struct
 import zlib
 from collections.abc import Iterable, Iterator
@@ -23,7 +24,7 @@ import yaml
 
 from actors.errors import BagError
 from actors.recording.mcap_writer import MAGIC
-from actors.recording.rosbag import bag_files
+from actors.recording.rosbag import DROPPED_KEY, bag_files
 
 __all__ = ["Bag", "BagTopic", "BagMessage", "FileSummary"]
 
@@ -55,6 +56,7 @@ class BagTopic:
     offered_qos_profiles: str = ""
     type_hash: str = ""
     definition: str = ""
+    dropped: int = 0  # messages a lossy recorder left out (rosbag2 metadata's custom_data)
 
 
 @dataclass
@@ -277,7 +279,12 @@ class Bag:
         for channel in channels:
             summary.topics[channel.id] = _topic(channel, schemas.get(channel.schema_id), counts.get(channel.id, 0))
         if distro_at is not None:
-            summary.ros_distro = _distro(file, distro_at)
+            meta = _rosbag2_metadata(file, distro_at)
+            summary.ros_distro = str(meta.get("ros_distro") or "")
+            for topic, count in _dropped(meta).items():
+                found = next((t for t in summary.topics.values() if t.name == topic), None)
+                if found is not None:
+                    found.dropped = count
 
     def _scan_summary(self, file: _McapFile, summary: FileSummary) -> None:
         """Count what the data section holds (a file with no usable summary, when recovering)."""
@@ -327,6 +334,7 @@ class Bag:
                     merged[topic.name] = BagTopic(**vars(topic))
                 else:
                     seen.count += topic.count
+                    seen.dropped += topic.dropped
         return sorted(merged.values(), key=lambda t: t.name)
 
     @property
@@ -381,14 +389,26 @@ class Bag:
                         yield BagMessage(topic=topic, log_time=record.log_time, data=record.data)
 
 
-def _distro(file: _McapFile, offset: int) -> str:
-    """The ROS distro rosbag2's ``rosbag2`` metadata record names ("" when unreadable)."""
+def _rosbag2_metadata(file: _McapFile, offset: int) -> dict[str, Any]:
+    """rosbag2's ``rosbag2`` metadata record, as data ({} when unreadable)."""
     try:
         _, opcode, record = next(file.records_from(memoryview(file.data)[offset:], offset))
         meta = yaml.safe_load(record.metadata.get("serialized_metadata", "")) or {}
-        return str(meta.get("ros_distro") or "") if opcode == _OP["metadata"] else ""
     except (StopIteration, _Damage, yaml.YAMLError, AttributeError):
-        return ""
+        return {}
+    return meta if opcode == _OP["metadata"] and isinstance(meta, dict) else {}
+
+
+def _dropped(meta: dict[str, Any]) -> dict[str, int]:
+    """Messages left out by topic, as our recorder notes them in ``custom_data`` ({} when absent or unreadable)."""
+    custom = meta.get("custom_data")
+    try:
+        counts = json.loads(custom[DROPPED_KEY]) if isinstance(custom, dict) and DROPPED_KEY in custom else {}
+    except (TypeError, ValueError):
+        return {}
+    if not isinstance(counts, dict):
+        return {}
+    return {str(k): v for k, v in counts.items() if type(v) is int and v > 0}
 
 
 def _topic(channel: Any, schema: Any, count: int) -> BagTopic:

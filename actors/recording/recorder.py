@@ -8,12 +8,15 @@ recorder's buffer.
 
 A writer task takes the buffer a batch at a time, encodes each message as CDR
 and writes it into the MCAP file (:mod:`actors.recording.mcap_writer`).  On the
-wall clock it works in a worker thread, so the disk never holds up the loop;
-when the buffer is full (the disk cannot keep up), the message is dropped and
-counted on its tap (``topic info -v``, ``doctor``), and the recorder logs a
-warning.  On virtual time it writes in the loop itself: virtual time does not
-wait for the disk, the recording is complete and the same graph gives the same
-file, byte for byte.
+wall clock it works in a worker thread, so the disk does not hold up the loop
+while the buffer has room.  When the buffer is full (the disk cannot keep up),
+the publisher waits: the message that finds it full writes the whole buffer
+itself, in the loop's thread, once the worker is done with its batch.  A bag
+is never missing a message its graph published.  Only a recorder made
+``lossy`` drops the message instead: counted on its tap (``topic info -v``,
+``doctor``), written into the bag (``bag info``) and logged.  On virtual time
+it writes in the loop itself: virtual time does not wait for the disk, the
+recording is complete and the same graph gives the same file, byte for byte.
 
 When a write fails (a full disk), the file is closed valid at its last whole
 chunk, the recorder leaves the graph, and the graph keeps running.
@@ -23,6 +26,8 @@ from __future__ import annotations
 
 import asyncio
 import re
+import threading
+from collections import deque
 from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -53,7 +58,9 @@ class Recorder:
     regular expression of topic names to leave out; hidden topics (a part
     starting with ``_``, e.g. an action's) only with ``include_hidden``.
     ``compression`` is ``zstd``, ``lz4`` or ``""``; ``max_pending`` bounds the
-    messages waiting for the disk (more are dropped and counted).
+    messages waiting for the disk: when it is reached the publisher waits
+    until they are written, or with ``lossy`` the message is dropped (counted
+    on its topic, in the bag's metadata and by doctor).
 
     :meth:`open` creates the file (the runtime calls it when it starts, if no
     one did before), raising FileExistsError, FileNotFoundError or OSError.
@@ -69,6 +76,7 @@ class Recorder:
         compression: str = "zstd",
         chunk_size: int = 1 << 20,
         max_pending: int = 100_000,
+        lossy: bool = False,
     ) -> None:
         self.output = Path(output)
         self.topics = frozenset(expand(t, "/", "_") for t in topics)
@@ -77,10 +85,15 @@ class Recorder:
         self.compression = compression
         self.chunk_size = chunk_size
         self.max_pending = max_pending
+        self.lossy = lossy
         self.path: Path | None = None  # the MCAP file, once open
         self._writer: BagWriter | None = None
         self._taps = TapSet(RECORDER_NODE, self._takes, self._take, depth=max_pending, label="recorder")
         self._items: list[tuple[Tap, int, Any]] = []
+        # Batches taken from the buffer, written in order by whichever thread holds the lock.
+        self._batches: deque[list[tuple[Tap, int, Any]]] = deque()
+        self._lock = threading.Lock()
+        self._runtime: Runtime | None = None
         self._waiter: asyncio.Future[None] | None = None
         self._now_ns: Any = None  # the runtime clock, once running
         self.dropped = 0
@@ -121,6 +134,7 @@ class Recorder:
     ) -> None:
         self.open()
         self._now_ns = runtime.clock.now_ns
+        self._runtime = runtime
         try:
             self._taps.start(runtime)
             task_status.started()
@@ -137,11 +151,12 @@ class Recorder:
             if not self._items:
                 self._waiter = loop.create_future()
                 await self._waiter
-            batch, self._items = self._items, []
+            self._batches.append(self._items)
+            self._items = []
             if inline:
-                failures = self._write(batch)
+                failures = self._write_batches()
             else:
-                failures = await anyio.to_thread.run_sync(self._write, batch)
+                failures = await anyio.to_thread.run_sync(self._write_batches)
             self._after_batch(runtime, failures)
         self._stopped(runtime)
         self._taps.stop()
@@ -167,13 +182,15 @@ class Recorder:
         writer = self._writer
         if writer is None:
             return
-        batch, self._items = self._items, []
-        self._write(batch)
+        self._batches.append(self._items)
+        self._items = []
+        self._write_batches()  # with a batch the cancelled writer task had taken but not written
         for tap in self._taps.all():
             if tap.channel is None and writer.error is None:
                 self._register(tap)  # listed with no messages, as rosbag2 lists a quiet topic
+        dropped = {tap.topic_name: tap.dropped for tap in self._taps.all() if tap.dropped}
         try:
-            writer.close()
+            writer.close(dropped=dropped)
         except OSError as exc:
             runtime.logger.error(f"recorder: cannot write the bag's metadata.yaml: {exc}")
         if writer.error is not None and not self._failed:
@@ -195,12 +212,16 @@ class Recorder:
         return self.wants(topic) and self._writer is not None and self._writer.error is None
 
     def _take(self, tap: Tap, msg: Any) -> None:
-        """Stamp a tapped message and buffer it for the writer, or drop it when the buffer is full."""
+        """Stamp a tapped message and buffer it for the writer; when the buffer is full,
+        write it now (the publisher waits for the disk), or drop the message if lossy."""
         items = self._items
         if len(items) >= self.max_pending:
-            tap.dropped += 1
-            self.dropped += 1
-            return
+            if self.lossy:
+                tap.dropped += 1
+                self.dropped += 1
+                return
+            self._write_now()
+            items = self._items
         if not items:
             self._wake()
         items.append((tap, self._now_ns(), msg))
@@ -214,8 +235,25 @@ class Recorder:
             if not waiter.done():
                 waiter.set_result(None)
 
+    def _write_now(self) -> None:
+        """Write the full buffer in the loop's thread (after the worker's batch in progress)."""
+        self._batches.append(self._items)
+        self._items = []
+        failures = self._write_batches()
+        if self._runtime is not None:
+            self._after_batch(self._runtime, failures)
+
+    def _write_batches(self) -> list[tuple[Tap, Exception]]:
+        """Write the batches taken so far, oldest first (in a worker thread on the wall clock); returns the failures."""
+        failures = []
+        with self._lock:
+            batches = self._batches
+            while batches:
+                failures += self._write(batches.popleft())
+        return failures
+
     def _write(self, batch: list[tuple[Tap, int, Any]]) -> list[tuple[Tap, Exception]]:
-        """Encode and write one batch (in a worker thread on the wall clock); returns the failures."""
+        """Encode and write one batch; returns the failures."""
         writer = self._writer
         assert writer is not None
         encode = codec.encode_cdr

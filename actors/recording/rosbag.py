@@ -10,7 +10,8 @@ durations as ``sec``/``nsec``, infinite as rmw's 9223372036 s 854775807 ns).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+import json
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -19,6 +20,7 @@ import yaml
 
 __all__ = [
     "METADATA_VERSION",
+    "DROPPED_KEY",
     "TopicRecord",
     "qos_profiles_yaml",
     "metadata_dict",
@@ -29,6 +31,9 @@ __all__ = [
 
 METADATA_VERSION = 9
 """The rosbag2 metadata version written (ROS 2 Jazzy and Kilted write 9)."""
+
+DROPPED_KEY = "actors.dropped_messages"
+"""The ``custom_data`` key of the messages a lossy recorder left out: JSON, counts by topic name."""
 
 _INFINITE = {"sec": 9223372036, "nsec": 854775807}  # RMW_DURATION_INFINITE
 _HISTORY = {1: "keep_last", 2: "keep_all"}
@@ -91,8 +96,13 @@ def metadata_dict(
     count: int,
     files: Sequence[str],
     ros_distro: str = "",
+    dropped: Mapping[str, int] | None = None,
 ) -> dict[str, Any]:
-    """rosbag2's BagMetadata (version 9) as plain data: what ``metadata.yaml`` holds."""
+    """rosbag2's BagMetadata (version 9) as plain data: what ``metadata.yaml`` holds.
+
+    ``dropped`` (messages left out, by topic) goes into ``custom_data``, the
+    string map rosbag2 keeps for its users, under :data:`DROPPED_KEY`.
+    """
     duration = max(0, end - start)
     return {
         "version": METADATA_VERSION,
@@ -125,7 +135,7 @@ def metadata_dict(
             }
             for name in files
         ],
-        "custom_data": None,
+        "custom_data": {DROPPED_KEY: json.dumps(dict(dropped), sort_keys=True)} if dropped else None,
         "ros_distro": ros_distro,
     }
 
