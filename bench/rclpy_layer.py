@@ -171,10 +171,13 @@ use = "nodes.constant_control:ConstantControl"
 params = { v = 0.2, omega = 0.2 }
 """
 CONTROLLER = """\
+import sys
+
 import rclpy
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from rclpy.node import Node
+from sensor_msgs.msg import LaserScan
 
 
 class Controller(Node):
@@ -184,9 +187,15 @@ class Controller(Node):
         self.cmd_vel = self.create_publisher(Twist, "/cmd_vel", 10)
         self.create_subscription(Odometry, "/odom", self.on_odom, 10)
         self.create_timer(0.1, self.tick)
+        self.nearest = float("inf")
+        if "--scan" in sys.argv:  # the scan too (10 Hz): the world casts the lidar only for a reader
+            self.create_subscription(LaserScan, "/scan", self.on_scan, 10)
 
     def on_odom(self, msg):
         self.x = msg.pose.pose.position.x
+
+    def on_scan(self, msg):
+        self.nearest = min(msg.ranges)
 
     def tick(self):
         cmd = Twist()
@@ -204,7 +213,7 @@ except KeyboardInterrupt:
 
 
 def turtlebot_rows(folder: Path, rounds: int) -> list[str]:
-    """Wall seconds per simulated hour, native controller and rclpy controller, rounds interleaved."""
+    """Wall seconds per simulated hour, native controller and rclpy controllers, rounds interleaved."""
     (folder / "native.toml").write_text(WORLD + NATIVE_CONTROL)
     (folder / "world.toml").write_text(WORLD)
     (folder / "controller.py").write_text(CONTROLLER)
@@ -213,9 +222,13 @@ def turtlebot_rows(folder: Path, rounds: int) -> list[str]:
         "native ConstantControl node (python -m actors.run)": [
             sys.executable, "-m", "actors.run", str(folder / "native.toml"), *virtual
         ],
-        "rclpy controller (actors run --graph)": [
+        "rclpy controller reading /odom (actors run --graph)": [
             sys.executable, "-m", "actors", "run", *virtual, "--graph", str(folder / "world.toml"),
             str(folder / "controller.py"),
+        ],
+        "rclpy controller reading /odom and /scan": [
+            sys.executable, "-m", "actors", "run", *virtual, "--graph", str(folder / "world.toml"),
+            str(folder / "controller.py"), "--scan",
         ],
     }  # fmt: skip
     walls: dict[str, list[float]] = {name: [] for name in commands}
