@@ -18,6 +18,13 @@ the result as JSON.  ``python -m bench.transport ROLE JSON_ARGS`` is a child.
 rclpy's sink, server and echo spin an EventsExecutor (the faster of rclpy's
 two here); its source and client spin one too.  The actors children run the
 Zenoh transport on the default wall-clock loop, meeting on a private port.
+
+The floor: a bare eclipse-zenoh pair of Python processes doing the same on
+the same port, with no graph around it: a subscriber callback (zenoh's own
+thread per callback, its default) counting the String's CDR bytes that a
+publisher puts; a queryable answering ``get`` calls one after another; a
+callback echoing the Int64's bytes back.  What actors adds is its own work
+above that (keys, attachments, CDR, the hand-off into the loop).
 """
 
 from __future__ import annotations
@@ -100,8 +107,13 @@ def run(quick: bool = False) -> list[Result]:
         if zenoh_missing:
             results.append(Result(SCENARIO, actors_case, unit, [], higher, note=ZENOH_HINT))
         else:
+            floor = f"{measure}: bare zenoh (floor)"
             runs = repeat(lambda: _pair(f"actors_{sink}", f"actors_{source}", args, child_env(), result_from), reps)
-            results.append(_result(actors_case, unit, runs, higher, args["n"], baselines={"rclpy": ros_case}))
+            results.append(
+                _result(actors_case, unit, runs, higher, args["n"], baselines={"rclpy": ros_case, "floor": floor})
+            )
+            runs = repeat(lambda: _pair(f"zenoh_{sink}", f"zenoh_{source}", args, child_env(), result_from), reps)
+            results.append(_result(floor, unit, runs, higher, args["n"]))
         why = ros.unavailable()
         if why is not None:
             results.append(Result(SCENARIO, ros_case, unit, [], higher, note=why))
@@ -305,11 +317,91 @@ def _rclpy(role: str, args: dict[str, Any]) -> Any:
     return statistics.median(trips)
 
 
+# -- the bare zenoh children ---------------------------------------------------------------
+
+
+def _zenoh(role: str, args: dict[str, Any]) -> Any:
+    import threading
+
+    import zenoh
+
+    from actors import codec
+    from interfaces.std_msgs.msg import Int64, String
+
+    endpoint = f"tcp/127.0.0.1:{args['port']}"
+    config = zenoh.Config()
+    config.insert_json5("mode", '"peer"')
+    config.insert_json5("scouting/multicast/enabled", "false")
+    config.insert_json5("scouting/delay", "0")
+    config.insert_json5("connect/endpoints", json.dumps([endpoint]))
+    config.insert_json5("connect/timeout_ms", "0")
+    config.insert_json5("connect/exit_on_failure", "false")
+    # The first of the two binds the port; the other connects to it (as the actors children).
+    config.insert_json5("listen/endpoints", json.dumps([endpoint, "tcp/127.0.0.1:0"]))
+    config.insert_json5("listen/exit_on_failure", "false")
+    session = zenoh.open(config)
+    n = args["n"]
+    if role == "sink":
+        stamps: list[float] = []
+        sub = session.declare_subscriber("chatter", lambda sample: stamps.append(time.perf_counter()))
+        _ready()
+        while _waiting(stamps, n):
+            time.sleep(0.05)
+        del sub
+        return [_rate(stamps), len(stamps)]
+    if role == "source":
+        pub = session.declare_publisher("chatter", congestion_control=zenoh.CongestionControl.BLOCK)
+        while not pub.matching_status.matching:
+            time.sleep(0.01)
+        payload = codec.encode_cdr(String(data="Hello World"))
+        for _ in range(n):
+            pub.put(payload)
+        threading.Event().wait()  # the sink reports; the parent ends this process
+    if role == "server":
+        reply = codec.encode_cdr(String(data="done"))
+        queryable = session.declare_queryable("set_bool", lambda query: query.reply(query.key_expr, reply))
+        _ready()
+        threading.Event().wait()
+        del queryable
+    if role == "client":
+        request = codec.encode_cdr(Int64(data=1))
+        while not list(session.get("set_bool", payload=request)):
+            time.sleep(0.01)  # discovery, across processes
+        start = time.perf_counter()
+        for _ in range(n):
+            replies = list(session.get("set_bool", payload=request))
+            assert replies, "the queryable did not answer"
+        return (time.perf_counter() - start) / n * 1e6
+    if role == "echo":
+        back = session.declare_publisher("pong")
+        sub = session.declare_subscriber("ping", lambda sample: back.put(sample.payload))
+        _ready()
+        threading.Event().wait()
+        del sub
+    assert role == "ping"
+    answered = threading.Event()
+    pongs = session.declare_subscriber("pong", lambda sample: answered.set())
+    pings = session.declare_publisher("ping")
+    while not answered.is_set():  # the echo's way back is discovered too
+        pings.put(codec.encode_cdr(Int64(data=-1)))
+        answered.wait(0.1)
+    trips = []
+    for i in range(n):
+        answered.clear()
+        start = time.perf_counter()
+        pings.put(codec.encode_cdr(Int64(data=i)))
+        answered.wait()
+        trips.append((time.perf_counter() - start) * 1e6)
+    del pongs
+    return statistics.median(trips)
+
+
 def main(argv: Sequence[str]) -> None:
     """``python -m bench.transport ROLE JSON_ARGS``: one child; prints ``ready`` and/or its result."""
     role, args = argv[0], json.loads(argv[1])
     family, _, part = role.partition("_")
-    result = _actors(part, args) if family == "actors" else _rclpy(part, args)
+    children = {"actors": _actors, "zenoh": _zenoh, "ros": _rclpy}
+    result = children[family](part, args)
     print(json.dumps(result), flush=True)
 
 
