@@ -24,14 +24,18 @@ from actors.cli import main
 
 
 class GraphProcess:
-    """``python -m actors.run FILE`` in the background, its output collected line by line."""
+    """``python -m actors.run FILE`` in the background, its output collected line by line.
 
-    def __init__(self, path: Path) -> None:
+    ``runner``: the command before FILE (an rclpy script's ``actors run``); the
+    graph is named after FILE's stem either way.
+    """
+
+    def __init__(self, path: Path, runner: tuple[str, ...] = ("-m", "actors.run")) -> None:
         self.name = path.stem
         self.lines: list[str] = []
         self._changed = threading.Condition()
         self.proc = subprocess.Popen(
-            [sys.executable, "-m", "actors.run", str(path)],
+            [sys.executable, *runner, str(path)],
             cwd=ROOT,
             env=python_env(),
             stdout=subprocess.PIPE,

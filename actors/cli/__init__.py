@@ -22,6 +22,7 @@ GROUPS = (
     "service",
     "action",
     "param",
+    "lifecycle",
     "interface",
     "doctor",
     "graph",

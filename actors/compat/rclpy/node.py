@@ -348,17 +348,19 @@ class Node(NativeNode):
         *,
         callback_group: CallbackGroup | None = None,
         qos_overriding_options: QoSOverridingOptions | None = None,
+        publisher_class: type[Publisher] = Publisher,
         **options: Any,
     ) -> Publisher:
         """A publisher of ``msg_type`` on ``topic`` (a QoSProfile or a depth).
 
         With ``qos_overriding_options`` its QoS policies may be set by parameters
-        (:mod:`~actors.compat.rclpy.qos_overriding_options`).
+        (:mod:`~actors.compat.rclpy.qos_overriding_options`); ``publisher_class``
+        is what to make (a LifecyclePublisher for ``create_lifecycle_publisher``).
         """
         if qos_overriding_options is not None:
             qos_profile = self._overridden(Publisher, topic, qos_profile, qos_overriding_options)
         native = self._rclpy.session.call(NativeNode.create_publisher, self, msg_type, topic, qos_profile, **options)
-        publisher = Publisher(self, native)
+        publisher = publisher_class(self, native)
         self._rclpy.publishers.append(publisher)
         return publisher
 
