@@ -145,3 +145,41 @@ def test_wait_for_services_times_out_in_virtual_seconds(session):
     start = session.loop.time()
     assert client.wait_for_services(2.0) is False
     assert session.loop.time() - start == pytest.approx(2.0)
+
+
+def test_declaring_a_name_alone_warns_as_rclpy_does(session):
+    node = rclpy.create_node("terse")
+    with pytest.warns(UserWarning, match="'bare', declaring a parameter only providing its name is deprecated"):
+        node.declare_parameter("bare")
+    with pytest.warns(UserWarning, match="'group.lone'"):
+        node.declare_parameters("group", [("lone",), ("given", 3)])
+    assert node.get_parameter("group.given").value == 3
+
+
+def test_the_callback_lists_hold_the_newest_first(session):
+    node = rclpy.create_node("listed")
+
+    def first(params):
+        return params
+
+    def second(params):
+        return params
+
+    node.add_pre_set_parameters_callback(first)
+    node.add_pre_set_parameters_callback(second)
+    assert node._pre_set_parameters_callbacks == [second, first]
+    node.remove_pre_set_parameters_callback(second)
+    assert node._pre_set_parameters_callbacks == [first]
+    assert first not in node._on_set_parameters_callbacks + node._post_set_parameters_callbacks
+    # A pre-set callback that leaves nothing to set fails the set, in rclpy's words.
+    node.remove_pre_set_parameters_callback(first)
+    node.add_pre_set_parameters_callback(lambda params: [])
+    node.declare_parameter("speed", 1)
+    (result,) = node.set_parameters([Parameter("speed", value=2)])
+    assert not result.successful and result.reason.startswith("parameter list cannot be empty")
+
+
+def test_graph_queries_rclpy_adds(session):
+    node = rclpy.create_node("asker", namespace="/deep")
+    assert ("asker", "/deep", "/") in node.get_node_names_and_namespaces_with_enclaves()
+    assert node.get_topic_names_and_types(no_demangle=True) == node.get_topic_names_and_types()

@@ -23,8 +23,20 @@ def test_expand(name, namespace, expected):
 
 @pytest.mark.parametrize("bad", ["", "1topic", "a//b", "topic/", "with space", "a-b"])
 def test_invalid_topic_names_are_refused(bad):
-    with pytest.raises(InvalidNameError, match="invalid topic name"):
+    with pytest.raises(InvalidNameError, match=r"topic name .* is invalid"):
         expand(bad, "/", "node")
+
+
+def test_substitutions_name_the_node_and_its_namespace():
+    assert expand("{node}/status", "/robot1", "talker") == "/robot1/talker/status"
+    assert expand("/{ns}/{namespace}/x", "/robot1", "talker") == "/robot1/robot1/x"
+    with pytest.raises(InvalidNameError, match=r"'/a/\{colour\}' is invalid: unknown substitution: \{colour\}"):
+        expand("/a/{colour}", "/", "talker")
+
+
+def test_a_name_that_is_no_string_is_a_type_error():
+    with pytest.raises(TypeError, match="must be a str, got 42"):
+        expand(42, "/", "talker")  # type: ignore[arg-type]
 
 
 def test_namespaces_are_normalized():

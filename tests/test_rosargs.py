@@ -141,7 +141,7 @@ def test_accepted_flags_that_change_nothing_here():
         (["--ros-args", "-p"], "-p needs a value"),
         (["--ros-args", "-p", "novalue"], "expected [node:]name:=value"),
         (["--ros-args", "-r", "foo"], "expected [node:]name:=value"),
-        (["--ros-args", "-r", "a b:=c"], "invalid remap source"),
+        (["--ros-args", "-r", "a b:=c"], "remap source '/a b' is invalid"),
         (["--ros-args", "-r", "__node:=1bad"], "invalid node name"),
         (["--ros-args", "-p", "x:=[1, a]"], "one type"),
         (["--ros-args", "-p", "x:=[]"], "empty list"),

@@ -39,6 +39,10 @@ class GraphQueries:
         """``(name, namespace)`` of every node in the graph, this one included."""
         return [(core.name, core.namespace) for core in self._core.runtime.nodes.values()]
 
+    def get_node_names_and_namespaces_with_enclaves(self) -> list[tuple[str, str, str]]:
+        """``(name, namespace, enclave)`` of every node; the enclave is always ``/`` (no security enclaves here)."""
+        return [(name, namespace, "/") for name, namespace in self.get_node_names_and_namespaces()]
+
     def get_node_names(self) -> list[str]:
         """The names of every node in the graph (without namespace)."""
         return [name for name, _ in self.get_node_names_and_namespaces()]
@@ -49,8 +53,11 @@ class GraphQueries:
 
     # -- topics -----------------------------------------------------------------
 
-    def get_topic_names_and_types(self) -> list[tuple[str, list[str]]]:
-        """Every topic of the graph with its type, sorted by name."""
+    def get_topic_names_and_types(self, no_demangle: bool = False) -> list[tuple[str, list[str]]]:
+        """Every topic of the graph with its type, sorted by name.
+
+        ``no_demangle`` asks rclpy for middleware names; a topic's name here is its ROS name either way.
+        """
         topics = self._core.runtime.topics.topics
         return [(name, [type_name(topics[name].msg_type)]) for name in sorted(topics)]
 

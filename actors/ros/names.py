@@ -72,7 +72,7 @@ def _check_absolute(name: str, what: str) -> str:
     if name == "/" or _ABSOLUTE.match(name):
         return name  # one regex for the usual case; the loop below finds the culprit
     if not name.startswith("/"):
-        raise _invalid(what, f"invalid {what} {name!r}: it must be absolute (start with '/')")
+        raise _invalid(what, f"{what} {name!r} is invalid: it must be absolute (start with '/')")
     for token in name[1:].split("/"):
         if not _TOKEN.match(token):
             # rcl's words for each rule, which rclpy's users (and tests) match on
@@ -82,7 +82,7 @@ def _check_absolute(name: str, what: str) -> str:
                 rule = "must not start with a number in any part"
             else:
                 rule = "must not contain characters other than alphanumerics, '_' or '/'"
-            raise _invalid(what, f"invalid {what} {name!r}: a {what} {rule}")
+            raise _invalid(what, f"{what} {name!r} is invalid: a {what} {rule}")
     return name
 
 
@@ -109,15 +109,31 @@ def expand(name: str, namespace: str, node_name: str, *, what: str = "topic name
     """
     if name in _VALID_NAMES:
         return _joined(name, namespace, node_name)
-    if not isinstance(name, str) or not name:
-        raise _invalid(what, f"invalid {what} {name!r}: it must not be empty")
+    if not isinstance(name, str):
+        raise TypeError(f"a {what} must be a str, got {name!r}")
+    if not name:
+        raise _invalid(what, f"{what} {name!r} is invalid: it must not be empty")
+    if "{" in name:
+        name = _substituted(name, namespace, node_name, what)
     full = _joined(name, namespace, node_name)
     if full != "/" and full.endswith("/"):
-        raise _invalid(what, f"invalid {what} {name!r}: it must not end with '/'")
+        raise _invalid(what, f"{what} {name!r} is invalid: it must not end with '/'")
     _check_absolute(full, what)
     if len(_VALID_NAMES) < 10_000:
         _VALID_NAMES.add(name)
     return full
+
+
+def _substituted(name: str, namespace: str, node_name: str, what: str) -> str:
+    # rcl's substitutions: {node} is the node's name, {ns} and {namespace} its namespace.
+    values = {"node": node_name, "ns": namespace, "namespace": namespace}
+
+    def value(match: re.Match[str]) -> str:
+        if match.group(1) not in values:
+            raise _invalid(what, f"{what} {name!r} is invalid: unknown substitution: {match.group(0)}")
+        return values[match.group(1)]
+
+    return re.sub(r"\{([^{}]*)\}", value, name).replace("//", "/")
 
 
 def _joined(name: str, namespace: str, node_name: str) -> str:

@@ -336,6 +336,11 @@ class ParameterStore:
 
     # -- callbacks --------------------------------------------------------------
 
+    @property
+    def callbacks(self) -> tuple[tuple[PreSet, ...], tuple[OnSet, ...], tuple[PostSet, ...]]:
+        """The pre-set, on-set and post-set callbacks, each newest first (the order they run in)."""
+        return self._pre, self._on_set, self._post
+
     def add_pre_set_callback(self, callback: PreSet) -> None:
         """Call ``callback(parameters)`` first on each set; it returns the list to set instead."""
         self._pre = (_callable(callback), *self._pre)
@@ -381,7 +386,12 @@ class ParameterStore:
         if self._pre:
             params = [p for callback in self._pre for p in callback(params)]
             if not params:
-                return SetParametersResult(successful=False, reason="a pre-set parameters callback left nothing to set")
+                # rclpy's words: console output reads the same
+                reason = (
+                    "parameter list cannot be empty, this might be due to pre_set_parameters_callback "
+                    "modifying the original parameters list."
+                )
+                return SetParametersResult(successful=False, reason=reason)
         for param in params:
             if not isinstance(param, Parameter):
                 raise TypeError(f"set_parameters takes Parameters, got {param!r}")

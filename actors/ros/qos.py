@@ -226,7 +226,7 @@ class QoSProfile:
         if isinstance(value, bool) or not isinstance(value, int):
             raise TypeError(f"QoS depth must be an int, got {value!r}")
         if value < 0:
-            raise ValueError(f"QoS depth must be >= 0, got {value}")
+            raise ValueError(f"QoS depth must be greater than or equal to zero, got {value}")
         if value == 0 and self._history is HistoryPolicy.KEEP_LAST:
             warnings.warn(
                 "A zero depth with KEEP_LAST doesn't make sense; no data could be stored: "
@@ -407,7 +407,7 @@ def as_qos(qos: QoSProfile | QoSSnapshot | int) -> QoSSnapshot:
         raise TypeError(f"qos must be a QoSProfile or an int depth, got {qos!r}")
     if isinstance(qos, int):
         if qos < 0:
-            raise ValueError(f"QoS depth must be >= 0, got {qos}")
+            raise ValueError(f"QoS depth must be greater than or equal to zero, got {qos}")
         key: tuple[Any, ...] = (HistoryPolicy.KEEP_LAST, qos or 10, *_DEPTH_ONLY)
     else:
         history = HistoryPolicy.KEEP_LAST if qos.history.name in _VAGUE else qos.history

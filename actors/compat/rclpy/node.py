@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import copy
 import functools
+import warnings
 import weakref
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
@@ -318,6 +319,38 @@ class Node(NativeNode):
         found = self._rclpy.session.call(NativeNode.get_subscriptions_info_by_topic, self, topic_name, no_mangle)
         return [_rclpy_info(info) for info in found]
 
+    def declare_parameter(
+        self, name: str, value: Any = None, descriptor: Any = None, ignore_override: bool = False
+    ) -> Any:
+        """See the native :meth:`~actors.ros.node.Node.declare_parameter`; a name alone warns, as in rclpy."""
+        if value is None and descriptor is None:
+            _warn_name_only(name)
+        return self._rclpy.session.call(NativeNode.declare_parameter, self, name, value, descriptor, ignore_override)
+
+    def declare_parameters(
+        self, namespace: str, parameters: Sequence[tuple[Any, ...]], ignore_override: bool = False
+    ) -> list[Any]:
+        """See the native :meth:`~actors.ros.node.Node.declare_parameters`; a name alone warns, as in rclpy."""
+        for entry in parameters:
+            if len(entry) == 1:
+                _warn_name_only(f"{namespace}.{entry[0]}" if namespace else entry[0])
+        return list(
+            self._rclpy.session.call(NativeNode.declare_parameters, self, namespace, parameters, ignore_override)
+        )
+
+    # rclpy keeps its parameter callbacks in these lists (newest first), which its tests read.
+    @property
+    def _pre_set_parameters_callbacks(self) -> list[Any]:
+        return list(self._core.params.callbacks[0])
+
+    @property
+    def _on_set_parameters_callbacks(self) -> list[Any]:
+        return list(self._core.params.callbacks[1])
+
+    @property
+    def _post_set_parameters_callbacks(self) -> list[Any]:
+        return list(self._core.params.callbacks[2])
+
     def get_clock(self) -> ROSClock:
         """The node's ROS clock: the runtime's time, or ``/clock``'s while ``use_sim_time`` is true."""
         return self._rclpy.clock
@@ -566,6 +599,18 @@ class Node(NativeNode):
                 kind.clear()
             state.native_work.clear()
         state.context.untrack_node(self)
+
+
+def _warn_name_only(name: str) -> None:
+    warnings.warn(
+        f"when declaring parameter named '{name}', declaring a parameter only providing its name is deprecated. "
+        "You have to either:\n"
+        '\t- Pass a name and a default value different to "PARAMETER NOT SET" (and optionally a descriptor).\n'
+        "\t- Pass a name and a parameter type.\n"
+        "\t- Pass a name and a descriptor with `dynamic_typing=True",
+        UserWarning,
+        stacklevel=3,
+    )
 
 
 def _rclpy_info(info: TopicEndpointInfo) -> TopicEndpointInfo:
