@@ -375,3 +375,16 @@ def test_generate_rejects_unusable_names(tmp_path, name, files, problem):
 def test_module_all_is_honest():
     for module in (idl, importlib.import_module("actors.messages.generate")):
         assert all(hasattr(module, name) for name in module.__all__)
+
+
+def test_a_service_event_names_its_own_request_and_response():
+    spec = idl.parse_service("int32 a\n---\nint32 b\n", pkg="demo", name="Ask")
+    event = spec.event
+    assert event.ros_type == "demo/srv/Ask_Event"
+    assert [(f.name, f.type.ros_type, f.type.array, f.type.size) for f in event.fields] == [
+        ("info", "service_msgs/msg/ServiceEventInfo", None, None),
+        ("request", "demo/srv/Ask_Request", "bounded", 1),
+        ("response", "demo/srv/Ask_Response", "bounded", 1),
+    ]
+    with pytest.raises(IdlError, match="unknown type 'demo/srv/Ask'"):
+        idl.parse_message("demo/srv/Ask whole\n", pkg="demo", name="Holder")

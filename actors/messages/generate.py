@@ -90,7 +90,7 @@ def render_module(
         for spec in _dependencies_first(local):
             writer.struct(spec)
     elif _every(specs, ServiceSpec):
-        suffixes = ("", "_Request", "_Response")
+        suffixes = ("", "_Request", "_Response", "_Event")
         writer = _Writer(modules, {spec.name + suffix for spec in specs for suffix in suffixes})
         for service in specs:
             writer.service(service)
@@ -108,7 +108,7 @@ def _action_names(spec: Any) -> list[str]:
     return [
         spec.name,
         *(m.name for m in messages),
-        *(s.name + x for s in services for x in ("", "_Request", "_Response")),
+        *(s.name + x for s in services for x in ("", "_Request", "_Response", "_Event")),
     ]
 
 
@@ -166,17 +166,20 @@ class _Writer:
     def service(self, spec: ServiceSpec) -> None:
         self.struct(spec.request)
         self.struct(spec.response)
+        event = spec.event
+        self.struct(event)
         name = self._declare(spec.ros_type, spec.name)
         self.classes.append(
             "\n".join(
                 [
                     f"class {name}:",
-                    f'    """``{spec.ros_type}``: its ``Request`` and ``Response`` messages."""',
+                    f'    """``{spec.ros_type}``: its ``Request`` and ``Response`` messages, and ``Event``."""',
                     "",
                     f"    __ros_type__: ClassVar[str] = {_literal(spec.ros_type)}",
                     f"    __ros_definition__: ClassVar[str] = {_text_literal(spec.text)}",
                     f"    Request = {self.local_names[spec.request.ros_type]}",
                     f"    Response = {self.local_names[spec.response.ros_type]}",
+                    f"    Event = {self.local_names[event.ros_type]}",
                 ]
             )
         )

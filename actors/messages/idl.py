@@ -82,8 +82,11 @@ PACKAGE_NAME = re.compile(r"[a-z][a-z0-9_]*")
 #: The largest array size or string bound: CDR carries lengths as uint32.
 _MAX_BOUND = 2**32 - 1
 TYPE_NAME = re.compile(r"[A-Z][A-Za-z0-9]*")
-# The parts of an action other definitions may name: ``pkg/action/Name_Goal``.
-_ACTION_PART = re.compile(r"[A-Z][A-Za-z0-9]*_(?:Goal|Result|Feedback)")
+# The parts of an action other definitions may name: ``pkg/action/Name_Goal``, and its services'
+# requests and responses (``pkg/action/Name_SendGoal_Request``), as a service's event names them.
+_ACTION_PART = re.compile(r"[A-Z][A-Za-z0-9]*_(?:Goal|Result|Feedback|(?:SendGoal|GetResult)_(?:Request|Response))")
+# The parts of a service its event names: ``pkg/srv/Name_Request``, ``pkg/srv/Name_Response``.
+_SERVICE_PART = re.compile(r"[A-Z][A-Za-z0-9]*_(?:Request|Response)")
 _FIELD_NAME = re.compile(r"(?!.*__)(?!.*_$)[a-z][a-z0-9_]*")
 _CONSTANT_NAME = re.compile(r"[A-Z][A-Z0-9_]*")
 _CONSTANT = re.compile(r"(?P<name>[A-Za-z_][A-Za-z0-9_]*)\s*=\s*(?P<value>.*)")
@@ -98,7 +101,8 @@ class FieldType:
 
     ``array`` is None for a scalar, else ``"unbounded"`` (``T[]``),
     ``"bounded"`` (``T[<=size]``) or ``"fixed"`` (``T[size]``).  ``kind`` is
-    ``msg``, or ``action`` for an action's goal, result or feedback.
+    ``msg``, ``srv`` for a service's request or response (its event names
+    them), or ``action`` for an action's parts.
     """
 
     base: str
@@ -179,6 +183,14 @@ class ServiceSpec:
     def ros_type(self) -> str:
         """``pkg/srv/Name`` (``pkg/action/Name_SendGoal`` for an action's)."""
         return f"{self.pkg}/{self.kind}/{self.name}"
+
+    @property
+    def event(self) -> MessageSpec:
+        """``Name_Event``, what service introspection publishes: rosidl's ServiceEventInfo and at most
+        one request and one response."""
+        own = self.ros_type
+        definition = f"service_msgs/ServiceEventInfo info\n{own}_Request[<=1] request\n{own}_Response[<=1] response\n"
+        return parse_message(definition, path=f"{own}_Event", pkg=self.pkg, name=f"{self.name}_Event", kind=self.kind)
 
 
 @dataclass(frozen=True, slots=True)
@@ -369,12 +381,12 @@ def _parse_type(text: str, pkg: str, where: tuple[str, int]) -> FieldType:
         return FieldType(base, string_bound=bound, array=array, size=count)
     parts = base.split("/")
     kind = "msg"
-    if len(parts) == 3 and parts[1] in ("msg", "action"):
+    if len(parts) == 3 and parts[1] in ("msg", "srv", "action"):
         kind = parts[1]
         parts = [parts[0], parts[2]]
     if len(parts) == 1:
         parts = [pkg, parts[0]]
-    name_form = _ACTION_PART if kind == "action" else TYPE_NAME
+    name_form = {"action": _ACTION_PART, "srv": _SERVICE_PART}.get(kind, TYPE_NAME)
     if len(parts) != 2 or not PACKAGE_NAME.fullmatch(parts[0]) or not name_form.fullmatch(parts[1]):
         raise IdlError(*where, f"unknown type {text!r}")
     return FieldType(parts[1], pkg=parts[0], kind=kind, string_bound=bound, array=array, size=count)

@@ -15,6 +15,7 @@ from typing import Any
 
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
 from actors.compat.rclpy._destroyable import Destroyable
+from actors.compat.rclpy.service_introspection import REQUEST_SENT, RESPONSE_RECEIVED, Introspection
 from actors.compat.rclpy.task import Future
 
 __all__ = ["Client"]
@@ -31,6 +32,8 @@ class Client(Destroyable, WorkSource, NativeProxy):
         self.callback_group = callback_group
         self._responses: deque[tuple[Future[Any], asyncio.Future[Any]]] = deque()
         self._pending: dict[Future[Any], asyncio.Future[Any]] = {}
+        self._introspection = Introspection(node, self.srv_type, self.service_name)
+        self._sequences: dict[Future[Any], int] = {}  # each call's sequence number, for its events
 
     @property
     def service_name(self) -> str:
@@ -44,7 +47,13 @@ class Client(Destroyable, WorkSource, NativeProxy):
         """
         future: Future[Any] = Future()
         self._pending[future] = self._session.call(self._send, request, future)
+        sequence = self._sequences[future] = self._introspection.next_sequence()
+        self._introspection.emit(REQUEST_SENT, sequence, self._introspection.gid, request=request)
         return future
+
+    def configure_introspection(self, clock: Any, service_event_qos_profile: Any, introspection_state: Any) -> None:
+        """Publish this client's service events (see :mod:`~actors.compat.rclpy.service_introspection`)."""
+        self._introspection.configure(clock, service_event_qos_profile, introspection_state)
 
     def _send(self, request: Any, future: Future[Any]) -> asyncio.Future[Any]:
         sent: asyncio.Future[Any] = self._native.call_async(request)
@@ -65,6 +74,10 @@ class Client(Destroyable, WorkSource, NativeProxy):
         future, done = self._responses.popleft()
         self._pending.pop(future, None)
         executor = self._node.executor
+        sequence = self._sequences.pop(future, 0)
+        if not done.cancelled() and done.exception() is None:
+            introspection = self._introspection
+            introspection.emit(RESPONSE_RECEIVED, sequence, introspection.gid, response=done.result())
 
         async def run() -> None:
             future._set_executor(executor)
@@ -96,6 +109,7 @@ class Client(Destroyable, WorkSource, NativeProxy):
     def remove_pending_request(self, future: Future[Any]) -> None:
         """Give up waiting for the response ``future`` stands for."""
         sent = self._pending.pop(future, None)
+        self._sequences.pop(future, None)
         if sent is not None:
             self._session.call(sent.cancel)
 

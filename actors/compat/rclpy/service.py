@@ -14,9 +14,12 @@ from typing import Any
 
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
 from actors.compat.rclpy._destroyable import Destroyable
+from actors.compat.rclpy.service_introspection import REQUEST_RECEIVED, RESPONSE_SENT, Introspection
 from actors.compat.rclpy.task import await_or_execute
 
 __all__ = ["Service"]
+
+_NO_CLIENT = [0] * 16  # a service does not see its caller's id in process
 
 
 class Service(Destroyable, WorkSource, NativeProxy):
@@ -33,6 +36,7 @@ class Service(Destroyable, WorkSource, NativeProxy):
         self._native: Any = None
         self._requests: deque[tuple[Any, Any, asyncio.Future[Any]]] = deque()
         self.catcher = self._catch
+        self._introspection: Introspection | None = None  # made by configure_introspection
 
     def _catch(self, request: Any, response: Any) -> asyncio.Future[Any]:
         # The native service's handler, with the turn held (on a script thread when a script's
@@ -50,13 +54,19 @@ class Service(Destroyable, WorkSource, NativeProxy):
             return None
         request, response, answer = self._requests.popleft()
         callback, call = self.callback, self._session.call
+        introspection = self._introspection
+        sequence = introspection.next_sequence() if introspection is not None else 0
 
         async def run() -> None:
+            if introspection is not None:
+                introspection.emit(REQUEST_RECEIVED, sequence, _NO_CLIENT, request=request)
             try:
                 result = await await_or_execute(callback, request, response)
             except Exception as exc:
                 call(_settle, answer, None, exc)
                 raise
+            if introspection is not None:
+                introspection.emit(RESPONSE_SENT, sequence, _NO_CLIENT, response=result)
             call(_settle, answer, result, None)
 
         return run
@@ -65,6 +75,12 @@ class Service(Destroyable, WorkSource, NativeProxy):
     def service_name(self) -> str:
         """The full service name."""
         return str(self._native.service_name)
+
+    def configure_introspection(self, clock: Any, service_event_qos_profile: Any, introspection_state: Any) -> None:
+        """Publish this service's events (see :mod:`~actors.compat.rclpy.service_introspection`)."""
+        if self._introspection is None:
+            self._introspection = Introspection(self._node, self.srv_type, self.service_name)
+        self._introspection.configure(clock, service_event_qos_profile, introspection_state)
 
     def destroy(self) -> None:
         """Stop serving."""

@@ -5,9 +5,11 @@ from typing import Annotated, ClassVar
 import msgspec
 
 from interfaces.action_msgs.msg import GoalInfo
+from interfaces.service_msgs.msg import ServiceEventInfo
 
 __all__ = [
     "CancelGoal",
+    "CancelGoal_Event",
     "CancelGoal_Request",
     "CancelGoal_Response",
 ]
@@ -85,8 +87,23 @@ class CancelGoal_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tr
     goals_canceling: list[GoalInfo] = msgspec.field(default_factory=list)
 
 
+class CancelGoal_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``action_msgs/srv/CancelGoal_Event``."""
+
+    __ros_type__: ClassVar[str] = "action_msgs/srv/CancelGoal_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "action_msgs/srv/CancelGoal_Request[<=1] request\n"
+        "action_msgs/srv/CancelGoal_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[CancelGoal_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[CancelGoal_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class CancelGoal:
-    """``action_msgs/srv/CancelGoal``: its ``Request`` and ``Response`` messages."""
+    """``action_msgs/srv/CancelGoal``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "action_msgs/srv/CancelGoal"
     __ros_definition__: ClassVar[str] = (
@@ -139,3 +156,4 @@ class CancelGoal:
     )
     Request = CancelGoal_Request
     Response = CancelGoal_Response
+    Event = CancelGoal_Event

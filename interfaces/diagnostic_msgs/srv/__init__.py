@@ -5,12 +5,15 @@ from typing import Annotated, ClassVar
 import msgspec
 
 from interfaces.diagnostic_msgs.msg import DiagnosticStatus
+from interfaces.service_msgs.msg import ServiceEventInfo
 
 __all__ = [
     "AddDiagnostics",
+    "AddDiagnostics_Event",
     "AddDiagnostics_Request",
     "AddDiagnostics_Response",
     "SelfTest",
+    "SelfTest_Event",
     "SelfTest_Request",
     "SelfTest_Response",
 ]
@@ -65,8 +68,23 @@ class AddDiagnostics_Response(msgspec.Struct, kw_only=True, forbid_unknown_field
     message: str = ""
 
 
+class AddDiagnostics_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``diagnostic_msgs/srv/AddDiagnostics_Event``."""
+
+    __ros_type__: ClassVar[str] = "diagnostic_msgs/srv/AddDiagnostics_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "diagnostic_msgs/srv/AddDiagnostics_Request[<=1] request\n"
+        "diagnostic_msgs/srv/AddDiagnostics_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[AddDiagnostics_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[AddDiagnostics_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class AddDiagnostics:
-    """``diagnostic_msgs/srv/AddDiagnostics``: its ``Request`` and ``Response`` messages."""
+    """``diagnostic_msgs/srv/AddDiagnostics``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "diagnostic_msgs/srv/AddDiagnostics"
     __ros_definition__: ClassVar[str] = (
@@ -100,6 +118,7 @@ class AddDiagnostics:
     )
     Request = AddDiagnostics_Request
     Response = AddDiagnostics_Response
+    Event = AddDiagnostics_Event
 
 
 class SelfTest_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -124,8 +143,23 @@ class SelfTest_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True
     status: list[DiagnosticStatus] = msgspec.field(default_factory=list)
 
 
+class SelfTest_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``diagnostic_msgs/srv/SelfTest_Event``."""
+
+    __ros_type__: ClassVar[str] = "diagnostic_msgs/srv/SelfTest_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "diagnostic_msgs/srv/SelfTest_Request[<=1] request\n"
+        "diagnostic_msgs/srv/SelfTest_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[SelfTest_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[SelfTest_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class SelfTest:
-    """``diagnostic_msgs/srv/SelfTest``: its ``Request`` and ``Response`` messages."""
+    """``diagnostic_msgs/srv/SelfTest``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "diagnostic_msgs/srv/SelfTest"
     __ros_definition__: ClassVar[str] = (
@@ -136,3 +170,4 @@ class SelfTest:
     )
     Request = SelfTest_Request
     Response = SelfTest_Response
+    Event = SelfTest_Event

@@ -7,6 +7,7 @@ import msgspec
 from interfaces.action_msgs.msg import GoalStatusArray
 from interfaces.action_msgs.srv import CancelGoal
 from interfaces.builtin_interfaces.msg import Time
+from interfaces.service_msgs.msg import ServiceEventInfo
 from interfaces.unique_identifier_msgs.msg import UUID
 
 __all__ = [
@@ -14,11 +15,13 @@ __all__ = [
     "Fibonacci_Feedback",
     "Fibonacci_FeedbackMessage",
     "Fibonacci_GetResult",
+    "Fibonacci_GetResult_Event",
     "Fibonacci_GetResult_Request",
     "Fibonacci_GetResult_Response",
     "Fibonacci_Goal",
     "Fibonacci_Result",
     "Fibonacci_SendGoal",
+    "Fibonacci_SendGoal_Event",
     "Fibonacci_SendGoal_Request",
     "Fibonacci_SendGoal_Response",
 ]
@@ -89,8 +92,23 @@ class Fibonacci_SendGoal_Response(msgspec.Struct, kw_only=True, forbid_unknown_f
     stamp: Time = msgspec.field(default_factory=Time)
 
 
+class Fibonacci_SendGoal_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``example_interfaces/action/Fibonacci_SendGoal_Event``."""
+
+    __ros_type__: ClassVar[str] = "example_interfaces/action/Fibonacci_SendGoal_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "example_interfaces/action/Fibonacci_SendGoal_Request[<=1] request\n"
+        "example_interfaces/action/Fibonacci_SendGoal_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[Fibonacci_SendGoal_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[Fibonacci_SendGoal_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class Fibonacci_SendGoal:
-    """``example_interfaces/action/Fibonacci_SendGoal``: its ``Request`` and ``Response`` messages."""
+    """``example_interfaces/action/Fibonacci_SendGoal``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "example_interfaces/action/Fibonacci_SendGoal"
     __ros_definition__: ClassVar[str] = (
@@ -102,6 +120,7 @@ class Fibonacci_SendGoal:
     )
     Request = Fibonacci_SendGoal_Request
     Response = Fibonacci_SendGoal_Response
+    Event = Fibonacci_SendGoal_Event
 
 
 class Fibonacci_GetResult_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -128,8 +147,23 @@ class Fibonacci_GetResult_Response(msgspec.Struct, kw_only=True, forbid_unknown_
     result: Fibonacci_Result = msgspec.field(default_factory=Fibonacci_Result)
 
 
+class Fibonacci_GetResult_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``example_interfaces/action/Fibonacci_GetResult_Event``."""
+
+    __ros_type__: ClassVar[str] = "example_interfaces/action/Fibonacci_GetResult_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "example_interfaces/action/Fibonacci_GetResult_Request[<=1] request\n"
+        "example_interfaces/action/Fibonacci_GetResult_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[Fibonacci_GetResult_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[Fibonacci_GetResult_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class Fibonacci_GetResult:
-    """``example_interfaces/action/Fibonacci_GetResult``: its ``Request`` and ``Response`` messages."""
+    """``example_interfaces/action/Fibonacci_GetResult``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "example_interfaces/action/Fibonacci_GetResult"
     __ros_definition__: ClassVar[str] = (
@@ -140,6 +174,7 @@ class Fibonacci_GetResult:
     )
     Request = Fibonacci_GetResult_Request
     Response = Fibonacci_GetResult_Response
+    Event = Fibonacci_GetResult_Event
 
 
 class Fibonacci_FeedbackMessage(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

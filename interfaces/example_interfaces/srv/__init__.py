@@ -4,14 +4,19 @@ from typing import Annotated, ClassVar
 
 import msgspec
 
+from interfaces.service_msgs.msg import ServiceEventInfo
+
 __all__ = [
     "AddTwoInts",
+    "AddTwoInts_Event",
     "AddTwoInts_Request",
     "AddTwoInts_Response",
     "SetBool",
+    "SetBool_Event",
     "SetBool_Request",
     "SetBool_Response",
     "Trigger",
+    "Trigger_Event",
     "Trigger_Request",
     "Trigger_Response",
 ]
@@ -43,8 +48,23 @@ class AddTwoInts_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tr
     sum: _int64 = 0
 
 
+class AddTwoInts_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``example_interfaces/srv/AddTwoInts_Event``."""
+
+    __ros_type__: ClassVar[str] = "example_interfaces/srv/AddTwoInts_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "example_interfaces/srv/AddTwoInts_Request[<=1] request\n"
+        "example_interfaces/srv/AddTwoInts_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[AddTwoInts_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[AddTwoInts_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class AddTwoInts:
-    """``example_interfaces/srv/AddTwoInts``: its ``Request`` and ``Response`` messages."""
+    """``example_interfaces/srv/AddTwoInts``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "example_interfaces/srv/AddTwoInts"
     __ros_definition__: ClassVar[str] = (
@@ -55,6 +75,7 @@ class AddTwoInts:
     )
     Request = AddTwoInts_Request
     Response = AddTwoInts_Response
+    Event = AddTwoInts_Event
 
 
 class SetBool_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -85,8 +106,23 @@ class SetBool_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True)
     message: str = ""
 
 
+class SetBool_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``example_interfaces/srv/SetBool_Event``."""
+
+    __ros_type__: ClassVar[str] = "example_interfaces/srv/SetBool_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "example_interfaces/srv/SetBool_Request[<=1] request\n"
+        "example_interfaces/srv/SetBool_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[SetBool_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[SetBool_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class SetBool:
-    """``example_interfaces/srv/SetBool``: its ``Request`` and ``Response`` messages."""
+    """``example_interfaces/srv/SetBool``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "example_interfaces/srv/SetBool"
     __ros_definition__: ClassVar[str] = (
@@ -101,6 +137,7 @@ class SetBool:
     )
     Request = SetBool_Request
     Response = SetBool_Response
+    Event = SetBool_Event
 
 
 class Trigger_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -128,8 +165,23 @@ class Trigger_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True)
     message: str = ""
 
 
+class Trigger_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``example_interfaces/srv/Trigger_Event``."""
+
+    __ros_type__: ClassVar[str] = "example_interfaces/srv/Trigger_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "example_interfaces/srv/Trigger_Request[<=1] request\n"
+        "example_interfaces/srv/Trigger_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[Trigger_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[Trigger_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class Trigger:
-    """``example_interfaces/srv/Trigger``: its ``Request`` and ``Response`` messages."""
+    """``example_interfaces/srv/Trigger``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "example_interfaces/srv/Trigger"
     __ros_definition__: ClassVar[str] = (
@@ -143,3 +195,4 @@ class Trigger:
     )
     Request = Trigger_Request
     Response = Trigger_Response
+    Event = Trigger_Event

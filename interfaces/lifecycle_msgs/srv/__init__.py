@@ -1,22 +1,27 @@
 """Generated from lifecycle_msgs/srv/*.srv by `python -m actors interface generate`; do not edit."""
 
-from typing import ClassVar
+from typing import Annotated, ClassVar
 
 import msgspec
 
 from interfaces.lifecycle_msgs.msg import State, Transition, TransitionDescription
+from interfaces.service_msgs.msg import ServiceEventInfo
 
 __all__ = [
     "ChangeState",
+    "ChangeState_Event",
     "ChangeState_Request",
     "ChangeState_Response",
     "GetAvailableStates",
+    "GetAvailableStates_Event",
     "GetAvailableStates_Request",
     "GetAvailableStates_Response",
     "GetAvailableTransitions",
+    "GetAvailableTransitions_Event",
     "GetAvailableTransitions_Request",
     "GetAvailableTransitions_Response",
     "GetState",
+    "GetState_Event",
     "GetState_Request",
     "GetState_Response",
 ]
@@ -49,8 +54,23 @@ class ChangeState_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=T
     success: bool = False
 
 
+class ChangeState_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``lifecycle_msgs/srv/ChangeState_Event``."""
+
+    __ros_type__: ClassVar[str] = "lifecycle_msgs/srv/ChangeState_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "lifecycle_msgs/srv/ChangeState_Request[<=1] request\n"
+        "lifecycle_msgs/srv/ChangeState_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[ChangeState_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[ChangeState_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class ChangeState:
-    """``lifecycle_msgs/srv/ChangeState``: its ``Request`` and ``Response`` messages."""
+    """``lifecycle_msgs/srv/ChangeState``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "lifecycle_msgs/srv/ChangeState"
     __ros_definition__: ClassVar[str] = (
@@ -65,6 +85,7 @@ class ChangeState:
     )
     Request = ChangeState_Request
     Response = ChangeState_Response
+    Event = ChangeState_Event
 
 
 class GetAvailableStates_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -86,8 +107,23 @@ class GetAvailableStates_Response(msgspec.Struct, kw_only=True, forbid_unknown_f
     available_states: list[State] = msgspec.field(default_factory=list)
 
 
+class GetAvailableStates_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``lifecycle_msgs/srv/GetAvailableStates_Event``."""
+
+    __ros_type__: ClassVar[str] = "lifecycle_msgs/srv/GetAvailableStates_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "lifecycle_msgs/srv/GetAvailableStates_Request[<=1] request\n"
+        "lifecycle_msgs/srv/GetAvailableStates_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[GetAvailableStates_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[GetAvailableStates_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class GetAvailableStates:
-    """``lifecycle_msgs/srv/GetAvailableStates``: its ``Request`` and ``Response`` messages."""
+    """``lifecycle_msgs/srv/GetAvailableStates``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "lifecycle_msgs/srv/GetAvailableStates"
     __ros_definition__: ClassVar[str] = (
@@ -97,6 +133,7 @@ class GetAvailableStates:
     )
     Request = GetAvailableStates_Request
     Response = GetAvailableStates_Response
+    Event = GetAvailableStates_Event
 
 
 class GetAvailableTransitions_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -118,8 +155,23 @@ class GetAvailableTransitions_Response(msgspec.Struct, kw_only=True, forbid_unkn
     available_transitions: list[TransitionDescription] = msgspec.field(default_factory=list)
 
 
+class GetAvailableTransitions_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``lifecycle_msgs/srv/GetAvailableTransitions_Event``."""
+
+    __ros_type__: ClassVar[str] = "lifecycle_msgs/srv/GetAvailableTransitions_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "lifecycle_msgs/srv/GetAvailableTransitions_Request[<=1] request\n"
+        "lifecycle_msgs/srv/GetAvailableTransitions_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[GetAvailableTransitions_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[GetAvailableTransitions_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class GetAvailableTransitions:
-    """``lifecycle_msgs/srv/GetAvailableTransitions``: its ``Request`` and ``Response`` messages."""
+    """``lifecycle_msgs/srv/GetAvailableTransitions``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "lifecycle_msgs/srv/GetAvailableTransitions"
     __ros_definition__: ClassVar[str] = (
@@ -129,6 +181,7 @@ class GetAvailableTransitions:
     )
     Request = GetAvailableTransitions_Request
     Response = GetAvailableTransitions_Response
+    Event = GetAvailableTransitions_Event
 
 
 class GetState_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -150,8 +203,23 @@ class GetState_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True
     current_state: State = msgspec.field(default_factory=State)
 
 
+class GetState_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``lifecycle_msgs/srv/GetState_Event``."""
+
+    __ros_type__: ClassVar[str] = "lifecycle_msgs/srv/GetState_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "lifecycle_msgs/srv/GetState_Request[<=1] request\n"
+        "lifecycle_msgs/srv/GetState_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[GetState_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[GetState_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class GetState:
-    """``lifecycle_msgs/srv/GetState``: its ``Request`` and ``Response`` messages."""
+    """``lifecycle_msgs/srv/GetState``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "lifecycle_msgs/srv/GetState"
     __ros_definition__: ClassVar[str] = (
@@ -161,3 +229,4 @@ class GetState:
     )
     Request = GetState_Request
     Response = GetState_Response
+    Event = GetState_Event

@@ -6,18 +6,23 @@ import msgspec
 
 from interfaces.geometry_msgs.msg import PoseStamped, PoseWithCovarianceStamped
 from interfaces.nav_msgs.msg import OccupancyGrid, Path
+from interfaces.service_msgs.msg import ServiceEventInfo
 
 __all__ = [
     "GetMap",
+    "GetMap_Event",
     "GetMap_Request",
     "GetMap_Response",
     "GetPlan",
+    "GetPlan_Event",
     "GetPlan_Request",
     "GetPlan_Response",
     "LoadMap",
+    "LoadMap_Event",
     "LoadMap_Request",
     "LoadMap_Response",
     "SetMap",
+    "SetMap_Event",
     "SetMap_Request",
     "SetMap_Response",
 ]
@@ -46,8 +51,23 @@ class GetMap_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     map: OccupancyGrid = msgspec.field(default_factory=OccupancyGrid)
 
 
+class GetMap_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``nav_msgs/srv/GetMap_Event``."""
+
+    __ros_type__: ClassVar[str] = "nav_msgs/srv/GetMap_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "nav_msgs/srv/GetMap_Request[<=1] request\n"
+        "nav_msgs/srv/GetMap_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[GetMap_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[GetMap_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class GetMap:
-    """``nav_msgs/srv/GetMap``: its ``Request`` and ``Response`` messages."""
+    """``nav_msgs/srv/GetMap``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "nav_msgs/srv/GetMap"
     __ros_definition__: ClassVar[str] = (
@@ -58,6 +78,7 @@ class GetMap:
     )
     Request = GetMap_Request
     Response = GetMap_Response
+    Event = GetMap_Event
 
 
 class GetPlan_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -95,8 +116,23 @@ class GetPlan_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True)
     plan: Path = msgspec.field(default_factory=Path)
 
 
+class GetPlan_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``nav_msgs/srv/GetPlan_Event``."""
+
+    __ros_type__: ClassVar[str] = "nav_msgs/srv/GetPlan_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "nav_msgs/srv/GetPlan_Request[<=1] request\n"
+        "nav_msgs/srv/GetPlan_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[GetPlan_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[GetPlan_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class GetPlan:
-    """``nav_msgs/srv/GetPlan``: its ``Request`` and ``Response`` messages."""
+    """``nav_msgs/srv/GetPlan``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "nav_msgs/srv/GetPlan"
     __ros_definition__: ClassVar[str] = (
@@ -117,6 +153,7 @@ class GetPlan:
     )
     Request = GetPlan_Request
     Response = GetPlan_Response
+    Event = GetPlan_Event
 
 
 class LoadMap_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -159,8 +196,23 @@ class LoadMap_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True)
     result: _uint8 = 0
 
 
+class LoadMap_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``nav_msgs/srv/LoadMap_Event``."""
+
+    __ros_type__: ClassVar[str] = "nav_msgs/srv/LoadMap_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "nav_msgs/srv/LoadMap_Request[<=1] request\n"
+        "nav_msgs/srv/LoadMap_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[LoadMap_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[LoadMap_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class LoadMap:
-    """``nav_msgs/srv/LoadMap``: its ``Request`` and ``Response`` messages."""
+    """``nav_msgs/srv/LoadMap``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "nav_msgs/srv/LoadMap"
     __ros_definition__: ClassVar[str] = (
@@ -182,6 +234,7 @@ class LoadMap:
     )
     Request = LoadMap_Request
     Response = LoadMap_Response
+    Event = LoadMap_Event
 
 
 class SetMap_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -215,8 +268,23 @@ class SetMap_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     success: bool = False
 
 
+class SetMap_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``nav_msgs/srv/SetMap_Event``."""
+
+    __ros_type__: ClassVar[str] = "nav_msgs/srv/SetMap_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "nav_msgs/srv/SetMap_Request[<=1] request\n"
+        "nav_msgs/srv/SetMap_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[SetMap_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[SetMap_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class SetMap:
-    """``nav_msgs/srv/SetMap``: its ``Request`` and ``Response`` messages."""
+    """``nav_msgs/srv/SetMap``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "nav_msgs/srv/SetMap"
     __ros_definition__: ClassVar[str] = (
@@ -234,3 +302,4 @@ class SetMap:
     )
     Request = SetMap_Request
     Response = SetMap_Response
+    Event = SetMap_Event

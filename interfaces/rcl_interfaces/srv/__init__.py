@@ -13,30 +13,39 @@ from interfaces.rcl_interfaces.msg import (
     SetLoggerLevelsResult,
     SetParametersResult,
 )
+from interfaces.service_msgs.msg import ServiceEventInfo
 
 __all__ = [
     "DescribeParameters",
+    "DescribeParameters_Event",
     "DescribeParameters_Request",
     "DescribeParameters_Response",
     "GetLoggerLevels",
+    "GetLoggerLevels_Event",
     "GetLoggerLevels_Request",
     "GetLoggerLevels_Response",
     "GetParameterTypes",
+    "GetParameterTypes_Event",
     "GetParameterTypes_Request",
     "GetParameterTypes_Response",
     "GetParameters",
+    "GetParameters_Event",
     "GetParameters_Request",
     "GetParameters_Response",
     "ListParameters",
+    "ListParameters_Event",
     "ListParameters_Request",
     "ListParameters_Response",
     "SetLoggerLevels",
+    "SetLoggerLevels_Event",
     "SetLoggerLevels_Request",
     "SetLoggerLevels_Response",
     "SetParameters",
     "SetParametersAtomically",
+    "SetParametersAtomically_Event",
     "SetParametersAtomically_Request",
     "SetParametersAtomically_Response",
+    "SetParameters_Event",
     "SetParameters_Request",
     "SetParameters_Response",
 ]
@@ -71,8 +80,23 @@ class DescribeParameters_Response(msgspec.Struct, kw_only=True, forbid_unknown_f
     descriptors: list[ParameterDescriptor] = msgspec.field(default_factory=list)
 
 
+class DescribeParameters_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/DescribeParameters_Event``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/DescribeParameters_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "rcl_interfaces/srv/DescribeParameters_Request[<=1] request\n"
+        "rcl_interfaces/srv/DescribeParameters_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[DescribeParameters_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[DescribeParameters_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class DescribeParameters:
-    """``rcl_interfaces/srv/DescribeParameters``: its ``Request`` and ``Response`` messages."""
+    """``rcl_interfaces/srv/DescribeParameters``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/DescribeParameters"
     __ros_definition__: ClassVar[str] = (
@@ -87,6 +111,7 @@ class DescribeParameters:
     )
     Request = DescribeParameters_Request
     Response = DescribeParameters_Response
+    Event = DescribeParameters_Event
 
 
 class GetLoggerLevels_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -115,8 +140,23 @@ class GetLoggerLevels_Response(msgspec.Struct, kw_only=True, forbid_unknown_fiel
     levels: list[LoggerLevel] = msgspec.field(default_factory=list)
 
 
+class GetLoggerLevels_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/GetLoggerLevels_Event``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetLoggerLevels_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "rcl_interfaces/srv/GetLoggerLevels_Request[<=1] request\n"
+        "rcl_interfaces/srv/GetLoggerLevels_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[GetLoggerLevels_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[GetLoggerLevels_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class GetLoggerLevels:
-    """``rcl_interfaces/srv/GetLoggerLevels``: its ``Request`` and ``Response`` messages."""
+    """``rcl_interfaces/srv/GetLoggerLevels``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetLoggerLevels"
     __ros_definition__: ClassVar[str] = (
@@ -130,6 +170,7 @@ class GetLoggerLevels:
     )
     Request = GetLoggerLevels_Request
     Response = GetLoggerLevels_Response
+    Event = GetLoggerLevels_Event
 
 
 class GetParameterTypes_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -161,8 +202,23 @@ class GetParameterTypes_Response(msgspec.Struct, kw_only=True, forbid_unknown_fi
     types: bytes = b""
 
 
+class GetParameterTypes_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/GetParameterTypes_Event``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameterTypes_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "rcl_interfaces/srv/GetParameterTypes_Request[<=1] request\n"
+        "rcl_interfaces/srv/GetParameterTypes_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[GetParameterTypes_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[GetParameterTypes_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class GetParameterTypes:
-    """``rcl_interfaces/srv/GetParameterTypes``: its ``Request`` and ``Response`` messages."""
+    """``rcl_interfaces/srv/GetParameterTypes``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameterTypes"
     __ros_definition__: ClassVar[str] = (
@@ -179,6 +235,7 @@ class GetParameterTypes:
     )
     Request = GetParameterTypes_Request
     Response = GetParameterTypes_Response
+    Event = GetParameterTypes_Event
 
 
 class GetParameters_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -215,8 +272,23 @@ class GetParameters_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields
     values: list[ParameterValue] = msgspec.field(default_factory=list)
 
 
+class GetParameters_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/GetParameters_Event``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameters_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "rcl_interfaces/srv/GetParameters_Request[<=1] request\n"
+        "rcl_interfaces/srv/GetParameters_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[GetParameters_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[GetParameters_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class GetParameters:
-    """``rcl_interfaces/srv/GetParameters``: its ``Request`` and ``Response`` messages."""
+    """``rcl_interfaces/srv/GetParameters``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/GetParameters"
     __ros_definition__: ClassVar[str] = (
@@ -238,6 +310,7 @@ class GetParameters:
     )
     Request = GetParameters_Request
     Response = GetParameters_Response
+    Event = GetParameters_Event
 
 
 class ListParameters_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -275,8 +348,23 @@ class ListParameters_Response(msgspec.Struct, kw_only=True, forbid_unknown_field
     result: ListParametersResult = msgspec.field(default_factory=ListParametersResult)
 
 
+class ListParameters_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/ListParameters_Event``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/ListParameters_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "rcl_interfaces/srv/ListParameters_Request[<=1] request\n"
+        "rcl_interfaces/srv/ListParameters_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[ListParameters_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[ListParameters_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class ListParameters:
-    """``rcl_interfaces/srv/ListParameters``: its ``Request`` and ``Response`` messages."""
+    """``rcl_interfaces/srv/ListParameters``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/ListParameters"
     __ros_definition__: ClassVar[str] = (
@@ -297,6 +385,7 @@ class ListParameters:
     )
     Request = ListParameters_Request
     Response = ListParameters_Response
+    Event = ListParameters_Event
 
 
 class SetLoggerLevels_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -324,8 +413,23 @@ class SetLoggerLevels_Response(msgspec.Struct, kw_only=True, forbid_unknown_fiel
     results: list[SetLoggerLevelsResult] = msgspec.field(default_factory=list)
 
 
+class SetLoggerLevels_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/SetLoggerLevels_Event``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetLoggerLevels_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "rcl_interfaces/srv/SetLoggerLevels_Request[<=1] request\n"
+        "rcl_interfaces/srv/SetLoggerLevels_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[SetLoggerLevels_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[SetLoggerLevels_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class SetLoggerLevels:
-    """``rcl_interfaces/srv/SetLoggerLevels``: its ``Request`` and ``Response`` messages."""
+    """``rcl_interfaces/srv/SetLoggerLevels``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetLoggerLevels"
     __ros_definition__: ClassVar[str] = (
@@ -338,6 +442,7 @@ class SetLoggerLevels:
     )
     Request = SetLoggerLevels_Request
     Response = SetLoggerLevels_Response
+    Event = SetLoggerLevels_Event
 
 
 class SetParameters_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -365,8 +470,23 @@ class SetParameters_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields
     results: list[SetParametersResult] = msgspec.field(default_factory=list)
 
 
+class SetParameters_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/SetParameters_Event``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParameters_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "rcl_interfaces/srv/SetParameters_Request[<=1] request\n"
+        "rcl_interfaces/srv/SetParameters_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[SetParameters_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[SetParameters_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class SetParameters:
-    """``rcl_interfaces/srv/SetParameters``: its ``Request`` and ``Response`` messages."""
+    """``rcl_interfaces/srv/SetParameters``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParameters"
     __ros_definition__: ClassVar[str] = (
@@ -379,6 +499,7 @@ class SetParameters:
     )
     Request = SetParameters_Request
     Response = SetParameters_Response
+    Event = SetParameters_Event
 
 
 class SetParametersAtomically_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -408,8 +529,23 @@ class SetParametersAtomically_Response(msgspec.Struct, kw_only=True, forbid_unkn
     result: SetParametersResult = msgspec.field(default_factory=SetParametersResult)
 
 
+class SetParametersAtomically_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``rcl_interfaces/srv/SetParametersAtomically_Event``."""
+
+    __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParametersAtomically_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "rcl_interfaces/srv/SetParametersAtomically_Request[<=1] request\n"
+        "rcl_interfaces/srv/SetParametersAtomically_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[SetParametersAtomically_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[SetParametersAtomically_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class SetParametersAtomically:
-    """``rcl_interfaces/srv/SetParametersAtomically``: its ``Request`` and ``Response`` messages."""
+    """``rcl_interfaces/srv/SetParametersAtomically``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "rcl_interfaces/srv/SetParametersAtomically"
     __ros_definition__: ClassVar[str] = (
@@ -424,3 +560,4 @@ class SetParametersAtomically:
     )
     Request = SetParametersAtomically_Request
     Response = SetParametersAtomically_Response
+    Event = SetParametersAtomically_Event

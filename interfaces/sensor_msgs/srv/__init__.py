@@ -1,13 +1,15 @@
 """Generated from sensor_msgs/srv/*.srv by `python -m actors interface generate`; do not edit."""
 
-from typing import ClassVar
+from typing import Annotated, ClassVar
 
 import msgspec
 
 from interfaces.sensor_msgs.msg import CameraInfo
+from interfaces.service_msgs.msg import ServiceEventInfo
 
 __all__ = [
     "SetCameraInfo",
+    "SetCameraInfo_Event",
     "SetCameraInfo_Request",
     "SetCameraInfo_Response",
 ]
@@ -45,8 +47,23 @@ class SetCameraInfo_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields
     status_message: str = ""
 
 
+class SetCameraInfo_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``sensor_msgs/srv/SetCameraInfo_Event``."""
+
+    __ros_type__: ClassVar[str] = "sensor_msgs/srv/SetCameraInfo_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "sensor_msgs/srv/SetCameraInfo_Request[<=1] request\n"
+        "sensor_msgs/srv/SetCameraInfo_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[SetCameraInfo_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[SetCameraInfo_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class SetCameraInfo:
-    """``sensor_msgs/srv/SetCameraInfo``: its ``Request`` and ``Response`` messages."""
+    """``sensor_msgs/srv/SetCameraInfo``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "sensor_msgs/srv/SetCameraInfo"
     __ros_definition__: ClassVar[str] = (
@@ -65,3 +82,4 @@ class SetCameraInfo:
     )
     Request = SetCameraInfo_Request
     Response = SetCameraInfo_Response
+    Event = SetCameraInfo_Event

@@ -7,6 +7,7 @@ import msgspec
 from interfaces.action_msgs.msg import GoalStatusArray
 from interfaces.action_msgs.srv import CancelGoal
 from interfaces.builtin_interfaces.msg import Time
+from interfaces.service_msgs.msg import ServiceEventInfo
 from interfaces.test_msgs.msg import BasicTypes, Builtins
 from interfaces.unique_identifier_msgs.msg import UUID
 
@@ -15,22 +16,26 @@ __all__ = [
     "Fibonacci_Feedback",
     "Fibonacci_FeedbackMessage",
     "Fibonacci_GetResult",
+    "Fibonacci_GetResult_Event",
     "Fibonacci_GetResult_Request",
     "Fibonacci_GetResult_Response",
     "Fibonacci_Goal",
     "Fibonacci_Result",
     "Fibonacci_SendGoal",
+    "Fibonacci_SendGoal_Event",
     "Fibonacci_SendGoal_Request",
     "Fibonacci_SendGoal_Response",
     "NestedMessage",
     "NestedMessage_Feedback",
     "NestedMessage_FeedbackMessage",
     "NestedMessage_GetResult",
+    "NestedMessage_GetResult_Event",
     "NestedMessage_GetResult_Request",
     "NestedMessage_GetResult_Response",
     "NestedMessage_Goal",
     "NestedMessage_Result",
     "NestedMessage_SendGoal",
+    "NestedMessage_SendGoal_Event",
     "NestedMessage_SendGoal_Request",
     "NestedMessage_SendGoal_Response",
 ]
@@ -101,8 +106,23 @@ class Fibonacci_SendGoal_Response(msgspec.Struct, kw_only=True, forbid_unknown_f
     stamp: Time = msgspec.field(default_factory=Time)
 
 
+class Fibonacci_SendGoal_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/Fibonacci_SendGoal_Event``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_SendGoal_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "test_msgs/action/Fibonacci_SendGoal_Request[<=1] request\n"
+        "test_msgs/action/Fibonacci_SendGoal_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[Fibonacci_SendGoal_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[Fibonacci_SendGoal_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class Fibonacci_SendGoal:
-    """``test_msgs/action/Fibonacci_SendGoal``: its ``Request`` and ``Response`` messages."""
+    """``test_msgs/action/Fibonacci_SendGoal``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_SendGoal"
     __ros_definition__: ClassVar[str] = (
@@ -114,6 +134,7 @@ class Fibonacci_SendGoal:
     )
     Request = Fibonacci_SendGoal_Request
     Response = Fibonacci_SendGoal_Response
+    Event = Fibonacci_SendGoal_Event
 
 
 class Fibonacci_GetResult_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -140,8 +161,23 @@ class Fibonacci_GetResult_Response(msgspec.Struct, kw_only=True, forbid_unknown_
     result: Fibonacci_Result = msgspec.field(default_factory=Fibonacci_Result)
 
 
+class Fibonacci_GetResult_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/Fibonacci_GetResult_Event``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_GetResult_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "test_msgs/action/Fibonacci_GetResult_Request[<=1] request\n"
+        "test_msgs/action/Fibonacci_GetResult_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[Fibonacci_GetResult_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[Fibonacci_GetResult_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class Fibonacci_GetResult:
-    """``test_msgs/action/Fibonacci_GetResult``: its ``Request`` and ``Response`` messages."""
+    """``test_msgs/action/Fibonacci_GetResult``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "test_msgs/action/Fibonacci_GetResult"
     __ros_definition__: ClassVar[str] = (
@@ -152,6 +188,7 @@ class Fibonacci_GetResult:
     )
     Request = Fibonacci_GetResult_Request
     Response = Fibonacci_GetResult_Response
+    Event = Fibonacci_GetResult_Event
 
 
 class Fibonacci_FeedbackMessage(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -272,8 +309,23 @@ class NestedMessage_SendGoal_Response(msgspec.Struct, kw_only=True, forbid_unkno
     stamp: Time = msgspec.field(default_factory=Time)
 
 
+class NestedMessage_SendGoal_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/NestedMessage_SendGoal_Event``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_SendGoal_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "test_msgs/action/NestedMessage_SendGoal_Request[<=1] request\n"
+        "test_msgs/action/NestedMessage_SendGoal_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[NestedMessage_SendGoal_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[NestedMessage_SendGoal_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class NestedMessage_SendGoal:
-    """``test_msgs/action/NestedMessage_SendGoal``: its ``Request`` and ``Response`` messages."""
+    """``test_msgs/action/NestedMessage_SendGoal``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_SendGoal"
     __ros_definition__: ClassVar[str] = (
@@ -285,6 +337,7 @@ class NestedMessage_SendGoal:
     )
     Request = NestedMessage_SendGoal_Request
     Response = NestedMessage_SendGoal_Response
+    Event = NestedMessage_SendGoal_Event
 
 
 class NestedMessage_GetResult_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -311,8 +364,23 @@ class NestedMessage_GetResult_Response(msgspec.Struct, kw_only=True, forbid_unkn
     result: NestedMessage_Result = msgspec.field(default_factory=NestedMessage_Result)
 
 
+class NestedMessage_GetResult_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/action/NestedMessage_GetResult_Event``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_GetResult_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "test_msgs/action/NestedMessage_GetResult_Request[<=1] request\n"
+        "test_msgs/action/NestedMessage_GetResult_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[NestedMessage_GetResult_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[NestedMessage_GetResult_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class NestedMessage_GetResult:
-    """``test_msgs/action/NestedMessage_GetResult``: its ``Request`` and ``Response`` messages."""
+    """``test_msgs/action/NestedMessage_GetResult``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "test_msgs/action/NestedMessage_GetResult"
     __ros_definition__: ClassVar[str] = (
@@ -323,6 +391,7 @@ class NestedMessage_GetResult:
     )
     Request = NestedMessage_GetResult_Request
     Response = NestedMessage_GetResult_Response
+    Event = NestedMessage_GetResult_Event
 
 
 class NestedMessage_FeedbackMessage(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

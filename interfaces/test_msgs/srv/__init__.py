@@ -4,16 +4,20 @@ from typing import Annotated, ClassVar
 
 import msgspec
 
+from interfaces.service_msgs.msg import ServiceEventInfo
 from interfaces.test_msgs.msg import BasicTypes as test_msgs_BasicTypes, Constants, Defaults
 
 __all__ = [
     "Arrays",
+    "Arrays_Event",
     "Arrays_Request",
     "Arrays_Response",
     "BasicTypes",
+    "BasicTypes_Event",
     "BasicTypes_Request",
     "BasicTypes_Response",
     "Empty",
+    "Empty_Event",
     "Empty_Request",
     "Empty_Response",
 ]
@@ -170,8 +174,23 @@ class Arrays_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     string_values_default: Annotated[list[str], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: ["", "max value", "min value"])
 
 
+class Arrays_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/srv/Arrays_Event``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/srv/Arrays_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "test_msgs/srv/Arrays_Request[<=1] request\n"
+        "test_msgs/srv/Arrays_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[Arrays_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[Arrays_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class Arrays:
-    """``test_msgs/srv/Arrays``: its ``Request`` and ``Response`` messages."""
+    """``test_msgs/srv/Arrays``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "test_msgs/srv/Arrays"
     __ros_definition__: ClassVar[str] = (
@@ -241,6 +260,7 @@ class Arrays:
     )
     Request = Arrays_Request
     Response = Arrays_Response
+    Event = Arrays_Event
 
 
 class BasicTypes_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -317,8 +337,23 @@ class BasicTypes_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tr
     string_value: str = ""
 
 
+class BasicTypes_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/srv/BasicTypes_Event``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/srv/BasicTypes_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "test_msgs/srv/BasicTypes_Request[<=1] request\n"
+        "test_msgs/srv/BasicTypes_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[BasicTypes_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[BasicTypes_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class BasicTypes:
-    """``test_msgs/srv/BasicTypes``: its ``Request`` and ``Response`` messages."""
+    """``test_msgs/srv/BasicTypes``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "test_msgs/srv/BasicTypes"
     __ros_definition__: ClassVar[str] = (
@@ -354,6 +389,7 @@ class BasicTypes:
     )
     Request = BasicTypes_Request
     Response = BasicTypes_Response
+    Event = BasicTypes_Event
 
 
 class Empty_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -370,8 +406,23 @@ class Empty_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     __ros_definition__: ClassVar[str] = ""
 
 
+class Empty_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``test_msgs/srv/Empty_Event``."""
+
+    __ros_type__: ClassVar[str] = "test_msgs/srv/Empty_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "test_msgs/srv/Empty_Request[<=1] request\n"
+        "test_msgs/srv/Empty_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[Empty_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[Empty_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class Empty:
-    """``test_msgs/srv/Empty``: its ``Request`` and ``Response`` messages."""
+    """``test_msgs/srv/Empty``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "test_msgs/srv/Empty"
     __ros_definition__: ClassVar[str] = (
@@ -379,3 +430,4 @@ class Empty:
     )
     Request = Empty_Request
     Response = Empty_Response
+    Event = Empty_Event

@@ -8,6 +8,7 @@ from interfaces.action_msgs.msg import GoalStatusArray
 from interfaces.action_msgs.srv import CancelGoal
 from interfaces.builtin_interfaces.msg import Duration, Time
 from interfaces.geometry_msgs.msg import TransformStamped
+from interfaces.service_msgs.msg import ServiceEventInfo
 from interfaces.tf2_msgs.msg import TF2Error
 from interfaces.unique_identifier_msgs.msg import UUID
 
@@ -16,11 +17,13 @@ __all__ = [
     "LookupTransform_Feedback",
     "LookupTransform_FeedbackMessage",
     "LookupTransform_GetResult",
+    "LookupTransform_GetResult_Event",
     "LookupTransform_GetResult_Request",
     "LookupTransform_GetResult_Response",
     "LookupTransform_Goal",
     "LookupTransform_Result",
     "LookupTransform_SendGoal",
+    "LookupTransform_SendGoal_Event",
     "LookupTransform_SendGoal_Request",
     "LookupTransform_SendGoal_Response",
 ]
@@ -103,8 +106,23 @@ class LookupTransform_SendGoal_Response(msgspec.Struct, kw_only=True, forbid_unk
     stamp: Time = msgspec.field(default_factory=Time)
 
 
+class LookupTransform_SendGoal_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``tf2_msgs/action/LookupTransform_SendGoal_Event``."""
+
+    __ros_type__: ClassVar[str] = "tf2_msgs/action/LookupTransform_SendGoal_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "tf2_msgs/action/LookupTransform_SendGoal_Request[<=1] request\n"
+        "tf2_msgs/action/LookupTransform_SendGoal_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[LookupTransform_SendGoal_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[LookupTransform_SendGoal_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class LookupTransform_SendGoal:
-    """``tf2_msgs/action/LookupTransform_SendGoal``: its ``Request`` and ``Response`` messages."""
+    """``tf2_msgs/action/LookupTransform_SendGoal``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "tf2_msgs/action/LookupTransform_SendGoal"
     __ros_definition__: ClassVar[str] = (
@@ -116,6 +134,7 @@ class LookupTransform_SendGoal:
     )
     Request = LookupTransform_SendGoal_Request
     Response = LookupTransform_SendGoal_Response
+    Event = LookupTransform_SendGoal_Event
 
 
 class LookupTransform_GetResult_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -142,8 +161,23 @@ class LookupTransform_GetResult_Response(msgspec.Struct, kw_only=True, forbid_un
     result: LookupTransform_Result = msgspec.field(default_factory=LookupTransform_Result)
 
 
+class LookupTransform_GetResult_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``tf2_msgs/action/LookupTransform_GetResult_Event``."""
+
+    __ros_type__: ClassVar[str] = "tf2_msgs/action/LookupTransform_GetResult_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "tf2_msgs/action/LookupTransform_GetResult_Request[<=1] request\n"
+        "tf2_msgs/action/LookupTransform_GetResult_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[LookupTransform_GetResult_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[LookupTransform_GetResult_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class LookupTransform_GetResult:
-    """``tf2_msgs/action/LookupTransform_GetResult``: its ``Request`` and ``Response`` messages."""
+    """``tf2_msgs/action/LookupTransform_GetResult``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "tf2_msgs/action/LookupTransform_GetResult"
     __ros_definition__: ClassVar[str] = (
@@ -154,6 +188,7 @@ class LookupTransform_GetResult:
     )
     Request = LookupTransform_GetResult_Request
     Response = LookupTransform_GetResult_Response
+    Event = LookupTransform_GetResult_Event
 
 
 class LookupTransform_FeedbackMessage(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

@@ -7,6 +7,7 @@ import msgspec
 from interfaces.action_msgs.msg import GoalStatusArray
 from interfaces.action_msgs.srv import CancelGoal
 from interfaces.builtin_interfaces.msg import Time
+from interfaces.service_msgs.msg import ServiceEventInfo
 from interfaces.unique_identifier_msgs.msg import UUID
 
 __all__ = [
@@ -14,11 +15,13 @@ __all__ = [
     "RotateAbsolute_Feedback",
     "RotateAbsolute_FeedbackMessage",
     "RotateAbsolute_GetResult",
+    "RotateAbsolute_GetResult_Event",
     "RotateAbsolute_GetResult_Request",
     "RotateAbsolute_GetResult_Response",
     "RotateAbsolute_Goal",
     "RotateAbsolute_Result",
     "RotateAbsolute_SendGoal",
+    "RotateAbsolute_SendGoal_Event",
     "RotateAbsolute_SendGoal_Request",
     "RotateAbsolute_SendGoal_Response",
 ]
@@ -88,8 +91,23 @@ class RotateAbsolute_SendGoal_Response(msgspec.Struct, kw_only=True, forbid_unkn
     stamp: Time = msgspec.field(default_factory=Time)
 
 
+class RotateAbsolute_SendGoal_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``turtlesim/action/RotateAbsolute_SendGoal_Event``."""
+
+    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_SendGoal_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "turtlesim/action/RotateAbsolute_SendGoal_Request[<=1] request\n"
+        "turtlesim/action/RotateAbsolute_SendGoal_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[RotateAbsolute_SendGoal_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[RotateAbsolute_SendGoal_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class RotateAbsolute_SendGoal:
-    """``turtlesim/action/RotateAbsolute_SendGoal``: its ``Request`` and ``Response`` messages."""
+    """``turtlesim/action/RotateAbsolute_SendGoal``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_SendGoal"
     __ros_definition__: ClassVar[str] = (
@@ -101,6 +119,7 @@ class RotateAbsolute_SendGoal:
     )
     Request = RotateAbsolute_SendGoal_Request
     Response = RotateAbsolute_SendGoal_Response
+    Event = RotateAbsolute_SendGoal_Event
 
 
 class RotateAbsolute_GetResult_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -127,8 +146,23 @@ class RotateAbsolute_GetResult_Response(msgspec.Struct, kw_only=True, forbid_unk
     result: RotateAbsolute_Result = msgspec.field(default_factory=RotateAbsolute_Result)
 
 
+class RotateAbsolute_GetResult_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``turtlesim/action/RotateAbsolute_GetResult_Event``."""
+
+    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_GetResult_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "turtlesim/action/RotateAbsolute_GetResult_Request[<=1] request\n"
+        "turtlesim/action/RotateAbsolute_GetResult_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[RotateAbsolute_GetResult_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[RotateAbsolute_GetResult_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class RotateAbsolute_GetResult:
-    """``turtlesim/action/RotateAbsolute_GetResult``: its ``Request`` and ``Response`` messages."""
+    """``turtlesim/action/RotateAbsolute_GetResult``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_GetResult"
     __ros_definition__: ClassVar[str] = (
@@ -139,6 +173,7 @@ class RotateAbsolute_GetResult:
     )
     Request = RotateAbsolute_GetResult_Request
     Response = RotateAbsolute_GetResult_Response
+    Event = RotateAbsolute_GetResult_Event
 
 
 class RotateAbsolute_FeedbackMessage(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

@@ -4,20 +4,27 @@ from typing import Annotated, ClassVar
 
 import msgspec
 
+from interfaces.service_msgs.msg import ServiceEventInfo
+
 __all__ = [
     "Kill",
+    "Kill_Event",
     "Kill_Request",
     "Kill_Response",
     "SetPen",
+    "SetPen_Event",
     "SetPen_Request",
     "SetPen_Response",
     "Spawn",
+    "Spawn_Event",
     "Spawn_Request",
     "Spawn_Response",
     "TeleportAbsolute",
+    "TeleportAbsolute_Event",
     "TeleportAbsolute_Request",
     "TeleportAbsolute_Response",
     "TeleportRelative",
+    "TeleportRelative_Event",
     "TeleportRelative_Request",
     "TeleportRelative_Response",
 ]
@@ -43,8 +50,23 @@ class Kill_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     __ros_definition__: ClassVar[str] = ""
 
 
+class Kill_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``turtlesim/srv/Kill_Event``."""
+
+    __ros_type__: ClassVar[str] = "turtlesim/srv/Kill_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "turtlesim/srv/Kill_Request[<=1] request\n"
+        "turtlesim/srv/Kill_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[Kill_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[Kill_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class Kill:
-    """``turtlesim/srv/Kill``: its ``Request`` and ``Response`` messages."""
+    """``turtlesim/srv/Kill``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "turtlesim/srv/Kill"
     __ros_definition__: ClassVar[str] = (
@@ -53,6 +75,7 @@ class Kill:
     )
     Request = Kill_Request
     Response = Kill_Response
+    Event = Kill_Event
 
 
 class SetPen_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -81,8 +104,23 @@ class SetPen_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     __ros_definition__: ClassVar[str] = ""
 
 
+class SetPen_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``turtlesim/srv/SetPen_Event``."""
+
+    __ros_type__: ClassVar[str] = "turtlesim/srv/SetPen_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "turtlesim/srv/SetPen_Request[<=1] request\n"
+        "turtlesim/srv/SetPen_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[SetPen_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[SetPen_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class SetPen:
-    """``turtlesim/srv/SetPen``: its ``Request`` and ``Response`` messages."""
+    """``turtlesim/srv/SetPen``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "turtlesim/srv/SetPen"
     __ros_definition__: ClassVar[str] = (
@@ -95,6 +133,7 @@ class SetPen:
     )
     Request = SetPen_Request
     Response = SetPen_Response
+    Event = SetPen_Event
 
 
 class Spawn_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -125,8 +164,23 @@ class Spawn_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     name: str = ""
 
 
+class Spawn_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``turtlesim/srv/Spawn_Event``."""
+
+    __ros_type__: ClassVar[str] = "turtlesim/srv/Spawn_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "turtlesim/srv/Spawn_Request[<=1] request\n"
+        "turtlesim/srv/Spawn_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[Spawn_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[Spawn_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class Spawn:
-    """``turtlesim/srv/Spawn``: its ``Request`` and ``Response`` messages."""
+    """``turtlesim/srv/Spawn``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "turtlesim/srv/Spawn"
     __ros_definition__: ClassVar[str] = (
@@ -139,6 +193,7 @@ class Spawn:
     )
     Request = Spawn_Request
     Response = Spawn_Response
+    Event = Spawn_Event
 
 
 class TeleportAbsolute_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -163,8 +218,23 @@ class TeleportAbsolute_Response(msgspec.Struct, kw_only=True, forbid_unknown_fie
     __ros_definition__: ClassVar[str] = ""
 
 
+class TeleportAbsolute_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``turtlesim/srv/TeleportAbsolute_Event``."""
+
+    __ros_type__: ClassVar[str] = "turtlesim/srv/TeleportAbsolute_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "turtlesim/srv/TeleportAbsolute_Request[<=1] request\n"
+        "turtlesim/srv/TeleportAbsolute_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[TeleportAbsolute_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[TeleportAbsolute_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class TeleportAbsolute:
-    """``turtlesim/srv/TeleportAbsolute``: its ``Request`` and ``Response`` messages."""
+    """``turtlesim/srv/TeleportAbsolute``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "turtlesim/srv/TeleportAbsolute"
     __ros_definition__: ClassVar[str] = (
@@ -175,6 +245,7 @@ class TeleportAbsolute:
     )
     Request = TeleportAbsolute_Request
     Response = TeleportAbsolute_Response
+    Event = TeleportAbsolute_Event
 
 
 class TeleportRelative_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -197,8 +268,23 @@ class TeleportRelative_Response(msgspec.Struct, kw_only=True, forbid_unknown_fie
     __ros_definition__: ClassVar[str] = ""
 
 
+class TeleportRelative_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``turtlesim/srv/TeleportRelative_Event``."""
+
+    __ros_type__: ClassVar[str] = "turtlesim/srv/TeleportRelative_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "turtlesim/srv/TeleportRelative_Request[<=1] request\n"
+        "turtlesim/srv/TeleportRelative_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[TeleportRelative_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[TeleportRelative_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class TeleportRelative:
-    """``turtlesim/srv/TeleportRelative``: its ``Request`` and ``Response`` messages."""
+    """``turtlesim/srv/TeleportRelative``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "turtlesim/srv/TeleportRelative"
     __ros_definition__: ClassVar[str] = (
@@ -208,3 +294,4 @@ class TeleportRelative:
     )
     Request = TeleportRelative_Request
     Response = TeleportRelative_Response
+    Event = TeleportRelative_Event

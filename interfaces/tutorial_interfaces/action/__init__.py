@@ -8,6 +8,7 @@ from interfaces.action_msgs.msg import GoalStatusArray
 from interfaces.action_msgs.srv import CancelGoal
 from interfaces.builtin_interfaces.msg import Time
 from interfaces.geometry_msgs.msg import Pose2D
+from interfaces.service_msgs.msg import ServiceEventInfo
 from interfaces.unique_identifier_msgs.msg import UUID
 
 __all__ = [
@@ -15,11 +16,13 @@ __all__ = [
     "DriveToPose_Feedback",
     "DriveToPose_FeedbackMessage",
     "DriveToPose_GetResult",
+    "DriveToPose_GetResult_Event",
     "DriveToPose_GetResult_Request",
     "DriveToPose_GetResult_Response",
     "DriveToPose_Goal",
     "DriveToPose_Result",
     "DriveToPose_SendGoal",
+    "DriveToPose_SendGoal_Event",
     "DriveToPose_SendGoal_Request",
     "DriveToPose_SendGoal_Response",
 ]
@@ -98,8 +101,23 @@ class DriveToPose_SendGoal_Response(msgspec.Struct, kw_only=True, forbid_unknown
     stamp: Time = msgspec.field(default_factory=Time)
 
 
+class DriveToPose_SendGoal_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``tutorial_interfaces/action/DriveToPose_SendGoal_Event``."""
+
+    __ros_type__: ClassVar[str] = "tutorial_interfaces/action/DriveToPose_SendGoal_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "tutorial_interfaces/action/DriveToPose_SendGoal_Request[<=1] request\n"
+        "tutorial_interfaces/action/DriveToPose_SendGoal_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[DriveToPose_SendGoal_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[DriveToPose_SendGoal_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class DriveToPose_SendGoal:
-    """``tutorial_interfaces/action/DriveToPose_SendGoal``: its ``Request`` and ``Response`` messages."""
+    """``tutorial_interfaces/action/DriveToPose_SendGoal``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "tutorial_interfaces/action/DriveToPose_SendGoal"
     __ros_definition__: ClassVar[str] = (
@@ -111,6 +129,7 @@ class DriveToPose_SendGoal:
     )
     Request = DriveToPose_SendGoal_Request
     Response = DriveToPose_SendGoal_Response
+    Event = DriveToPose_SendGoal_Event
 
 
 class DriveToPose_GetResult_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -137,8 +156,23 @@ class DriveToPose_GetResult_Response(msgspec.Struct, kw_only=True, forbid_unknow
     result: DriveToPose_Result = msgspec.field(default_factory=DriveToPose_Result)
 
 
+class DriveToPose_GetResult_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``tutorial_interfaces/action/DriveToPose_GetResult_Event``."""
+
+    __ros_type__: ClassVar[str] = "tutorial_interfaces/action/DriveToPose_GetResult_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "tutorial_interfaces/action/DriveToPose_GetResult_Request[<=1] request\n"
+        "tutorial_interfaces/action/DriveToPose_GetResult_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[DriveToPose_GetResult_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[DriveToPose_GetResult_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class DriveToPose_GetResult:
-    """``tutorial_interfaces/action/DriveToPose_GetResult``: its ``Request`` and ``Response`` messages."""
+    """``tutorial_interfaces/action/DriveToPose_GetResult``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "tutorial_interfaces/action/DriveToPose_GetResult"
     __ros_definition__: ClassVar[str] = (
@@ -149,6 +183,7 @@ class DriveToPose_GetResult:
     )
     Request = DriveToPose_GetResult_Request
     Response = DriveToPose_GetResult_Response
+    Event = DriveToPose_GetResult_Event
 
 
 class DriveToPose_FeedbackMessage(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

@@ -4,8 +4,11 @@ from typing import Annotated, ClassVar
 
 import msgspec
 
+from interfaces.service_msgs.msg import ServiceEventInfo
+
 __all__ = [
     "AddThreeInts",
+    "AddThreeInts_Event",
     "AddThreeInts_Request",
     "AddThreeInts_Response",
 ]
@@ -39,8 +42,23 @@ class AddThreeInts_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=
     sum: _int64 = 0
 
 
+class AddThreeInts_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``tutorial_interfaces/srv/AddThreeInts_Event``."""
+
+    __ros_type__: ClassVar[str] = "tutorial_interfaces/srv/AddThreeInts_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "tutorial_interfaces/srv/AddThreeInts_Request[<=1] request\n"
+        "tutorial_interfaces/srv/AddThreeInts_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[AddThreeInts_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[AddThreeInts_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class AddThreeInts:
-    """``tutorial_interfaces/srv/AddThreeInts``: its ``Request`` and ``Response`` messages."""
+    """``tutorial_interfaces/srv/AddThreeInts``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "tutorial_interfaces/srv/AddThreeInts"
     __ros_definition__: ClassVar[str] = (
@@ -52,3 +70,4 @@ class AddThreeInts:
     )
     Request = AddThreeInts_Request
     Response = AddThreeInts_Response
+    Event = AddThreeInts_Event

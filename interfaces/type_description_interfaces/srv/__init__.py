@@ -1,13 +1,15 @@
 """Generated from type_description_interfaces/srv/*.srv by `python -m actors interface generate`; do not edit."""
 
-from typing import ClassVar
+from typing import Annotated, ClassVar
 
 import msgspec
 
+from interfaces.service_msgs.msg import ServiceEventInfo
 from interfaces.type_description_interfaces.msg import KeyValue, TypeDescription, TypeSource
 
 __all__ = [
     "GetTypeDescription",
+    "GetTypeDescription_Event",
     "GetTypeDescription_Request",
     "GetTypeDescription_Response",
 ]
@@ -67,8 +69,23 @@ class GetTypeDescription_Response(msgspec.Struct, kw_only=True, forbid_unknown_f
     extra_information: list[KeyValue] = msgspec.field(default_factory=list)
 
 
+class GetTypeDescription_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``type_description_interfaces/srv/GetTypeDescription_Event``."""
+
+    __ros_type__: ClassVar[str] = "type_description_interfaces/srv/GetTypeDescription_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "type_description_interfaces/srv/GetTypeDescription_Request[<=1] request\n"
+        "type_description_interfaces/srv/GetTypeDescription_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[GetTypeDescription_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[GetTypeDescription_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class GetTypeDescription:
-    """``type_description_interfaces/srv/GetTypeDescription``: its ``Request`` and ``Response`` messages."""
+    """``type_description_interfaces/srv/GetTypeDescription``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "type_description_interfaces/srv/GetTypeDescription"
     __ros_definition__: ClassVar[str] = (
@@ -104,3 +121,4 @@ class GetTypeDescription:
     )
     Request = GetTypeDescription_Request
     Response = GetTypeDescription_Response
+    Event = GetTypeDescription_Event

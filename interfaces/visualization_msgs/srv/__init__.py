@@ -4,10 +4,12 @@ from typing import Annotated, ClassVar
 
 import msgspec
 
+from interfaces.service_msgs.msg import ServiceEventInfo
 from interfaces.visualization_msgs.msg import InteractiveMarker
 
 __all__ = [
     "GetInteractiveMarkers",
+    "GetInteractiveMarkers_Event",
     "GetInteractiveMarkers_Request",
     "GetInteractiveMarkers_Response",
 ]
@@ -41,8 +43,23 @@ class GetInteractiveMarkers_Response(msgspec.Struct, kw_only=True, forbid_unknow
     markers: list[InteractiveMarker] = msgspec.field(default_factory=list)
 
 
+class GetInteractiveMarkers_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
+    """``visualization_msgs/srv/GetInteractiveMarkers_Event``."""
+
+    __ros_type__: ClassVar[str] = "visualization_msgs/srv/GetInteractiveMarkers_Event"
+    __ros_definition__: ClassVar[str] = (
+        "service_msgs/ServiceEventInfo info\n"
+        "visualization_msgs/srv/GetInteractiveMarkers_Request[<=1] request\n"
+        "visualization_msgs/srv/GetInteractiveMarkers_Response[<=1] response\n"
+    )
+
+    info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
+    request: Annotated[list[GetInteractiveMarkers_Request], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+    response: Annotated[list[GetInteractiveMarkers_Response], msgspec.Meta(max_length=1)] = msgspec.field(default_factory=list)
+
+
 class GetInteractiveMarkers:
-    """``visualization_msgs/srv/GetInteractiveMarkers``: its ``Request`` and ``Response`` messages."""
+    """``visualization_msgs/srv/GetInteractiveMarkers``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
     __ros_type__: ClassVar[str] = "visualization_msgs/srv/GetInteractiveMarkers"
     __ros_definition__: ClassVar[str] = (
@@ -58,3 +75,4 @@ class GetInteractiveMarkers:
     )
     Request = GetInteractiveMarkers_Request
     Response = GetInteractiveMarkers_Response
+    Event = GetInteractiveMarkers_Event
