@@ -48,3 +48,30 @@ def test_waiting_for_a_node_counts_runtime_time(session):
     start = session.loop.time()
     assert not node.wait_for_node("absent", 2.5)
     assert session.loop.time() - start == pytest.approx(2.5)
+
+
+def test_a_subscription_knows_its_callbacks_form_and_its_publishers(session):
+    from actors.compat.rclpy.subscription import Subscription
+    from actors.ros.qos import QoSProfile, ReliabilityPolicy
+
+    node = rclpy.create_node("reader")
+    plain = node.create_subscription(String, "news", lambda msg: None, 10)
+    assert plain._callback_type is Subscription.CallbackType.MessageOnly
+    detailed = node.create_subscription(String, "news", lambda msg, info: None, 10)
+    assert detailed._callback_type is Subscription.CallbackType.WithMessageInfo
+    with pytest.raises(RuntimeError, match="one argument"):
+        node.create_subscription(String, "news", lambda a, b, c: None, 10)
+    assert plain.get_publisher_count() == 0
+    node.create_publisher(String, "news", 10)
+    node.create_publisher(String, "news", QoSProfile(depth=1, reliability=ReliabilityPolicy.BEST_EFFORT))
+    assert plain.get_publisher_count() == 1  # the best-effort one does not match a reliable reader
+
+
+def test_a_service_answering_with_the_wrong_type_raises_from_the_spin(session):
+    node = rclpy.create_node("sloppy")
+    node.create_service(AddTwoInts, "add", lambda request, response: "five")
+    future = node.create_client(AddTwoInts, "add").call_async(AddTwoInts.Request(a=2, b=3))
+    with pytest.raises(TypeError, match="returned str, not AddTwoInts_Response"):
+        rclpy.spin_until_future_complete(node, future, timeout_sec=1)
+    rclpy.spin_once(node, timeout_sec=0.1)  # the refusal reaches the caller
+    assert isinstance(future.exception(), Exception)

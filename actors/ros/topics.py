@@ -534,6 +534,11 @@ class Subscription(Mailbox):
         self._topic: Topic | None = None  # set by the topic table
         self._senders: deque[tuple[Any, Publisher]] | None = None  # see track_senders
 
+    def get_publisher_count(self) -> int:
+        """How many publishers feed this subscription (those on its topic whose QoS matched)."""
+        topic = self._topic
+        return 0 if topic is None else sum(self in publisher._subs for publisher in topic.publishers)
+
     @property
     def state(self) -> SubscriptionState:
         """Where this subscription's messages wait (:class:`SubscriptionState`), read off the fields."""

@@ -54,6 +54,7 @@ class Service(Destroyable, WorkSource, NativeProxy):
             return None
         request, response, answer = self._requests.popleft()
         callback, call = self.callback, self._session.call
+        response_type = self.srv_type.Response
         introspection = self._introspection
         sequence = introspection.next_sequence() if introspection is not None else 0
 
@@ -62,6 +63,8 @@ class Service(Destroyable, WorkSource, NativeProxy):
                 introspection.emit(REQUEST_RECEIVED, sequence, _NO_CLIENT, request=request)
             try:
                 result = await await_or_execute(callback, request, response)
+                if type(result) is not response_type:  # rclpy refuses it as it sends: the spin raises
+                    raise TypeError(f"service callback returned {type(result).__name__}, not {response_type.__name__}")
             except Exception as exc:
                 call(_settle, answer, None, exc)
                 raise

@@ -12,6 +12,7 @@ import inspect
 import sys
 from collections import deque
 from collections.abc import Callable
+from enum import Enum
 from typing import Any, TypedDict
 
 from actors.compat.dispatch import Handler, NativeProxy, ScriptNode, WorkSource
@@ -32,18 +33,32 @@ class MessageInfo(TypedDict):
     reception_sequence_number: int
 
 
-def _wants_info(callback: Callable[..., Any]) -> bool:
+class CallbackType(Enum):
+    """What a subscription callback takes: the message, or the message and its MessageInfo."""
+
+    MessageOnly = 0
+    WithMessageInfo = 1
+
+
+def _callback_type(callback: Callable[..., Any]) -> CallbackType:
+    # As rclpy reads it off the signature; RuntimeError for one that takes neither form.
     try:
-        inspect.signature(callback).bind(object())
-    except TypeError:
-        return True
+        signature = inspect.signature(callback)
     except ValueError:  # no signature (a builtin): give it the message only
-        return False
-    return False
+        return CallbackType.MessageOnly
+    for kind, arguments in ((CallbackType.MessageOnly, 1), (CallbackType.WithMessageInfo, 2)):
+        try:
+            signature.bind(*[object()] * arguments)
+        except TypeError:
+            continue
+        return kind
+    raise RuntimeError(f"Subscription callback {callback!r} must take one argument (the message) or two (and info)")
 
 
 class Subscription(Destroyable, WorkSource, NativeProxy):
     """Receives one topic (``Node.create_subscription``); other attributes are the native one's."""
+
+    CallbackType = CallbackType
 
     def __init__(
         self,
@@ -63,7 +78,8 @@ class Subscription(Destroyable, WorkSource, NativeProxy):
         self._queue: deque[tuple[Any, int]] = deque()
         self._limit = sys.maxsize
         self._received = 0
-        self._with_info = _wants_info(callback)
+        self._callback_type = _callback_type(callback)
+        self._with_info = self._callback_type is CallbackType.WithMessageInfo
         self._notify = node._rclpy.notify
         self.catcher = self._catch
 
