@@ -75,3 +75,20 @@ def test_a_service_answering_with_the_wrong_type_raises_from_the_spin(session):
         rclpy.spin_until_future_complete(node, future, timeout_sec=1)
     rclpy.spin_once(node, timeout_sec=0.1)  # the refusal reaches the caller
     assert isinstance(future.exception(), Exception)
+
+
+def test_handles_work_until_their_entity_is_destroyed(session):
+    node = rclpy.create_node("handled")
+    timer = node.create_timer(1.0, lambda: None)
+    publisher = node.create_publisher(String, "said", 1)
+    with timer.handle, publisher.handle, node.handle:
+        pass
+    node.destroy_timer(timer)
+    with pytest.raises(InvalidHandle, match="destruction was requested"), timer.handle:
+        pass
+    with publisher.handle:  # the others are untouched
+        pass
+    node.destroy_node()
+    for entity in (publisher, node):
+        with pytest.raises(InvalidHandle), entity.handle:
+            pass

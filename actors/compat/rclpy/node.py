@@ -28,6 +28,7 @@ import msgspec
 import actors.compat.rclpy.executors  # as rclpy's node does: `rclpy.executors` is then set
 import actors.compat.rclpy.logging  # noqa: F401 - and `rclpy.logging`
 from actors.compat.dispatch import NativeWork, ScriptActor, SpinningExecutor, WorkSource
+from actors.compat.rclpy._destroyable import Handle
 from actors.compat.rclpy.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup
 from actors.compat.rclpy.client import Client
 from actors.compat.rclpy.clock import ROSClock
@@ -218,9 +219,9 @@ class Node(NativeNode):
         return self._rclpy.context
 
     @property
-    def handle(self) -> Node:
-        """Not None while the node lives (rclpy's rcl handle)."""
-        return self
+    def handle(self) -> Handle:
+        """Usable (``with node.handle:``) until the node is destroyed, as rclpy's rcl handle."""
+        return Handle(lambda: not self._rclpy.destroyed)
 
     @property
     def executor(self) -> SpinningExecutor | None:

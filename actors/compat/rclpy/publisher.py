@@ -22,8 +22,6 @@ class Publisher(Destroyable, NativeProxy):
         self._native = native
         self._session = node._rclpy.session
 
-    _destroyed = False  # set when its node destroys it
-
     def publish(self, msg: Any) -> None:
         """Deliver ``msg`` (a message or its CDR bytes); TypeError (or a validation error) if it does
         not fit the topic's type, InvalidHandle once the publisher or its node is destroyed
