@@ -4,8 +4,14 @@
 
 - one-way: talker→listener deliveries/s (``bench.throughput``'s measurement)
   with a :class:`~actors.recording.Recorder` attached, beside the same run
-  without one.  The recorder writes in a worker thread and drops rather than
-  hold up the publisher; the row says how many it dropped.
+  without one.  The recorder writes in a worker thread; its buffer
+  (``max_pending``) is a tenth of the messages, so the publisher outruns it
+  and is held up while it is written; the row says how many were dropped
+  (none, unless the recorder is made lossy).
+- burst: a million messages (200k with ``--quick``) published as fast as
+  the loop goes into a recorder with its default buffer, from the first
+  publish until the bag is closed; messages recorded per second, and how
+  many the bag is missing (it must be none).
 - writing: LaserScans (360 beams, 1.5 KB of CDR each) published in bursts
   into a recorded graph, from the first publish until the bag is closed;
   MB/s of messages recorded (CDR bytes: the same scan over and over
@@ -35,6 +41,7 @@ from bench.harness import Result, repeat, standalone
 from bench.throughput import actors_rate
 from interfaces.nav_msgs.msg import Odometry
 from interfaces.sensor_msgs.msg import LaserScan
+from interfaces.std_msgs.msg import String
 
 __all__ = ["run", "write_rate", "library_rate", "play_seconds"]
 
@@ -46,6 +53,12 @@ class _Scans(Node):
     def __init__(self) -> None:
         super().__init__("scanner")
         self.pub = self.create_publisher(LaserScan, "scan", QoSProfile(depth=BURST))
+
+
+class _Burst(Node):
+    def __init__(self) -> None:
+        super().__init__("burster")
+        self.pub = self.create_publisher(String, "burst", QoSProfile(depth=BURST))
 
 
 def _scan() -> LaserScan:
@@ -60,15 +73,12 @@ def _scan() -> LaserScan:
     )
 
 
-def write_rate(n: int, folder: Path) -> tuple[float, int]:
-    """MB/s of CDR recorded for ``n`` LaserScans, from the first publish until the bag is closed; and drops."""
-    path = folder / f"scans{time.perf_counter_ns()}.mcap"
-    recorder = Recorder(path)
-    msg = _scan()
+def _recorded_seconds(recorder: Recorder, node: type[_Scans | _Burst], msg: Any, n: int) -> float:
+    """Seconds from the first of ``n`` publishes of ``msg`` (``BURST`` between yields) until the bag is closed."""
 
     async def main() -> float:
         async with Runtime(attach=[recorder]) as rt:
-            publish = rt.spawn(_Scans).pub.publish
+            publish = rt.spawn(node).pub.publish
             await asyncio.sleep(0)
             start = time.perf_counter()
             for _ in range(n // BURST):
@@ -77,9 +87,26 @@ def write_rate(n: int, folder: Path) -> tuple[float, int]:
                 await asyncio.sleep(0)
         return time.perf_counter() - start  # the runtime has closed the bag
 
-    seconds = asyncio.run(main())
+    return asyncio.run(main())
+
+
+def write_rate(n: int, folder: Path) -> tuple[float, int]:
+    """MB/s of CDR recorded for ``n`` LaserScans, from the first publish until the bag is closed; and drops."""
+    path = folder / f"scans{time.perf_counter_ns()}.mcap"
+    recorder = Recorder(path)
+    msg = _scan()
+    seconds = _recorded_seconds(recorder, _Scans, msg, n)
     path.unlink()
     return n * len(codec.encode_cdr(msg)) / seconds / 1e6, recorder.dropped
+
+
+def burst_rate(n: int, folder: Path) -> tuple[float, int]:
+    """Messages/s recorded for a burst of ``n`` Strings (first publish to closed bag); and how many the bag misses."""
+    path = folder / f"burst{time.perf_counter_ns()}.mcap"
+    seconds = _recorded_seconds(Recorder(path, topics=["/burst"]), _Burst, String(data="Hello World"), n)
+    recorded = sum(t.count for t in Bag(path).topics if t.name == "/burst")
+    path.unlink()
+    return n / seconds, n - recorded
 
 
 def library_rate(n: int, folder: Path) -> float:
@@ -150,6 +177,16 @@ def run(quick: bool = False) -> list[Result]:
     folder = Path(tempfile.mkdtemp(prefix="bench-recording-"))
     try:
         results = _one_way(n, reps, folder)
+        bursts = repeat(lambda: burst_rate(200_000 if quick else 1_000_000, folder), 3, warmup=False)
+        results.append(
+            Result(
+                "l. recording: burst",
+                f"{200_000 if quick else 1_000_000:,} messages, default buffer",
+                "messages/s recorded",
+                [rate for rate, _ in bursts],
+                note=f"missing from the bag per run: {[lost for _, lost in bursts]}",
+            )
+        )
         written = repeat(lambda: write_rate(scans, folder), reps)
         dropped = sorted(d for _, d in written)[len(written) // 2]
         results.append(
@@ -193,7 +230,7 @@ def _one_way(n: int, reps: int, folder: Path) -> list[Result]:
     drops: list[int] = []
 
     def recorded() -> float:
-        recorder = Recorder(folder / f"one_way{time.perf_counter_ns()}.mcap")
+        recorder = Recorder(folder / f"one_way{time.perf_counter_ns()}.mcap", max_pending=n // 10)
         rate = actors_rate(n, 1, attach=[recorder])
         drops.append(recorder.dropped)
         return rate

@@ -306,6 +306,23 @@ def test_an_unbound_ros_clock_can_be_driven_by_hand():
         clock.set_ros_time_override(42)
 
 
+def test_a_loop_time_read_earlier_converts_to_what_now_said_then():
+    for loop in (asyncio.new_event_loop(), VirtualTimeLoop(epoch=5.0)):
+        try:
+            clock = ROSClock(loop)
+            then = loop.time()
+            now = clock.now_ns()
+            assert clock.ns_at(then) <= now <= clock.ns_at(loop.time())
+            if isinstance(loop, VirtualTimeLoop):
+                assert clock.ns_at(then) == now == 5_000_000_000
+            assert clock.ns_at(then + 0.25) - clock.ns_at(then) == 250_000_000
+            clock._set_ros_time_is_active(True)  # a time set by hand counts as it is now
+            clock.set_ros_time_override(Time(seconds=42, clock_type=ClockType.ROS_TIME))
+            assert clock.ns_at(then) == 42_000_000_000
+        finally:
+            loop.close()
+
+
 def test_now_is_checked_as_a_time_made_by_hand():
     class Odd(Clock):
         def __init__(self, ns: object) -> None:

@@ -148,14 +148,15 @@ class _Buffer(bytearray):
     one copy.  After a spill the buffer restarts with ``skip`` dummy bytes so
     that its length stays congruent to the true offset modulo 8, which is all
     alignment reads from it.
+
+    Made as a plain bytearray is (``_Buffer(HEADER)``, no ``__init__`` of its
+    own): until a first spill, which most messages never make, ``chunks`` and
+    ``skip`` are the class's.  A Python ``__init__`` cost a third of encoding
+    a small message.
     """
 
-    __slots__ = ("chunks", "skip")
-
-    def __init__(self, head: bytes) -> None:
-        super().__init__(head)
-        self.chunks: list[bytes] = []
-        self.skip = 0
+    chunks: tuple[Any, ...] = ()
+    skip = 0
 
     def spill(self, data: Any) -> None:
         """Append ``data`` (a large bytes-like object) without copying it into the buffer."""

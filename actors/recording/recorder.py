@@ -89,13 +89,15 @@ class Recorder:
         self.path: Path | None = None  # the MCAP file, once open
         self._writer: BagWriter | None = None
         self._taps = TapSet(RECORDER_NODE, self._takes, self._take, depth=max_pending, label="recorder")
-        self._items: list[tuple[Tap, int, Any]] = []
+        self._items: list[tuple[Tap, float, Any]] = []
         # Batches taken from the buffer, written in order by whichever thread holds the lock.
-        self._batches: deque[list[tuple[Tap, int, Any]]] = deque()
+        self._batches: deque[list[tuple[Tap, float, Any]]] = deque()
         self._lock = threading.Lock()
         self._runtime: Runtime | None = None
         self._waiter: asyncio.Future[None] | None = None
         self._now_ns: Any = None  # the runtime clock, once running
+        self._loop_time: Any = None  # the loop's clock: a message's stamp, made ROS time when written
+        self._ns_at: Any = None
         self.dropped = 0
         self._dropped_reported = 0
         self._failed = False
@@ -134,6 +136,7 @@ class Recorder:
     ) -> None:
         self.open()
         self._now_ns = runtime.clock.now_ns
+        self._loop_time, self._ns_at = runtime.loop.time, runtime.clock.ns_at
         self._runtime = runtime
         try:
             self._taps.start(runtime)
@@ -224,7 +227,7 @@ class Recorder:
             items = self._items
         if not items:
             self._wake()
-        items.append((tap, self._now_ns(), msg))
+        items.append((tap, self._loop_time(), msg))  # a quarter of now_ns()'s cost, in publish()
 
     # -- the writer side ------------------------------------------------------------
 
@@ -252,12 +255,13 @@ class Recorder:
                 failures += self._write(batches.popleft())
         return failures
 
-    def _write(self, batch: list[tuple[Tap, int, Any]]) -> list[tuple[Tap, Exception]]:
+    def _write(self, batch: list[tuple[Tap, float, Any]]) -> list[tuple[Tap, Exception]]:
         """Encode and write one batch; returns the failures."""
         writer = self._writer
         assert writer is not None
         encode = codec.encode_cdr
         add = writer.write
+        ns_at = self._ns_at
         failures = []
         for tap, stamp, msg in batch:
             channel = tap.channel
@@ -268,7 +272,7 @@ class Recorder:
             except Exception as exc:  # a message its type cannot carry: counted, never fatal
                 failures.append((tap, exc))
                 continue
-            add(channel, stamp, data)
+            add(channel, ns_at(stamp), data)
         return failures
 
     def _register(self, tap: Tap) -> int:

@@ -373,6 +373,13 @@ class ROSClock(Clock):
             return time.time_ns()
         return self._epoch_ns + int(round(self._loop.time() * _NS))
 
+    def ns_at(self, loop_time: float) -> int:
+        """What :meth:`now_ns` read when the loop's clock read ``loop_time`` (a time set by hand
+        counts as it is now): for whoever stamps with the loop's cheaper clock and converts later."""
+        if self._override_active:
+            return self._override_ns
+        return self._epoch_ns + int(round(loop_time * _NS))
+
     def monotonic(self) -> float:
         """The loop's time in seconds: what timers and deadlines are measured in."""
         if self._loop is None:
