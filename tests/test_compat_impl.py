@@ -59,3 +59,23 @@ def test_a_publishers_info_carries_its_profile_and_type_hash(session):
     assert str(info.topic_type_hash) == codec.type_hash(String)
     assert "Topic type hash: RIHS01_" in str(info)
     assert "  Durability: TRANSIENT_LOCAL" in str(info)
+
+
+def test_a_nodes_bad_arguments_are_named_in_rcls_words(session):
+    with pytest.raises(RosArgsError, match=r"^Failed to parse ROS arguments: .*not-a-remap"):
+        rclpy.create_node("argued", cli_args=["--ros-args", "-r", "not-a-remap"])
+    with pytest.raises(TypeError, match="Expected QoSProfile or int, but received 'deep'"):
+        rclpy.create_node("typed").create_publisher(String, "t", "deep")
+
+
+def test_init_records_the_signal_handlers_and_shutdown_forgets_them():
+    from actors.compat.rclpy import signals
+
+    context = rclpy.Context()
+    assert signals.get_current_signal_handlers_options() == signals.SignalHandlerOptions.NO
+    rclpy.init(args=[], context=context, signal_handler_options=signals.SignalHandlerOptions.SIGINT)
+    assert signals.get_current_signal_handlers_options() == signals.SignalHandlerOptions.SIGINT
+    rclpy.shutdown(context=context)  # not the default context: its handlers stay
+    assert signals.get_current_signal_handlers_options() == signals.SignalHandlerOptions.SIGINT
+    signals.uninstall_signal_handlers()
+    assert signals.get_current_signal_handlers_options() == signals.SignalHandlerOptions.NO

@@ -404,7 +404,7 @@ def as_qos(qos: QoSProfile | QoSSnapshot | int) -> QoSSnapshot:
     if type(qos) is int and (known := _by_depth.get(qos)) is not None:
         return known
     if isinstance(qos, bool) or not isinstance(qos, (QoSProfile, int)):
-        raise TypeError(f"qos must be a QoSProfile or an int depth, got {qos!r}")
+        raise TypeError(f"Expected QoSProfile or int, but received {qos!r}")  # rclpy's words
     if isinstance(qos, int):
         if qos < 0:
             raise ValueError(f"QoS depth must be greater than or equal to zero, got {qos}")

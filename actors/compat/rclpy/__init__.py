@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 from actors.compat.rclpy.context import Context
 from actors.compat.rclpy.parameter import Parameter
 from actors.compat.rclpy.qos import QoSProfile
+from actors.compat.rclpy.signals import SignalHandlerOptions, install_signal_handlers, uninstall_signal_handlers
 from actors.compat.rclpy.task import Future
 from actors.compat.rclpy.utilities import (
     get_default_context,
@@ -77,7 +78,12 @@ def init(
     Signal handling is the launcher's (``actors run``): Ctrl-C shuts the
     context down and raises KeyboardInterrupt in the script, as rclpy's does.
     """
-    return InitContextManager(args, context, domain_id)
+    manager = InitContextManager(args, context, domain_id)
+    if signal_handler_options is None:  # rclpy's default: handlers for the default context only
+        default = manager.context is get_default_context()
+        signal_handler_options = SignalHandlerOptions.ALL if default else SignalHandlerOptions.NO
+    install_signal_handlers(signal_handler_options)
+    return manager
 
 
 def get_global_executor() -> Executor:
@@ -104,11 +110,19 @@ def get_global_executor() -> Executor:
 def shutdown(*, context: Context | None = None, uninstall_handlers: bool | None = None) -> None:
     """Shut ``context`` (the default one if None) down; RuntimeError if it was not initialized."""
     _shutdown(context=context)
+    _forget_handlers(context, uninstall_handlers)
 
 
 def try_shutdown(*, context: Context | None = None, uninstall_handlers: bool | None = None) -> None:
     """Shut ``context`` down if it is initialized and not shut down already."""
     _try_shutdown(context=context)
+    _forget_handlers(context, uninstall_handlers)
+
+
+def _forget_handlers(context: Context | None, uninstall_handlers: bool | None) -> None:
+    # As rclpy: shutting the default context down removes the handlers unless told otherwise.
+    if uninstall_handlers or (uninstall_handlers is None and (context is None or context is get_default_context())):
+        uninstall_signal_handlers()
 
 
 def create_node(node_name: str, **options: Any) -> Node:

@@ -44,6 +44,7 @@ from actors.compat.rclpy.time_source import TimeSource
 from actors.compat.rclpy.timer import Rate, Timer
 from actors.compat.rclpy.type_hash import TypeHash
 from actors.compat.rclpy.utilities import get_default_context
+from actors.errors import RosArgsError
 from actors.launch.rosargs import RosArgs, parse
 from actors.ros.endpoint_info import TopicEndpointInfo
 from actors.ros.log import NodeLogger
@@ -166,7 +167,10 @@ class Node(NativeNode):
         session = context.session
         args = context.ros_args if use_global_arguments else RosArgs()
         if cli_args:
-            args = args + parse(["--ros-args", *cli_args])[0]
+            try:
+                args = args + parse(["--ros-args", *cli_args])[0]
+            except RosArgsError as exc:  # in rcl's words, keeping the error's class
+                raise type(exc)(f"Failed to parse ROS arguments: {exc}") from None
         setup = args.for_node(node_name, namespace)
         # rclpy: the constructor's parameter_overrides win over the command line's.
         own = {p.name: p.value for p in parameter_overrides or ()}
