@@ -344,3 +344,19 @@ def test_a_destroyed_server_aborts_its_goals_and_a_destroyed_client_stops(rclpy_
     assert not action.server_is_ready() and server.server not in server.node.waitables
     action.destroy()
     assert action not in node.waitables
+
+
+def test_a_goal_is_held_until_its_result_expires(rclpy_session, serving, client):
+    server = serving(result_timeout=2)
+    node, action = client
+    assert server.server._goal_handles == {}
+    handle = send(node, action, 2)
+    spun(node, handle.get_result_async())
+    assert len(server.server._goal_handles) == 1  # its result stays asked-for a while
+    time.sleep(3)  # virtual time: the result's 2 s pass
+    assert server.server._goal_handles == {}
+    counts = (server.server.get_num_entities(), action.get_num_entities())
+    assert [(n.num_services, n.num_timers, n.num_clients, n.num_subscriptions) for n in counts] == [
+        (3, 1, 0, 0),
+        (0, 0, 3, 2),
+    ]

@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING, Any
 from actors.compat.dispatch import ScriptNode
 from actors.compat.rclpy.action.base import ActionWork, GoalHandle
 from actors.compat.rclpy.task import Future, await_or_execute
+from actors.compat.rclpy.waitable import NumberOfEntities
 from actors.compat.turns import Waiter
 from actors.ros.actions import ActionClient as NativeClient
 from actors.ros.actions import ClientGoalHandle as NativeGoal
@@ -105,6 +106,10 @@ class ActionClient(ActionWork):
         self._native: NativeClient = self._session.call(NativeNode.create_action_client, node, action_type, action_name)
         self.callback_group.add_entity(self)
         node.add_waitable(self)
+
+    def get_num_entities(self) -> NumberOfEntities:
+        """What an action client is made of: three service clients, the feedback and status subscriptions."""
+        return NumberOfEntities(num_subscriptions=2, num_clients=3)
 
     # -- requests ---------------------------------------------------------------------------
 

@@ -28,6 +28,7 @@ from typing import Any, cast
 from actors.compat.dispatch import ScriptNode
 from actors.compat.rclpy.action.base import ActionWork, GoalHandle
 from actors.compat.rclpy.task import Task, await_or_execute
+from actors.compat.rclpy.waitable import NumberOfEntities
 from actors.errors import ActionError
 from actors.ros.actions import ActionServer as NativeServer
 from actors.ros.actions import CancelResponse, GoalEvent, GoalResponse
@@ -195,6 +196,15 @@ class ActionServer(ActionWork):
     def action_type(self) -> type[Any]:
         """The action type served."""
         return self._action_type
+
+    @property
+    def _goal_handles(self) -> dict[bytes, Any]:
+        # rclpy's record of the goals it holds (until their results expire), which its tests count.
+        return dict(self._session.call(lambda: self._native.goals))
+
+    def get_num_entities(self) -> NumberOfEntities:
+        """What an action server is made of: three services and the timer that expires results."""
+        return NumberOfEntities(num_timers=1, num_services=3)
 
     # -- the catchers: on the runtime's thread, they queue the script's callbacks here -------
 
