@@ -283,7 +283,9 @@ def test_a_refused_param_set_says_why_and_exits_1(graph):
     result = actors(graph, "param", "set", "/minimal_param_node", "my_parameter", "3")
     assert (result.returncode, result.stdout) == (1, "")
     # On stderr, as ros2 param set prints it.
-    assert result.stderr == "Setting parameter failed: wrong type: expected STRING, got INTEGER (3)\n"
+    assert (
+        result.stderr == "Setting parameter failed: Wrong parameter type, expected 'Type.STRING' got 'Type.INTEGER'\n"
+    )
 
 
 @pytest.mark.slow

@@ -97,7 +97,7 @@ async def test_delete_undeclares_a_dynamically_typed_parameter_and_refuses_a_sta
         assert await actors(capsys, "param", "delete", "/tuned", "speed") == (
             1,
             "",
-            "Deleting parameter failed: parameter 'speed' is statically typed: it cannot be unset\n",
+            "Deleting parameter failed: Static parameter cannot be undeclared\n",
         )
         assert rt.node("tuned").get_parameter("speed").value == 0.5
 

@@ -109,11 +109,11 @@ def test_the_exceptions_are_rclpys_under_parameter_error():
     ("param", "reason"),
     [
         (Parameter("model", value="waffle"), "read-only"),
-        (Parameter("speed", value="fast"), "wrong type: expected DOUBLE, got STRING"),
+        (Parameter("speed", value="fast"), "Wrong parameter type, expected 'Type.DOUBLE' got 'Type.STRING'"),
         (Parameter("speed", value=1.5), "out of range [0.0, 1.0]"),
         (Parameter("count", value=11), "out of range [0, 10]"),
         (Parameter("count", value=7), "7 is unlucky"),
-        (Parameter("count"), "statically typed: it cannot be unset"),
+        (Parameter("count"), "Static parameter cannot be undeclared"),
     ],
 )
 async def test_refused_sets_keep_the_old_value_and_say_why(param, reason):
@@ -217,7 +217,7 @@ async def test_overrides_from_spawn_win_and_are_type_checked():
         node = rt.spawn(Tuned, params={"speed": 0.9, "model": "waffle"})
         assert node.get_parameter("speed").value == 0.9
         assert node.get_parameter("model").value == "waffle"  # read-only, but set at launch
-        with pytest.raises(InvalidParameterTypeException, match="wrong type: expected"):
+        with pytest.raises(InvalidParameterTypeException, match="Wrong parameter type, expected"):
             rt.spawn(Tuned, name="other", params={"count": "three"})
 
 
@@ -236,7 +236,7 @@ async def test_declaring_with_a_type_leaves_the_parameter_unset():
             node.declare_parameter("wrong", Parameter.Type.INTEGER)
         assert not node.has_parameter("wrong")
         (refused,) = node.set_parameters([Parameter("port", value="eighty")])
-        assert not refused.successful and "expected INTEGER" in refused.reason
+        assert not refused.successful and "expected 'Type.INTEGER'" in refused.reason
         (accepted,) = node.set_parameters([Parameter("port", value=80)])
         assert accepted.successful and node.get_parameter("port").value == 80
         with pytest.raises(ValueError):

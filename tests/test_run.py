@@ -135,7 +135,7 @@ def test_a_delayed_node_with_a_bad_override_is_a_graph_file_error_not_an_excepti
     assert result.returncode == 2
     assert result.stderr == (
         f"error: {graph}: nodes[0] (nodes.param_talker:MinimalParam): parameter 'my_parameter' of "
-        "/minimal_param_node: wrong type: expected STRING, got INTEGER (3)\n"
+        "/minimal_param_node: Wrong parameter type, expected 'Type.STRING' got 'Type.INTEGER'\n"
     )
 
 
@@ -264,7 +264,7 @@ def test_a_parameter_override_of_the_wrong_type_exits_2(run_module, tmp_path):
     assert result.returncode == 2
     assert result.stderr.strip() == (
         f"error: {graph}: nodes[0] (nodes.param_talker:MinimalParam): parameter 'my_parameter' of "
-        "/minimal_param_node: wrong type: expected STRING, got INTEGER (3)"
+        "/minimal_param_node: Wrong parameter type, expected 'Type.STRING' got 'Type.INTEGER'"
     )
 
 

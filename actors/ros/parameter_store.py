@@ -165,7 +165,7 @@ class ParameterStore:
         if not result.successful:
             error = (
                 InvalidParameterTypeException
-                if result.reason.startswith("wrong type")
+                if result.reason.startswith("Wrong parameter type")
                 else InvalidParameterValueException
             )
             raise error(f"parameter {name!r} of {self._core.fqn}: {result.reason}")
@@ -454,9 +454,9 @@ class ParameterStore:
             pass  # any type goes, NOT_SET too (it undeclares)
         elif given is ParameterType.NOT_SET:
             if param.name in self._values:
-                return f"parameter {param.name!r} is statically typed: it cannot be unset"
+                return "Static parameter cannot be undeclared"  # rclpy's words, as ros2 param prints them
         elif given is not (declared := TYPES[descriptor.type]) and not declared.check(param.value):
-            return f"wrong type: expected {declared.name}, got {given.name} ({param.value!r})"
+            return f"Wrong parameter type, expected 'Type.{declared.name}' got 'Type.{given.name}'"  # rclpy's words
         value = widen(param.value, TYPES[descriptor.type] if descriptor.type else given)
         # Ranges apply to numbers only: a range on a string parameter is ignored, as in rclpy.
         if isinstance(value, int) and not isinstance(value, bool) and descriptor.integer_range:
