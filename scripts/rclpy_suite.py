@@ -10,7 +10,9 @@ installs the overlay (``import rclpy`` is actors), for the real run it only
 records outcomes.  rclpy's tests are read where they are and never copied.
 
 Without ``--real`` it prints actors' counts per file; with it, also real
-rclpy's, and how many of the tests real rclpy passes pass on actors too.
+rclpy's, and how many of the tests real rclpy passes pass on actors too (a test
+is the same on both sides by its id; a parameter that is an enum member is named
+by the member's name there, as the two implementations' enums render otherwise).
 ``--failures`` lists every test that real rclpy passes and actors does not,
 with the line pytest ended it on.  Exit status: 0 after a run, 2 on bad input.
 """
@@ -77,6 +79,16 @@ def pytest_runtest_logreport(report):
         message = crash.message if crash is not None else str(report.longrepr).strip().splitlines()[-1:]
         message = message if isinstance(message, str) else " ".join(message)
     _write(test=report.nodeid, phase=report.when, outcome=report.outcome, message=message[:300])
+
+
+def pytest_make_parametrize_id(config, val, argname):
+    # An enum value is named by its member's name on both sides: pytest names an int-based enum
+    # (actors' ClockType) by its number and a C one (rclpy's) by position, so the same test would
+    # get two ids and could not be compared.
+    name = getattr(val, "name", None)
+    if isinstance(name, str) and hasattr(type(val), "__members__"):
+        return f"{argname}-{name}"
+    return None
 
 
 def pytest_collectreport(report):

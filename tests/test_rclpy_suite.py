@@ -33,7 +33,25 @@ def test_a_context_comes_and_goes():
     assert not rclpy.ok()
 """,
     "test_fails.py": """
+import enum
+
+import pytest
+
+
+class Colour(enum.IntEnum):
+    RED = 1
+
+
+class Shade(enum.Enum):
+    DARK = object()
+
+
 def test_ok():
+    pass
+
+
+@pytest.mark.parametrize("value", [Colour.RED, Shade.DARK])
+def test_enum_parameters_are_named(value):
     pass
 
 
@@ -83,13 +101,19 @@ def test_each_file_is_counted_with_the_overlay_and_beside_another_python(folder,
             "test/test_needs_rclpy.py::test_rclpy_is_the_overlay": "passed",
             "test/test_needs_rclpy.py::test_a_context_comes_and_goes": "passed",
         },
-        "test_fails.py": {"test/test_fails.py::test_ok": "passed", "test/test_fails.py::test_wrong": "failed"},
+        "test_fails.py": {
+            "test/test_fails.py::test_ok": "passed",
+            # An int-based and another enum get their member's name, whatever pytest would make of them.
+            "test/test_fails.py::test_enum_parameters_are_named[value-RED]": "passed",
+            "test/test_fails.py::test_enum_parameters_are_named[value-DARK]": "passed",
+            "test/test_fails.py::test_wrong": "failed",
+        },
     }
     assert outcomes["real"]["test_needs_rclpy.py"] == {}
     rows = {line.split()[0]: line.split()[1:] for line in done.stdout.splitlines()[1:3]}
-    assert rows == {"test_fails.py": ["1/2", "1/2", "1"], "test_needs_rclpy.py": ["2/2", "collect", "error", "0"]}
-    assert "actors: 3 passed of 4 tests run" in done.stdout
-    assert "real rclpy: 1 passed; actors passes 1 of them (100.0 %)" in done.stdout
+    assert rows == {"test_fails.py": ["3/4", "3/4", "3"], "test_needs_rclpy.py": ["2/2", "collect", "error", "0"]}
+    assert "actors: 5 passed of 6 tests run" in done.stdout
+    assert "real rclpy: 3 passed; actors passes 3 of them (100.0 %)" in done.stdout
     # Only what the other python passes is listed as missing: test_wrong fails there too.
     assert "test_wrong" not in done.stdout
 
