@@ -9,7 +9,7 @@ import sys
 import rclpy
 from geometry_msgs.msg import Twist
 from rclpy.node import Node
-from turtlesim.msg import Pose
+from turtlesim_msgs.msg import Pose
 
 
 class Leader(Node):

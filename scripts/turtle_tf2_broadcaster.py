@@ -5,7 +5,7 @@ from geometry_msgs.msg import TransformStamped
 from rclpy.node import Node
 from tf2_ros import TransformBroadcaster
 from tf_transformations import quaternion_from_euler
-from turtlesim.msg import Pose
+from turtlesim_msgs.msg import Pose
 
 
 class TurtleFrame(Node):

@@ -20,7 +20,7 @@ from rclpy.node import Node
 from tf2_ros import TransformException
 from tf2_ros.buffer import Buffer
 from tf2_ros.transform_listener import TransformListener
-from turtlesim.srv import Spawn
+from turtlesim_msgs.srv import Spawn
 
 
 class Follower(Node):

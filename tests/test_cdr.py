@@ -61,7 +61,13 @@ def test_every_shipped_message_has_goldens_or_no_rclpy_package():
     lacking = set(GOLDENS["no_rclpy_type"])
     assert covered | lacking == set(SHIPPED)
     # Only the packages that have no ROS wheel may lack rclpy goldens (tf2_msgs: see test_tf_message_*).
-    no_wheel = {"example_interfaces", "tutorial_interfaces", "tf2_msgs", "statistics_msgs", "turtlesim"}
+    no_wheel = {
+        "example_interfaces",
+        "tutorial_interfaces",
+        "tf2_msgs",
+        "statistics_msgs",
+        "turtlesim_msgs",
+    }
     assert {name.split("/")[0] for name in lacking} <= no_wheel
 
 

@@ -42,9 +42,9 @@ def test_understanding_nodes(turtlesim):
     info = ok(turtlesim, "node", "info", "/turtlesim")
     for line in (
         "    /turtle1/cmd_vel: geometry_msgs/msg/Twist",
-        "    /turtle1/pose: turtlesim/msg/Pose",
-        "    /spawn: turtlesim/srv/Spawn",
-        "    /turtle1/rotate_absolute: turtlesim/action/RotateAbsolute",
+        "    /turtle1/pose: turtlesim_msgs/msg/Pose",
+        "    /spawn: turtlesim_msgs/srv/Spawn",
+        "    /turtle1/rotate_absolute: turtlesim_msgs/action/RotateAbsolute",
     ):
         assert line in info
 
@@ -53,13 +53,13 @@ def test_understanding_topics(turtlesim):
     listed = ok(turtlesim, "topic", "list", "-t")
     for line in (
         "/turtle1/cmd_vel [geometry_msgs/msg/Twist]",
-        "/turtle1/color_sensor [turtlesim/msg/Color]",
-        "/turtle1/pose [turtlesim/msg/Pose]",
+        "/turtle1/color_sensor [turtlesim_msgs/msg/Color]",
+        "/turtle1/pose [turtlesim_msgs/msg/Pose]",
     ):
         assert line in listed
     assert "Subscription count: 1" in ok(turtlesim, "topic", "info", "/turtle1/cmd_vel")
     shown = subprocess.run(
-        [sys.executable, "-m", "actors", "interface", "show", "turtlesim/msg/Pose"],
+        [sys.executable, "-m", "actors", "interface", "show", "turtlesim_msgs/msg/Pose"],
         cwd=ROOT,
         env=python_env(),
         capture_output=True,
@@ -72,7 +72,7 @@ def test_understanding_topics(turtlesim):
         "service",
         "call",
         "/turtle1/teleport_absolute",
-        "turtlesim/srv/TeleportAbsolute",
+        "turtlesim_msgs/srv/TeleportAbsolute",
         "{x: 3.0, y: 3.0, theta: 0.0}",
     )
     assert (pose(turtlesim)["x"], pose(turtlesim)["y"]) == (3.0, 3.0)
@@ -87,6 +87,32 @@ def test_understanding_topics(turtlesim):
     )
     moved = pose(turtlesim)
     assert moved["x"] != 3.0 or moved["theta"] != 0.0  # it drove an arc, for one second
+    assert ok(turtlesim, "topic", "find", "geometry_msgs/msg/Twist") == "/turtle1/cmd_vel\n"
+    # turtlesim publishes each pose once a 16 ms frame: 62.5 Hz on the wall clock, less when loaded
+    rate = re.match(
+        r"average rate: (\d+\.\d{3})\n\tmin: ", ok(turtlesim, "topic", "hz", "/turtle1/pose", "--count", "1")
+    )
+    assert rate and 10.0 < float(rate[1]) < 70.0, rate
+    # a Pose is five float32 after CDR's four-byte header: 24 bytes
+    bandwidth = ok(turtlesim, "topic", "bw", "/turtle1/pose", "--count", "1")
+    assert re.search(
+        r"^\d+\.\d{2} KB/s from \d+ messages\n\tMessage size mean: 0\.02 KB min: 0\.02 KB", bandwidth, re.M
+    )
+    ok(turtlesim, "service", "call", "/reset", "std_srvs/srv/Empty")
+    ok(
+        turtlesim,
+        "topic",
+        "pub",
+        "-t",
+        "3",
+        "-r",
+        "10",
+        "/turtle1/cmd_vel",
+        "geometry_msgs/msg/Twist",
+        "{linear: {x: 2.0}}",
+    )
+    ahead = pose(turtlesim)  # straight on from the reset pose: x grows, y stays
+    assert ahead["x"] > 5.6 and ahead["y"] == pytest.approx(5.544445, abs=1e-6) and ahead["theta"] == 0.0
 
 
 def test_understanding_services(turtlesim):
@@ -95,10 +121,12 @@ def test_understanding_services(turtlesim):
         assert f"{name}\n" in listed
     assert ok(turtlesim, "service", "type", "/clear") == "std_srvs/srv/Empty\n"
     assert ok(turtlesim, "service", "find", "std_srvs/srv/Empty") == "/clear\n/reset\n"
-    spawned = ok(turtlesim, "service", "call", "/spawn", "turtlesim/srv/Spawn", "{x: 2, y: 2, theta: 0.2, name: ''}")
-    assert "turtlesim.srv.Spawn_Response(name='turtle2')" in spawned
+    spawned = ok(
+        turtlesim, "service", "call", "/spawn", "turtlesim_msgs/srv/Spawn", "{x: 2, y: 2, theta: 0.2, name: ''}"
+    )
+    assert "turtlesim_msgs.srv.Spawn_Response(name='turtle2')" in spawned
     assert pose(turtlesim, "turtle2")["x"] == 2.0
-    ok(turtlesim, "service", "call", "/kill", "turtlesim/srv/Kill", "{name: turtle2}")
+    ok(turtlesim, "service", "call", "/kill", "turtlesim_msgs/srv/Kill", "{name: turtle2}")
     assert "/turtle2/pose" not in ok(turtlesim, "topic", "list")
     ok(turtlesim, "service", "call", "/clear", "std_srvs/srv/Empty")
     turtlesim.wait_for("Clearing turtlesim.")
@@ -116,7 +144,7 @@ def test_understanding_parameters(turtlesim):
 
 
 def test_understanding_actions(turtlesim):
-    assert "/turtle1/rotate_absolute [turtlesim/action/RotateAbsolute]\n" in ok(turtlesim, "action", "list", "-t")
+    assert "/turtle1/rotate_absolute [turtlesim_msgs/action/RotateAbsolute]\n" in ok(turtlesim, "action", "list", "-t")
     info = ok(turtlesim, "action", "info", "/turtle1/rotate_absolute")
     assert "Action servers: 1\n    /turtlesim\n" in info
     result = ok(
@@ -124,7 +152,7 @@ def test_understanding_actions(turtlesim):
         "action",
         "send_goal",
         "/turtle1/rotate_absolute",
-        "turtlesim/action/RotateAbsolute",
+        "turtlesim_msgs/action/RotateAbsolute",
         "{theta: 1.57}",
         "--feedback",
     )

@@ -15,9 +15,9 @@ import pytest
 from actors import Node, Runtime
 from interfaces.geometry_msgs.msg import Twist
 from interfaces.std_srvs.srv import Empty
-from interfaces.turtlesim.action import RotateAbsolute
-from interfaces.turtlesim.msg import Color, Pose
-from interfaces.turtlesim.srv import Kill, SetPen, Spawn, TeleportAbsolute, TeleportRelative
+from interfaces.turtlesim_msgs.action import RotateAbsolute
+from interfaces.turtlesim_msgs.msg import Color, Pose
+from interfaces.turtlesim_msgs.srv import Kill, SetPen, Spawn, TeleportAbsolute, TeleportRelative
 from world.canvas import METER, png_bytes
 from world.mimic import Mimic
 from world.teleop_key import TeleopTurtle

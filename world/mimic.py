@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from actors import Node
 from interfaces.geometry_msgs.msg import Twist
-from interfaces.turtlesim.msg import Pose
+from interfaces.turtlesim_msgs.msg import Pose
 
 __all__ = ["Mimic"]
 

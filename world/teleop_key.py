@@ -28,7 +28,7 @@ import anyio
 from actors import Node
 from actors.errors import ActionError
 from interfaces.geometry_msgs.msg import Twist
-from interfaces.turtlesim.action import RotateAbsolute
+from interfaces.turtlesim_msgs.action import RotateAbsolute
 
 __all__ = ["BANNER", "GOALS", "TeleopTurtle"]
 

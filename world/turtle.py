@@ -31,9 +31,9 @@ import numpy as np
 from actors import CancelResponse, QoSProfile, ServerGoalHandle
 from actors.errors import MessageRefused
 from interfaces.geometry_msgs.msg import Twist
-from interfaces.turtlesim.action import RotateAbsolute
-from interfaces.turtlesim.msg import Color, Pose
-from interfaces.turtlesim.srv import SetPen, TeleportAbsolute, TeleportRelative
+from interfaces.turtlesim_msgs.action import RotateAbsolute
+from interfaces.turtlesim_msgs.msg import Color, Pose
+from interfaces.turtlesim_msgs.srv import SetPen, TeleportAbsolute, TeleportRelative
 
 if TYPE_CHECKING:
     from .canvas import Canvas

@@ -29,7 +29,7 @@ from actors.errors import InvalidNameError
 from actors.ros.names import expand
 from interfaces.rcl_interfaces.msg import IntegerRange, ParameterDescriptor
 from interfaces.std_srvs.srv import Empty
-from interfaces.turtlesim.srv import Kill, Spawn
+from interfaces.turtlesim_msgs.srv import Kill, Spawn
 
 from .canvas import METER, SIZE, Canvas, write_png
 from .scene import scene_hosts

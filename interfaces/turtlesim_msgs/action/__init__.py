@@ -1,4 +1,4 @@
-"""Generated from turtlesim/action/*.action by `python -m actors interface generate`; do not edit."""
+"""Generated from turtlesim_msgs/action/*.action by `python -m actors interface generate`; do not edit."""
 
 from typing import Annotated, ClassVar
 
@@ -30,9 +30,9 @@ _int8 = Annotated[int, msgspec.Meta(ge=-128, le=127)]
 
 
 class RotateAbsolute_Goal(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/action/RotateAbsolute_Goal``."""
+    """``turtlesim_msgs/action/RotateAbsolute_Goal``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_Goal"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute_Goal"
     __ros_definition__: ClassVar[str] = (
         "# The desired heading in radians\n"
         "float32 theta\n"
@@ -42,9 +42,9 @@ class RotateAbsolute_Goal(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tr
 
 
 class RotateAbsolute_Result(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/action/RotateAbsolute_Result``."""
+    """``turtlesim_msgs/action/RotateAbsolute_Result``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_Result"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute_Result"
     __ros_definition__: ClassVar[str] = (
         "# The angular displacement in radians to the starting position\n"
         "float32 delta\n"
@@ -54,9 +54,9 @@ class RotateAbsolute_Result(msgspec.Struct, kw_only=True, forbid_unknown_fields=
 
 
 class RotateAbsolute_Feedback(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/action/RotateAbsolute_Feedback``."""
+    """``turtlesim_msgs/action/RotateAbsolute_Feedback``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_Feedback"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute_Feedback"
     __ros_definition__: ClassVar[str] = (
         "# The remaining rotation in radians\n"
         "float32 remaining\n"
@@ -66,12 +66,12 @@ class RotateAbsolute_Feedback(msgspec.Struct, kw_only=True, forbid_unknown_field
 
 
 class RotateAbsolute_SendGoal_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/action/RotateAbsolute_SendGoal_Request``."""
+    """``turtlesim_msgs/action/RotateAbsolute_SendGoal_Request``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_SendGoal_Request"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute_SendGoal_Request"
     __ros_definition__: ClassVar[str] = (
         "unique_identifier_msgs/UUID goal_id\n"
-        "turtlesim/action/RotateAbsolute_Goal goal\n"
+        "turtlesim_msgs/action/RotateAbsolute_Goal goal\n"
     )
 
     goal_id: UUID = msgspec.field(default_factory=UUID)
@@ -79,9 +79,9 @@ class RotateAbsolute_SendGoal_Request(msgspec.Struct, kw_only=True, forbid_unkno
 
 
 class RotateAbsolute_SendGoal_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/action/RotateAbsolute_SendGoal_Response``."""
+    """``turtlesim_msgs/action/RotateAbsolute_SendGoal_Response``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_SendGoal_Response"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute_SendGoal_Response"
     __ros_definition__: ClassVar[str] = (
         "bool accepted\n"
         "builtin_interfaces/Time stamp\n"
@@ -92,13 +92,13 @@ class RotateAbsolute_SendGoal_Response(msgspec.Struct, kw_only=True, forbid_unkn
 
 
 class RotateAbsolute_SendGoal_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/action/RotateAbsolute_SendGoal_Event``."""
+    """``turtlesim_msgs/action/RotateAbsolute_SendGoal_Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_SendGoal_Event"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute_SendGoal_Event"
     __ros_definition__: ClassVar[str] = (
         "service_msgs/ServiceEventInfo info\n"
-        "turtlesim/action/RotateAbsolute_SendGoal_Request[<=1] request\n"
-        "turtlesim/action/RotateAbsolute_SendGoal_Response[<=1] response\n"
+        "turtlesim_msgs/action/RotateAbsolute_SendGoal_Request[<=1] request\n"
+        "turtlesim_msgs/action/RotateAbsolute_SendGoal_Response[<=1] response\n"
     )
 
     info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
@@ -107,12 +107,12 @@ class RotateAbsolute_SendGoal_Event(msgspec.Struct, kw_only=True, forbid_unknown
 
 
 class RotateAbsolute_SendGoal:
-    """``turtlesim/action/RotateAbsolute_SendGoal``: its ``Request`` and ``Response`` messages, and ``Event``."""
+    """``turtlesim_msgs/action/RotateAbsolute_SendGoal``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_SendGoal"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute_SendGoal"
     __ros_definition__: ClassVar[str] = (
         "unique_identifier_msgs/UUID goal_id\n"
-        "turtlesim/action/RotateAbsolute_Goal goal\n"
+        "turtlesim_msgs/action/RotateAbsolute_Goal goal\n"
         "---\n"
         "bool accepted\n"
         "builtin_interfaces/Time stamp\n"
@@ -123,9 +123,9 @@ class RotateAbsolute_SendGoal:
 
 
 class RotateAbsolute_GetResult_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/action/RotateAbsolute_GetResult_Request``."""
+    """``turtlesim_msgs/action/RotateAbsolute_GetResult_Request``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_GetResult_Request"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute_GetResult_Request"
     __ros_definition__: ClassVar[str] = (
         "unique_identifier_msgs/UUID goal_id\n"
     )
@@ -134,12 +134,12 @@ class RotateAbsolute_GetResult_Request(msgspec.Struct, kw_only=True, forbid_unkn
 
 
 class RotateAbsolute_GetResult_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/action/RotateAbsolute_GetResult_Response``."""
+    """``turtlesim_msgs/action/RotateAbsolute_GetResult_Response``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_GetResult_Response"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute_GetResult_Response"
     __ros_definition__: ClassVar[str] = (
         "int8 status\n"
-        "turtlesim/action/RotateAbsolute_Result result\n"
+        "turtlesim_msgs/action/RotateAbsolute_Result result\n"
     )
 
     status: _int8 = 0
@@ -147,13 +147,13 @@ class RotateAbsolute_GetResult_Response(msgspec.Struct, kw_only=True, forbid_unk
 
 
 class RotateAbsolute_GetResult_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/action/RotateAbsolute_GetResult_Event``."""
+    """``turtlesim_msgs/action/RotateAbsolute_GetResult_Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_GetResult_Event"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute_GetResult_Event"
     __ros_definition__: ClassVar[str] = (
         "service_msgs/ServiceEventInfo info\n"
-        "turtlesim/action/RotateAbsolute_GetResult_Request[<=1] request\n"
-        "turtlesim/action/RotateAbsolute_GetResult_Response[<=1] response\n"
+        "turtlesim_msgs/action/RotateAbsolute_GetResult_Request[<=1] request\n"
+        "turtlesim_msgs/action/RotateAbsolute_GetResult_Response[<=1] response\n"
     )
 
     info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
@@ -162,14 +162,14 @@ class RotateAbsolute_GetResult_Event(msgspec.Struct, kw_only=True, forbid_unknow
 
 
 class RotateAbsolute_GetResult:
-    """``turtlesim/action/RotateAbsolute_GetResult``: its ``Request`` and ``Response`` messages, and ``Event``."""
+    """``turtlesim_msgs/action/RotateAbsolute_GetResult``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_GetResult"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute_GetResult"
     __ros_definition__: ClassVar[str] = (
         "unique_identifier_msgs/UUID goal_id\n"
         "---\n"
         "int8 status\n"
-        "turtlesim/action/RotateAbsolute_Result result\n"
+        "turtlesim_msgs/action/RotateAbsolute_Result result\n"
     )
     Request = RotateAbsolute_GetResult_Request
     Response = RotateAbsolute_GetResult_Response
@@ -177,12 +177,12 @@ class RotateAbsolute_GetResult:
 
 
 class RotateAbsolute_FeedbackMessage(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/action/RotateAbsolute_FeedbackMessage``."""
+    """``turtlesim_msgs/action/RotateAbsolute_FeedbackMessage``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute_FeedbackMessage"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute_FeedbackMessage"
     __ros_definition__: ClassVar[str] = (
         "unique_identifier_msgs/UUID goal_id\n"
-        "turtlesim/action/RotateAbsolute_Feedback feedback\n"
+        "turtlesim_msgs/action/RotateAbsolute_Feedback feedback\n"
     )
 
     goal_id: UUID = msgspec.field(default_factory=UUID)
@@ -190,12 +190,12 @@ class RotateAbsolute_FeedbackMessage(msgspec.Struct, kw_only=True, forbid_unknow
 
 
 class RotateAbsolute:
-    """``turtlesim/action/RotateAbsolute``: ``Goal``, ``Result``, ``Feedback``.
+    """``turtlesim_msgs/action/RotateAbsolute``: ``Goal``, ``Result``, ``Feedback``.
 
     ``Impl`` holds the types its wire protocol uses.
     """
 
-    __ros_type__: ClassVar[str] = "turtlesim/action/RotateAbsolute"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/action/RotateAbsolute"
     __ros_definition__: ClassVar[str] = (
         "# The desired heading in radians\n"
         "float32 theta\n"

@@ -1,4 +1,4 @@
-"""Generated from turtlesim/msg/*.msg by `python -m actors interface generate`; do not edit."""
+"""Generated from turtlesim_msgs/msg/*.msg by `python -m actors interface generate`; do not edit."""
 
 from typing import Annotated, ClassVar
 
@@ -13,9 +13,9 @@ _uint8 = Annotated[int, msgspec.Meta(ge=0, le=255)]
 
 
 class Color(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/msg/Color``."""
+    """``turtlesim_msgs/msg/Color``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/msg/Color"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/msg/Color"
     __ros_definition__: ClassVar[str] = (
         "uint8 r\n"
         "uint8 g\n"
@@ -28,9 +28,9 @@ class Color(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
 
 class Pose(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/msg/Pose``."""
+    """``turtlesim_msgs/msg/Pose``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/msg/Pose"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/msg/Pose"
     __ros_definition__: ClassVar[str] = (
         "float32 x\n"
         "float32 y\n"

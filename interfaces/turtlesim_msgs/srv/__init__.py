@@ -1,4 +1,4 @@
-"""Generated from turtlesim/srv/*.srv by `python -m actors interface generate`; do not edit."""
+"""Generated from turtlesim_msgs/srv/*.srv by `python -m actors interface generate`; do not edit."""
 
 from typing import Annotated, ClassVar
 
@@ -33,9 +33,9 @@ _uint8 = Annotated[int, msgspec.Meta(ge=0, le=255)]
 
 
 class Kill_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/Kill_Request``."""
+    """``turtlesim_msgs/srv/Kill_Request``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/Kill_Request"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/Kill_Request"
     __ros_definition__: ClassVar[str] = (
         "string name\n"
     )
@@ -44,20 +44,20 @@ class Kill_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
 
 class Kill_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/Kill_Response``."""
+    """``turtlesim_msgs/srv/Kill_Response``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/Kill_Response"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/Kill_Response"
     __ros_definition__: ClassVar[str] = ""
 
 
 class Kill_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/Kill_Event``."""
+    """``turtlesim_msgs/srv/Kill_Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/Kill_Event"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/Kill_Event"
     __ros_definition__: ClassVar[str] = (
         "service_msgs/ServiceEventInfo info\n"
-        "turtlesim/srv/Kill_Request[<=1] request\n"
-        "turtlesim/srv/Kill_Response[<=1] response\n"
+        "turtlesim_msgs/srv/Kill_Request[<=1] request\n"
+        "turtlesim_msgs/srv/Kill_Response[<=1] response\n"
     )
 
     info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
@@ -66,9 +66,9 @@ class Kill_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
 
 class Kill:
-    """``turtlesim/srv/Kill``: its ``Request`` and ``Response`` messages, and ``Event``."""
+    """``turtlesim_msgs/srv/Kill``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/Kill"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/Kill"
     __ros_definition__: ClassVar[str] = (
         "string name\n"
         "---\n"
@@ -79,9 +79,9 @@ class Kill:
 
 
 class SetPen_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/SetPen_Request``."""
+    """``turtlesim_msgs/srv/SetPen_Request``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/SetPen_Request"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/SetPen_Request"
     __ros_definition__: ClassVar[str] = (
         "uint8 r\n"
         "uint8 g\n"
@@ -98,20 +98,20 @@ class SetPen_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
 
 class SetPen_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/SetPen_Response``."""
+    """``turtlesim_msgs/srv/SetPen_Response``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/SetPen_Response"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/SetPen_Response"
     __ros_definition__: ClassVar[str] = ""
 
 
 class SetPen_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/SetPen_Event``."""
+    """``turtlesim_msgs/srv/SetPen_Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/SetPen_Event"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/SetPen_Event"
     __ros_definition__: ClassVar[str] = (
         "service_msgs/ServiceEventInfo info\n"
-        "turtlesim/srv/SetPen_Request[<=1] request\n"
-        "turtlesim/srv/SetPen_Response[<=1] response\n"
+        "turtlesim_msgs/srv/SetPen_Request[<=1] request\n"
+        "turtlesim_msgs/srv/SetPen_Response[<=1] response\n"
     )
 
     info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
@@ -120,9 +120,9 @@ class SetPen_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
 
 class SetPen:
-    """``turtlesim/srv/SetPen``: its ``Request`` and ``Response`` messages, and ``Event``."""
+    """``turtlesim_msgs/srv/SetPen``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/SetPen"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/SetPen"
     __ros_definition__: ClassVar[str] = (
         "uint8 r\n"
         "uint8 g\n"
@@ -137,9 +137,9 @@ class SetPen:
 
 
 class Spawn_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/Spawn_Request``."""
+    """``turtlesim_msgs/srv/Spawn_Request``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/Spawn_Request"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/Spawn_Request"
     __ros_definition__: ClassVar[str] = (
         "float32 x\n"
         "float32 y\n"
@@ -154,9 +154,9 @@ class Spawn_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
 
 class Spawn_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/Spawn_Response``."""
+    """``turtlesim_msgs/srv/Spawn_Response``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/Spawn_Response"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/Spawn_Response"
     __ros_definition__: ClassVar[str] = (
         "string name\n"
     )
@@ -165,13 +165,13 @@ class Spawn_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
 
 class Spawn_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/Spawn_Event``."""
+    """``turtlesim_msgs/srv/Spawn_Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/Spawn_Event"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/Spawn_Event"
     __ros_definition__: ClassVar[str] = (
         "service_msgs/ServiceEventInfo info\n"
-        "turtlesim/srv/Spawn_Request[<=1] request\n"
-        "turtlesim/srv/Spawn_Response[<=1] response\n"
+        "turtlesim_msgs/srv/Spawn_Request[<=1] request\n"
+        "turtlesim_msgs/srv/Spawn_Response[<=1] response\n"
     )
 
     info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
@@ -180,9 +180,9 @@ class Spawn_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
 
 class Spawn:
-    """``turtlesim/srv/Spawn``: its ``Request`` and ``Response`` messages, and ``Event``."""
+    """``turtlesim_msgs/srv/Spawn``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/Spawn"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/Spawn"
     __ros_definition__: ClassVar[str] = (
         "float32 x\n"
         "float32 y\n"
@@ -197,9 +197,9 @@ class Spawn:
 
 
 class TeleportAbsolute_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/TeleportAbsolute_Request``."""
+    """``turtlesim_msgs/srv/TeleportAbsolute_Request``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/TeleportAbsolute_Request"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/TeleportAbsolute_Request"
     __ros_definition__: ClassVar[str] = (
         "float32 x\n"
         "float32 y\n"
@@ -212,20 +212,20 @@ class TeleportAbsolute_Request(msgspec.Struct, kw_only=True, forbid_unknown_fiel
 
 
 class TeleportAbsolute_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/TeleportAbsolute_Response``."""
+    """``turtlesim_msgs/srv/TeleportAbsolute_Response``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/TeleportAbsolute_Response"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/TeleportAbsolute_Response"
     __ros_definition__: ClassVar[str] = ""
 
 
 class TeleportAbsolute_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/TeleportAbsolute_Event``."""
+    """``turtlesim_msgs/srv/TeleportAbsolute_Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/TeleportAbsolute_Event"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/TeleportAbsolute_Event"
     __ros_definition__: ClassVar[str] = (
         "service_msgs/ServiceEventInfo info\n"
-        "turtlesim/srv/TeleportAbsolute_Request[<=1] request\n"
-        "turtlesim/srv/TeleportAbsolute_Response[<=1] response\n"
+        "turtlesim_msgs/srv/TeleportAbsolute_Request[<=1] request\n"
+        "turtlesim_msgs/srv/TeleportAbsolute_Response[<=1] response\n"
     )
 
     info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
@@ -234,9 +234,9 @@ class TeleportAbsolute_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields
 
 
 class TeleportAbsolute:
-    """``turtlesim/srv/TeleportAbsolute``: its ``Request`` and ``Response`` messages, and ``Event``."""
+    """``turtlesim_msgs/srv/TeleportAbsolute``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/TeleportAbsolute"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/TeleportAbsolute"
     __ros_definition__: ClassVar[str] = (
         "float32 x\n"
         "float32 y\n"
@@ -249,9 +249,9 @@ class TeleportAbsolute:
 
 
 class TeleportRelative_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/TeleportRelative_Request``."""
+    """``turtlesim_msgs/srv/TeleportRelative_Request``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/TeleportRelative_Request"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/TeleportRelative_Request"
     __ros_definition__: ClassVar[str] = (
         "float32 linear\n"
         "float32 angular\n"
@@ -262,20 +262,20 @@ class TeleportRelative_Request(msgspec.Struct, kw_only=True, forbid_unknown_fiel
 
 
 class TeleportRelative_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/TeleportRelative_Response``."""
+    """``turtlesim_msgs/srv/TeleportRelative_Response``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/TeleportRelative_Response"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/TeleportRelative_Response"
     __ros_definition__: ClassVar[str] = ""
 
 
 class TeleportRelative_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
-    """``turtlesim/srv/TeleportRelative_Event``."""
+    """``turtlesim_msgs/srv/TeleportRelative_Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/TeleportRelative_Event"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/TeleportRelative_Event"
     __ros_definition__: ClassVar[str] = (
         "service_msgs/ServiceEventInfo info\n"
-        "turtlesim/srv/TeleportRelative_Request[<=1] request\n"
-        "turtlesim/srv/TeleportRelative_Response[<=1] response\n"
+        "turtlesim_msgs/srv/TeleportRelative_Request[<=1] request\n"
+        "turtlesim_msgs/srv/TeleportRelative_Response[<=1] response\n"
     )
 
     info: ServiceEventInfo = msgspec.field(default_factory=ServiceEventInfo)
@@ -284,9 +284,9 @@ class TeleportRelative_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields
 
 
 class TeleportRelative:
-    """``turtlesim/srv/TeleportRelative``: its ``Request`` and ``Response`` messages, and ``Event``."""
+    """``turtlesim_msgs/srv/TeleportRelative``: its ``Request`` and ``Response`` messages, and ``Event``."""
 
-    __ros_type__: ClassVar[str] = "turtlesim/srv/TeleportRelative"
+    __ros_type__: ClassVar[str] = "turtlesim_msgs/srv/TeleportRelative"
     __ros_definition__: ClassVar[str] = (
         "float32 linear\n"
         "float32 angular\n"

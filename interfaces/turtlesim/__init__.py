@@ -1,1 +1,0 @@
-"""The turtlesim interface package: ``interfaces.turtlesim.msg``, ``.srv`` and ``.action``."""

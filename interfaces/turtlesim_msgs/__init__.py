@@ -1,0 +1,1 @@
+"""The turtlesim_msgs interface package: ``interfaces.turtlesim_msgs.msg``, ``.srv`` and ``.action``."""
