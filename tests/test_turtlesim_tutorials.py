@@ -1,7 +1,7 @@
 """The beginner CLI tutorials, page by page in our words: their commands, in order, against a running turtlesim.
 
 The pages: Understanding nodes, topics, services, parameters and actions, Recording and playing back
-data.  (Using turtlesim's teleop is tests/test_world_turtlesim.py's and test_compat_tf2.py's.)
+data.  (Using turtlesim: its executables here; its teleop is tests/test_world_turtlesim.py's and test_compat_tf2.py's.)
 """
 
 from __future__ import annotations
@@ -35,6 +35,20 @@ def turtlesim(tmp_path_factory: pytest.TempPathFactory) -> Iterator[GraphProcess
 def pose(graph: GraphProcess, turtle: str = "turtle1") -> dict[str, float]:
     text = ok(graph, "topic", "echo", f"/{turtle}/pose", "--once")
     return {key: float(value) for key, value in re.findall(r"^(\w+): (\S+)$", text, re.M)}
+
+
+def test_using_turtlesim():
+    listed = subprocess.run(
+        [sys.executable, "-m", "actors", "pkg", "executables", "turtlesim"],
+        cwd=ROOT,
+        env=python_env(),
+        capture_output=True,
+        text=True,
+        timeout=30,
+    )
+    assert listed.stdout == (
+        "turtlesim draw_square\nturtlesim mimic\nturtlesim turtle_teleop_key\nturtlesim turtlesim_node\n"
+    ), listed.stderr
 
 
 def test_understanding_nodes(turtlesim):

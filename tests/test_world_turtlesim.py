@@ -19,6 +19,7 @@ from interfaces.turtlesim_msgs.action import RotateAbsolute
 from interfaces.turtlesim_msgs.msg import Color, Pose
 from interfaces.turtlesim_msgs.srv import Kill, SetPen, Spawn, TeleportAbsolute, TeleportRelative
 from world.canvas import METER, png_bytes
+from world.draw_square import DrawSquare
 from world.mimic import Mimic
 from world.teleop_key import TeleopTurtle
 from world.turtlesim import BACKGROUND, WORLD_SIZE, Turtlesim
@@ -381,3 +382,25 @@ async def test_mimic_makes_the_second_turtlesim_copy_the_first():
     leader, follower = watcher.poses["turtlesim1/turtle1"][-1], watcher.poses["turtlesim2/turtle1"][-1]
     assert leader[:3] != (CENTRE, CENTRE, 0.0)
     assert math.dist(leader[:2], follower[:2]) < 0.1  # the same arc, a frame or two behind
+
+
+async def test_draw_square_resets_then_drives_a_two_metre_square(caplog):
+    caplog.set_level(logging.INFO)
+    async with Runtime() as rt:
+        rt.spawn(Turtlesim)
+        watcher = rt.spawn(Watcher, ["turtle1"])
+        off_centre = Twist()
+        off_centre.angular.z = 1.0
+        watcher.pubs["turtle1"].publish(off_centre)  # the reset puts it back before the square starts
+        await anyio.sleep(0.5)
+        rt.spawn(DrawSquare)
+        await anyio.sleep(26.0)  # four sides of 2 s and four quarter turns of ~3.9 s, with stops between
+    corners = [(CENTRE + 2, CENTRE), (CENTRE + 2, CENTRE + 2), (CENTRE, CENTRE + 2), (CENTRE, CENTRE)]
+    path = [p[:2] for p in watcher.poses["turtle1"]]
+    seen = 0
+    for corner in corners:  # round the square anticlockwise, in order, back where it began
+        seen = min(range(seen, len(path)), key=lambda i, c=corner: math.dist(path[i], c))
+        assert math.dist(path[seen], corner) < 0.15, (corner, path[seen])
+    goals = [r.getMessage() for r in caplog.records if r.getMessage().startswith("New goal")]
+    assert goals[0] == f"New goal [{CENTRE + 2:f} {CENTRE:f}, 0.000000]"
+    assert goals[1].endswith(", 1.570796]")  # a quarter turn by the program's PI, 3.141592
