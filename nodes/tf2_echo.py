@@ -14,16 +14,14 @@ from __future__ import annotations
 import math
 import sys
 
-from actors import DurabilityPolicy, Node, QoSProfile
+from actors import Node
 from actors.errors import TransformException
-from actors.ros.tf_buffer import BufferCore
 from actors.ros.time import Time
 from interfaces.geometry_msgs.msg import TransformStamped
-from interfaces.tf2_msgs.msg import TFMessage
+
+from .tf_feed import feed
 
 __all__ = ["Tf2Echo", "echo_text", "matrix", "roll_pitch_yaw", "main"]
-
-_AUTHORITY = "default_authority"
 
 
 def matrix(x: float, y: float, z: float, w: float) -> list[list[float]]:
@@ -76,20 +74,9 @@ class Tf2Echo(Node):
         self.source = self.declare_parameter("source_frame", "").value
         self.target = self.declare_parameter("target_frame", "").value
         rate = self.declare_parameter("echo_rate", 1.0).value
-        self.buffer = BufferCore()
-        self.create_subscription(TFMessage, "/tf", self._dynamic, QoSProfile(depth=100))
-        static = QoSProfile(depth=100, durability=DurabilityPolicy.TRANSIENT_LOCAL)
-        self.create_subscription(TFMessage, "/tf_static", self._static, static)
+        self.buffer = feed(self)
         self.found = False
         self.create_timer(1.0 / rate, self.echo)
-
-    def _dynamic(self, message: TFMessage) -> None:
-        for transform in message.transforms:
-            self.buffer.set_transform(transform, _AUTHORITY)
-
-    def _static(self, message: TFMessage) -> None:
-        for transform in message.transforms:
-            self.buffer.set_transform_static(transform, _AUTHORITY)
 
     def echo(self) -> None:
         """One tick: wait for the transform, then print it (or the failure, and the frames known)."""

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import logging
 import math
+import re
 
 import anyio
 import numpy as np
@@ -25,6 +26,7 @@ from interfaces.geometry_msgs.msg import TransformStamped
 from interfaces.tf2_msgs.msg import TFMessage
 from nodes.static_transform_publisher import StaticTransformPublisher, parse_args
 from nodes.tf2_echo import Tf2Echo
+from nodes.view_frames import ViewFrames, frames_dot
 
 NS = 1_000_000_000
 
@@ -289,3 +291,56 @@ async def test_static_transform_publisher_reads_the_real_command_line_and_latche
     text = "\n".join(r.getMessage() for r in caplog.records)
     assert "translation: ('1.000000', '0.000000', '0.000000')\nrotation: ('0.000000', '0.000000', '0.707107'" in text
     assert "from 'world' to 'mystatic'" in text
+
+
+class MovingWheel(Node):
+    """Broadcasts base_link -> wheel on /tf at 10 Hz, as a dynamic broadcaster does."""
+
+    def __init__(self) -> None:
+        super().__init__("moving_wheel")
+        self.pub = self.create_publisher(TFMessage, "/tf", 100)
+        self.create_timer(0.1, self.tick)
+
+    def tick(self) -> None:
+        now = self.get_clock().now().nanoseconds / NS
+        self.pub.publish(TFMessage(transforms=[transform("base_link", "wheel", now, (0.0, 0.2, 0.0), yaw(now))]))
+
+
+@pytest.mark.virtual_time
+async def test_view_frames_writes_the_tree_as_graphviz_and_a_picture(tmp_path, caplog, monkeypatch):
+    import xml.etree.ElementTree as ET
+
+    caplog.set_level(logging.INFO, logger="actors")
+    monkeypatch.setattr("shutil.which", lambda name: None)  # the picture drawn here, not by Graphviz
+    async with Runtime() as rt:
+        rt.spawn(StaticFrames, transform("world", "base_link", 0.0), transform("base_link", "camera", 0.0))
+        rt.spawn(MovingWheel)
+        viewer = rt.spawn(ViewFrames, params={"wait_time": 2.0, "output": str(tmp_path / "frames")})
+        await anyio.sleep(3.0)
+    gv, svg = viewer.written
+    assert (gv, svg) == (tmp_path / "frames.gv", tmp_path / "frames.svg")
+    assert [r.getMessage() for r in caplog.records if r.name.endswith("view_frames")] == [
+        "Listening to tf data for 2.0 seconds...",
+        "Generating graph...",
+        f"Exporting graph in {svg} file...",
+    ]
+    dot = gv.read_text()
+    edges = set(re.findall(r'^"(\w+)" -> "(\w+)"\[', dot, re.M))
+    assert edges == {("world", "base_link"), ("base_link", "camera"), ("base_link", "wheel")}
+    wheel = re.search(r'"base_link" -> "wheel"\[label=" ([^"]*)"\]', dot)
+    # 19 stamps from 0.1 s to 1.9 s: tf2's rate is their count over their span; YAML's floats printed
+    assert wheel and wheel[1] == (
+        "Broadcaster: default_authority\\nAverage rate: 10.556\\nBuffer length: 1.8\\n"
+        "Most recent transform: 1.9\\nOldest transform: 0.1\\n"
+    )
+    assert dot.endswith('"Recorded at time: 2.0"[ shape=plaintext ] ;\n}->"world";\n}')
+    assert frames_dot({}, 2.0) == 'digraph G { "No tf data received" }'
+    tree = ET.fromstring(svg.read_text())
+    boxes = {}
+    for text in tree.iter("{http://www.w3.org/2000/svg}text"):
+        if text.get("font-size") == "14":
+            boxes[text.text] = (float(text.get("x")), float(text.get("y")))
+    assert set(boxes) == {"world", "base_link", "camera", "wheel"}
+    # the root on top, its child a row under it, the two leaves a row lower, side by side
+    assert boxes["world"][1] < boxes["base_link"][1] < boxes["camera"][1] == boxes["wheel"][1]
+    assert boxes["camera"][0] < boxes["base_link"][0] < boxes["wheel"][0]
