@@ -1,7 +1,9 @@
 """The beginner CLI tutorials, page by page in our words: their commands, in order, against a running turtlesim.
 
-The pages: Understanding nodes, topics, services, parameters and actions, Recording and playing back
-data.  (Using turtlesim: its executables here; its teleop is tests/test_world_turtlesim.py's and test_compat_tf2.py's.)
+The pages: Using turtlesim (its executables; its teleop is tests/test_world_turtlesim.py's and
+test_compat_tf2.py's), Understanding nodes, topics, services, parameters and actions, Using
+rqt_console (the log level it teaches; the live view stands for rqt), Launching nodes, Recording
+and playing back data.
 """
 
 from __future__ import annotations
@@ -202,6 +204,51 @@ def test_recording_and_playing_back_data(turtlesim, tmp_path):
     assert (played.returncode, played.stderr) == (0, f"played 2 message(s) from {bag}\n")
     moved = pose(turtlesim)
     assert (moved["x"], moved["y"]) != (pytest.approx(5.544444), pytest.approx(5.544444))  # the replay drove it
+
+
+DRIVE = """
+import rclpy
+from geometry_msgs.msg import Twist
+
+rclpy.init()
+node = rclpy.create_node("drive")
+publisher = node.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+ahead = Twist()
+ahead.linear.x = 2.0
+node.create_timer(1.0, lambda: publisher.publish(ahead))
+rclpy.spin(node)
+"""
+
+
+def test_using_rqt_console_log_levels(tmp_path):
+    # The page starts turtlesim at WARN and drives it into the wall once a second (topic pub -r 1).
+    script = tmp_path / "drive.py"
+    script.write_text(DRIVE)
+    partner = "turtlesim turtlesim_node --ros-args --log-level WARN"
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "actors",
+            "run",
+            "--clock",
+            "virtual",
+            "--duration",
+            "4",
+            "--with",
+            partner,
+            str(script),
+        ],
+        cwd=ROOT,
+        env=python_env(),
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert done.returncode == 0, done.stderr
+    lines = done.stderr.splitlines()
+    assert lines and all(line.startswith("[WARN] ") for line in lines), lines[:3]  # no INFO start-up lines
+    assert "[turtlesim]: Oh no! I hit the wall! (Clamping from [x=" in lines[0]
 
 
 LAUNCH = """

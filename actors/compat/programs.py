@@ -31,6 +31,7 @@ from actors.compat.session import Session
 from actors.errors import PackageError
 from actors.launch.packages import Executable, find_executable, find_package
 from actors.launch.rosargs import parse
+from actors.ros.log import set_logger_level
 from actors.ros.node import Node
 
 __all__ = [
@@ -150,6 +151,11 @@ def spawn_native(
     ros_args, _ = parse(argv)
     setup = ros_args.for_node(default_node_name(cls) or executable, None)
     given = {**(params or {}), **setup.params}
+    # Before the spawn: a constructor's own log lines (turtlesim's "Starting ...") obey the level.
+    # The default level is this program's node's alone: its partners share the process, not its arguments.
+    own_logger = f"{setup.namespace.strip('/')}/{setup.name}".strip("/").replace("/", ".")
+    for logger, level in ros_args.log_levels.items():
+        set_logger_level(logger or own_logger, level)
     return session.call(
         lambda: session.runtime.spawn(cls, name=setup.name, namespace=setup.namespace, params=given, remap=setup.remap)
     )
