@@ -79,3 +79,10 @@ def test_init_records_the_signal_handlers_and_shutdown_forgets_them():
     assert signals.get_current_signal_handlers_options() == signals.SignalHandlerOptions.SIGINT
     signals.uninstall_signal_handlers()
     assert signals.get_current_signal_handlers_options() == signals.SignalHandlerOptions.NO
+
+
+def test_an_undecodable_argument_fails_init_as_in_rclpy():
+    context = rclpy.Context()
+    with pytest.raises(UnicodeEncodeError):
+        rclpy.init(args=["prog.py", "caf\udcc3\udca9"], context=context)  # bytes a wrong locale could not decode
+    assert not context.ok()

@@ -72,15 +72,19 @@ class Context:
     ) -> None:
         """Initialize: read the ROS arguments of ``args`` (``sys.argv`` if None) and bind a session.
 
-        Raises RuntimeError when called twice or for a negative domain id, and
-        RosArgsError for malformed ROS arguments.
+        Raises RuntimeError when called twice or for a negative domain id,
+        RosArgsError for malformed ROS arguments, and UnicodeEncodeError for an
+        argument that is not valid text (undecodable bytes from the locale).
         """
         with self._lock:
             if domain_id is not None and domain_id < 0:
                 raise RuntimeError(f"Domain id ({domain_id}) should not be lower than zero.")
             if self._initialized:
                 raise RuntimeError("Context.init() must only be called once")
-            self.ros_args, _ = parse(list(args) if args is not None else script_state().argv)
+            argv = list(args) if args is not None else script_state().argv
+            for arg in argv:  # rcl takes UTF-8: an undecodable argument (PEP 383) fails as in rclpy
+                arg.encode("utf-8")
+            self.ros_args, _ = parse(argv)
             _apply_log_levels(self.ros_args.log_levels)
             session = current_session()
             if session is None:
