@@ -18,7 +18,7 @@ from interfaces.std_srvs.srv import Empty
 from interfaces.turtlesim_msgs.action import RotateAbsolute
 from interfaces.turtlesim_msgs.msg import Color, Pose
 from interfaces.turtlesim_msgs.srv import Kill, SetPen, Spawn, TeleportAbsolute, TeleportRelative
-from world.canvas import METER, png_bytes
+from world.canvas import METER, gif_bytes, png_bytes
 from world.draw_square import DrawSquare
 from world.mimic import Mimic
 from world.teleop_key import TeleopTurtle
@@ -268,6 +268,29 @@ async def test_the_picture_is_written_as_a_png_at_shutdown(tmp_path):
         assert np.array_equal(np.asarray(image), expected)
     with Image.open(io.BytesIO(png_bytes(expected[:7, :3]))) as small:
         assert small.size == (3, 7)
+
+
+async def test_the_picture_is_written_as_a_gif_when_the_name_says_so(tmp_path):
+    from PIL import Image
+
+    path = tmp_path / "turtlesim.gif"
+    async with Runtime() as rt:
+        sim = rt.spawn(Turtlesim, params={"image": str(path)})
+        watcher = rt.spawn(Watcher, ["turtle1"])
+        twist = Twist()
+        twist.linear.x, twist.angular.z = 2.0, 1.8
+        watcher.pubs["turtle1"].publish(twist)
+        await anyio.sleep(1.0)
+        expected = sim.picture()
+    with Image.open(path) as image:
+        assert (image.format, image.size) == ("GIF", (500, 500))
+        assert np.array_equal(np.asarray(image.convert("RGB")), expected)
+    # more colours than a GIF holds: each pixel snaps to the nearest of a 6x7x6 cube's; noise this
+    # size fills LZW's 4096-entry table twice over, so the restarts decode too
+    many = np.random.default_rng(7).integers(0, 256, size=(120, 100, 3), dtype=np.uint8)
+    with Image.open(io.BytesIO(gif_bytes(many))) as image:
+        decoded = np.asarray(image.convert("RGB")).astype(int)
+    assert decoded.shape == (120, 100, 3) and np.abs(decoded - many).max() <= 26
 
 
 async def test_teleop_keys_move_rotate_and_cancel(capsys):

@@ -1,4 +1,4 @@
-"""turtlesim's window as pixels: the pen's path image, the background, the turtles, and PNG files of it.
+"""turtlesim's window as pixels: the pen's path image, the background, the turtles, and PNG/GIF files of it.
 
 The window is 500×500 pixels, 45 pixels to the metre, y pointing down, as the
 real turtlesim's Qt frame is.  The path image starts transparent white (so a
@@ -6,7 +6,7 @@ colour sensor over paper nobody drew on reads 255, 255, 255, as ROS 2's does);
 the background colour shows through it only in the picture.  Lines are drawn
 without anti-aliasing, as a QPainter does by default: every pixel whose centre
 lies within half the pen's width of the segment.  numpy only; the PNG writer
-is a dozen lines of zlib.
+is a dozen lines of zlib, the GIF writer a palette and GIF's LZW.
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["SIZE", "METER", "SEGMENTS", "Segment", "Canvas", "png_bytes", "write_png"]
+__all__ = ["SIZE", "METER", "SEGMENTS", "Segment", "Canvas", "png_bytes", "gif_bytes", "write_picture"]
 
 SIZE = 500
 METER = 45  # pixels per metre: the height of turtlesim's turtle images
@@ -108,8 +108,75 @@ def png_bytes(image: np.ndarray) -> bytes:
     return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", pixels) + chunk(b"IEND", b"")
 
 
-def write_png(image: np.ndarray, path: str | os.PathLike[str]) -> Path:
-    """Write ``image`` (see :func:`png_bytes`) to ``path``; returns the path."""
+def _palette(image: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """A palette of at most 256 colours and each pixel's index into it."""
+    colours, index = np.unique(image.reshape(-1, 3), axis=0, return_inverse=True)
+    if len(colours) > 256:  # many pen colours: snap to a 6x7x6 cube, which a GIF can hold
+        levels = np.array([5, 6, 5])
+        snapped = np.rint(image.reshape(-1, 3) / 255.0 * levels).astype(np.int64)
+        index = (snapped[:, 0] * 7 + snapped[:, 1]) * 6 + snapped[:, 2]
+        cube = np.stack(np.meshgrid(range(6), range(7), range(6), indexing="ij"), axis=-1).reshape(-1, 3)
+        colours = np.rint(cube / levels * 255.0).astype(np.uint8)
+    return colours.astype(np.uint8), index.reshape(-1)
+
+
+def _lzw(indices: np.ndarray) -> bytes:
+    """GIF's LZW of 8-bit indices: variable-width codes packed least significant bit first."""
+    clear, end = 256, 257
+    table: dict[tuple[int, int], int] = {}
+    next_code, width = 258, 9
+    out, bits, nbits = bytearray(), 0, 0
+
+    def emit(code: int) -> None:
+        nonlocal bits, nbits
+        bits |= code << nbits
+        nbits += width
+        while nbits >= 8:
+            out.append(bits & 0xFF)
+            bits >>= 8
+            nbits -= 8
+
+    emit(clear)
+    pixels = indices.tolist()
+    prefix = pixels[0]
+    for value in pixels[1:]:
+        code = table.get((prefix, value))
+        if code is not None:
+            prefix = code
+            continue
+        emit(prefix)
+        if next_code == 4096:  # the table is full: start afresh, as decoders expect
+            emit(clear)
+            table.clear()
+            next_code, width = 258, 9
+        else:
+            table[(prefix, value)] = next_code
+            next_code += 1
+            if next_code > 1 << width and width < 12:
+                width += 1
+        prefix = value
+    emit(prefix)
+    emit(end)
+    if nbits:
+        out.append(bits & 0xFF)
+    return bytes(out)
+
+
+def gif_bytes(image: np.ndarray) -> bytes:
+    """An RGB uint8 array (rows, columns, 3) as the bytes of a GIF file (one frame, 256-colour palette)."""
+    height, width, _ = image.shape
+    colours, index = _palette(image)
+    table = np.zeros((256, 3), dtype=np.uint8)
+    table[: len(colours)] = colours
+    data = _lzw(index)
+    blocks = b"".join(bytes([len(part)]) + part for part in (data[i : i + 255] for i in range(0, len(data), 255)))
+    screen = struct.pack("<HHBBB", width, height, 0xF7, 0, 0)  # a global table of 2^(7+1) colours
+    frame = b"," + struct.pack("<HHHHB", 0, 0, width, height, 0)
+    return b"GIF89a" + screen + table.tobytes() + frame + bytes([8]) + blocks + b"\x00;"
+
+
+def write_picture(image: np.ndarray, path: str | os.PathLike[str]) -> Path:
+    """Write ``image`` to ``path``: a GIF if its name ends in ``.gif``, else a PNG; returns the path."""
     path = Path(path)
-    path.write_bytes(png_bytes(image))
+    path.write_bytes(gif_bytes(image) if path.suffix.lower() == ".gif" else png_bytes(image))
     return path

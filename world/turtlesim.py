@@ -9,8 +9,8 @@ same log lines.  Each turtle's own topics, services and action are
 :class:`world.turtle.Turtle`'s.
 
 There is no window: the picture (:meth:`Turtlesim.picture`, the background,
-the pens' trails and the turtles) is drawn on request, and written as a PNG at
-shutdown when the parameter ``image`` names a file.  ``image`` is declared only
+the pens' trails and the turtles) is drawn on request, and written as a PNG (a
+GIF for a name ending in ``.gif``) at shutdown when the parameter ``image`` names a file.  ``image`` is declared only
 when given, so ``param list`` shows what the real node's shows.  Beside a live
 view (``--foxglove``) the window is a 3D scene on ``/turtlesim/scene``
 (:mod:`world.turtlesim_scene`).
@@ -31,7 +31,7 @@ from interfaces.rcl_interfaces.msg import IntegerRange, ParameterDescriptor
 from interfaces.std_srvs.srv import Empty
 from interfaces.turtlesim_msgs.srv import Kill, Spawn
 
-from .canvas import METER, SIZE, Canvas, write_png
+from .canvas import METER, SIZE, Canvas, write_picture
 from .scene import scene_hosts
 from .turtle import Turtle, f32
 
@@ -60,7 +60,7 @@ class Turtlesim(Node):
         self._image = ""
         if "image" in self._core.params.overrides:
             self._image = self.declare_parameter(
-                "image", "", ParameterDescriptor(description="PNG file the window is written to at exit")
+                "image", "", ParameterDescriptor(description="PNG or GIF file the window is written to at exit")
             ).value
         self.canvas = Canvas()
         self.turtles: dict[str, Turtle] = {}
@@ -152,14 +152,14 @@ class Turtlesim(Node):
         turtles = [(t.x, t.y, t.theta) for t in self.turtles.values()]
         return self.canvas.picture(self.background(), turtles)
 
-    def save_png(self, path: str | os.PathLike[str]) -> Path:
-        """Write :meth:`picture` to ``path`` as a PNG; returns the path."""
-        return write_png(self.picture(), path)
+    def save_picture(self, path: str | os.PathLike[str]) -> Path:
+        """Write :meth:`picture` to ``path``, a GIF if it ends in ``.gif``, else a PNG; returns the path."""
+        return write_picture(self.picture(), path)
 
     def on_shutdown(self) -> None:
         """Write the window to the file ``image`` names, if any."""
         if self._image:
-            self.get_logger().info(f"wrote {self.save_png(self._image)}")
+            self.get_logger().info(f"wrote {self.save_picture(self._image)}")
 
     def destroy_node(self) -> None:
         if self._scene_hosts:
