@@ -3,7 +3,7 @@
 The pages: Using turtlesim (its executables; its teleop is tests/test_world_turtlesim.py's and
 test_compat_tf2.py's), Understanding nodes, topics, services, parameters and actions, Using
 rqt_console (the log level it teaches; the live view stands for rqt), Launching nodes, Recording
-and playing back data.
+and playing back data, Using ros2doctor.
 """
 
 from __future__ import annotations
@@ -63,6 +63,21 @@ def test_understanding_nodes(turtlesim):
         "    /turtle1/rotate_absolute: turtlesim_msgs/action/RotateAbsolute",
     ):
         assert line in info
+
+
+def test_understanding_nodes_remapping():
+    # The page's second turtlesim, renamed on its command line; its log names it so
+    renamed = ["turtlesim", "turtlesim_node", "--ros-args", "--remap", "__node:=my_turtle"]
+    done = subprocess.run(
+        [sys.executable, "-m", "actors", "run", "--clock", "virtual", "--duration", "0.5", *renamed],
+        cwd=ROOT,
+        env=python_env(),
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stderr.startswith("[INFO] [0.000000000] [my_turtle]: Starting turtlesim with node name /my_turtle\n")
 
 
 def test_understanding_topics(turtlesim):
@@ -204,6 +219,14 @@ def test_recording_and_playing_back_data(turtlesim, tmp_path):
     assert (played.returncode, played.stderr) == (0, f"played 2 message(s) from {bag}\n")
     moved = pose(turtlesim)
     assert (moved["x"], moved["y"]) != (pytest.approx(5.544444), pytest.approx(5.544444))  # the replay drove it
+
+
+def test_using_ros2doctor(turtlesim):
+    # The page's first run: turtlesim alone publishes its pose and colour to nobody, as warnings
+    checked = ok(turtlesim, "doctor")
+    for topic in ("/turtle1/color_sensor (turtlesim_msgs/msg/Color)", "/turtle1/pose (turtlesim_msgs/msg/Pose)"):
+        assert f"WARNING: publishers without subscribers: {topic} is published by /turtlesim" in checked
+    assert checked.endswith(" checks passed\n")  # warnings, not failures
 
 
 DRIVE = """
