@@ -1,45 +1,15 @@
-"""actors: ROS 2's programming model as a pure-Python asyncio runtime."""
+"""actors: ROS 2's programming model as a pure-Python asyncio runtime.
 
-from actors.core.loops import VirtualTimeLoop
-from actors.errors import (
-    ActionError,
-    ActorsError,
-    Escalation,
-    GraphFileError,
-    InvalidNameError,
-    MessageRefused,
-    ParameterError,
-    ServiceError,
-    TopicTypeError,
-    VirtualTimeDeadlock,
-)
-from actors.ros.actions import (
-    ActionClient,
-    ActionServer,
-    CancelResponse,
-    ClientGoalHandle,
-    GoalResponse,
-    ServerGoalHandle,
-)
-from actors.ros.log import LoggingSeverity
-from actors.ros.node import Node
-from actors.ros.param_client import AsyncParameterClient
-from actors.ros.parameter_store import Parameter, ParameterType
-from actors.ros.qos import (
-    DurabilityPolicy,
-    HistoryPolicy,
-    QoSProfile,
-    ReliabilityPolicy,
-    qos_profile_sensor_data,
-    qos_profile_system_default,
-)
-from actors.ros.time import Clock, ClockType, Duration, Rate, ROSClock, Time
-from actors.ros.timers import Timer
-from actors.ros.topics import Publisher, Subscription
-from actors.runtime import Runtime
-from actors.services import Client, Service
-from actors.system.introspection import EndpointInfo, GraphView, NodeInfo, TopicInfo
-from actors.system.supervisor import RestartType, Strategy, SupervisorPolicy
+The names below load on first use (PEP 562): ``python -m actors.run`` and the
+``actors`` command import this package before anything else, and they must be
+able to take a signal before the runtime's modules load, the slow part of
+their start-up.
+"""
+
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from actors.system._exports import *  # noqa: F403
 
 __all__ = [
     "ActionClient",
@@ -90,3 +60,17 @@ __all__ = [
     "qos_profile_sensor_data",
     "qos_profile_system_default",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    if name not in __all__:
+        raise AttributeError(f"module 'actors' has no attribute {name!r}")
+    from actors.system import _exports
+
+    value = getattr(_exports, name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *__all__})

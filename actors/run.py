@@ -1,6 +1,7 @@
 """``python -m actors.run GRAPH`` (or ``actors launch GRAPH``): run a graph file until it is stopped.
 
-Exit codes: 0 after a graceful stop (end of duration, SIGINT, SIGTERM); 1 when
+Exit codes: 0 after a graceful stop (end of duration, SIGINT, SIGTERM, SIGHUP,
+at any moment of start-up too: :mod:`actors.core.signals`); 1 when
 the graph fails: a node's constructor raises, the supervisor gives up, or any
 other error ends the run; 2 for misuse (bad options, a malformed graph file),
 with one line on stderr.  A failure is printed once, as one ``[FATAL]`` line
@@ -10,10 +11,15 @@ are the user's own (not the runtime's, anyio's or asyncio's).
 
 from __future__ import annotations
 
+if __name__ == "__main__":
+    # Before the imports below, which load the runtime: the slow part of start-up.
+    from actors.core.signals import remember_stops
+
+    remember_stops()
+
 import argparse
 import asyncio
 import importlib.util
-import signal
 import sys
 import traceback
 from collections.abc import Iterator, Sequence
@@ -26,6 +32,7 @@ import msgspec
 
 from actors.core._frames import is_users
 from actors.core.loops import WALL_LOOPS, VirtualTimeLoop
+from actors.core.signals import raise_stops, remember_stops, stop_signals, take_noted
 from actors.core.tomlfile import MAX_SECONDS
 from actors.errors import ActorsError, Escalation, GraphFileError
 from actors.launch.graph_file import GraphFile, TransportSection, load_graph
@@ -93,29 +100,51 @@ async def run_graph(
         from actors.transport.zenoh import ZenohTransport
 
         everything.append(ZenohTransport(graph.transport))
-    async with Runtime(name=name, supervisor=policy, attach=everything) as rt, anyio.create_task_group() as tg:
+    stop = anyio.Event()
+    async with anyio.create_task_group() as listening:
         if handle_signals:
-            # Listening before the first node is made: a Ctrl-C that comes while the graph
-            # starts is a graceful stop too, not asyncio's KeyboardInterrupt.
-            await tg.start(_stop_on_signal, rt)
-        await tg.start(spawn_graph, rt, graph, classes)
-        await rt.wait(duration or None)
-        tg.cancel_scope.cancel()
+            # Listening before the runtime opens its attachments (a Zenoh session takes a while):
+            # a signal then stops the run as soon as it is up, as Ctrl-C later would.
+            await listening.start(_note_signal, stop)
+        async with Runtime(name=name, supervisor=policy, attach=everything) as rt, anyio.create_task_group() as tg:
+            tg.start_soon(_shutdown_on, stop, rt)
+            if not stop.is_set():
+                await tg.start(spawn_graph, rt, graph, classes)
+                await rt.wait(duration or None)
+            tg.cancel_scope.cancel()
+        listening.cancel_scope.cancel()
 
 
-async def _stop_on_signal(rt: Runtime, *, task_status: anyio.abc.TaskStatus[None] = anyio.TASK_STATUS_IGNORED) -> None:
-    with anyio.open_signal_receiver(signal.SIGINT, signal.SIGTERM) as signals:
-        task_status.started()
-        async for _ in signals:
-            rt.shutdown()
-            return
+async def _note_signal(
+    stop: anyio.Event, *, task_status: anyio.abc.TaskStatus[None] = anyio.TASK_STATUS_IGNORED
+) -> None:
+    try:
+        with anyio.open_signal_receiver(*stop_signals()) as signals:
+            if take_noted():  # one that came while the loop started (see launch)
+                stop.set()
+            task_status.started()
+            async for _ in signals:
+                stop.set()
+    finally:
+        # asyncio gives SIGTERM and SIGHUP back to the system's default, death: a signal while
+        # the loop winds down is noted, as the stop is under way already.
+        remember_stops()
+
+
+async def _shutdown_on(stop: anyio.Event, rt: Runtime) -> None:
+    await stop.wait()
+    rt.shutdown()
 
 
 def main(argv: Sequence[str] | None = None, prog: str = "python -m actors.run") -> int:
     """Parse options, load the graph, run it; return the exit code."""
-    parser = argparse.ArgumentParser(prog=prog, description="Run an actors graph file.")
-    add_arguments(parser)
-    return launch(parser.parse_args(argv))
+    try:
+        raise_stops()  # a signal noted while the imports loaded stops the run here
+        parser = argparse.ArgumentParser(prog=prog, description="Run an actors graph file.")
+        add_arguments(parser)
+        return launch(parser.parse_args(argv))
+    except KeyboardInterrupt:
+        return 0  # Ctrl-C, SIGTERM or SIGHUP before the graph ran: nothing to stop
 
 
 def launch(args: argparse.Namespace) -> int:
@@ -162,6 +191,9 @@ def launch(args: argparse.Namespace) -> int:
     configure_console(LEVELS[args.log_level or settings.log_level])
     factory = VirtualTimeLoop if clock == "virtual" else WALL_LOOPS[args.loop or "select"]
     options: dict[str, Any] = {"loop_factory": factory}
+    # Noted, not raised, until the graph listens: asyncio's own Ctrl-C handling would cancel the
+    # runtime wherever it stands in its start-up.
+    remember_stops()
     try:
         anyio.run(
             lambda: run_graph(graph, classes, name=Path(args.graph).stem, duration=duration, attach=attach),
@@ -169,6 +201,9 @@ def launch(args: argparse.Namespace) -> int:
         )
     except BaseException as exc:
         return _report(exc, args.graph)
+    finally:
+        take_noted()  # the run is over: what came while it wound down asked for nothing more
+        raise_stops()
     return 0
 
 
@@ -179,7 +214,7 @@ def _report(exc: BaseException, graph: str) -> int:
     """Print what ended the run, once; return the exit code."""
     errors = list(_leaves(exc))
     if any(isinstance(error, KeyboardInterrupt) for error in errors) or not errors:
-        return 130  # a second Ctrl-C while shutting down: stop at once, without a traceback
+        return 0  # a stop signal before the graph listened for it, or after: a stop all the same
     codes = []
     for error in errors:
         if isinstance(error, GraphFileError):

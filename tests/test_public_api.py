@@ -5,6 +5,8 @@ from __future__ import annotations
 import importlib
 import pkgutil
 import re
+import subprocess
+import sys
 import types
 from pathlib import Path
 
@@ -12,6 +14,7 @@ import pytest
 
 import actors
 import world
+from actors.system import _exports
 
 MODULES = sorted(
     name
@@ -32,14 +35,23 @@ def test_all_is_declared_and_exists(name):
 
 
 def test_actors_reexports_its_public_names():
+    # The names load on first use (see actors/__init__.py): dir() lists them before they have.
     # Submodules become attributes once imported; "@..." names are pytest's (it rewrites
     # the package of its actors.testing plugin).
     public = {
         name
-        for name, value in vars(actors).items()
-        if not name.startswith(("_", "@")) and not isinstance(value, types.ModuleType)
-    } - {"annotations"}
+        for name in dir(actors)
+        if not name.startswith(("_", "@")) and not isinstance(getattr(actors, name), types.ModuleType)
+    } - {"annotations", "TYPE_CHECKING", "Any"}
     assert set(actors.__all__) == public
+    assert set(actors.__all__) == {name for name in vars(_exports) if not name.startswith(("_", "@"))}
+
+
+def test_importing_actors_loads_none_of_the_runtime():
+    # python -m actors.run and the actors command take signals before the runtime loads (#34).
+    code = "import sys, actors; print(sorted(m for m in sys.modules if m.startswith(('actors.', 'anyio', 'asyncio'))))"
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert result.stdout.strip() == "[]"
 
 
 def test_shipped_user_code_reaches_only_public_modules():

@@ -8,8 +8,7 @@ import os
 import sys
 from collections.abc import Sequence
 
-from actors.errors import ActorsError
-from actors.messages.discovery import add_workspace
+from actors.core.signals import raise_stops
 
 __all__ = ["main"]
 
@@ -54,6 +53,23 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     """Run one command; return its exit code (2 for misuse, with one line on stderr)."""
     argv = list(sys.argv[1:] if argv is None else argv)
+    # Before anything slow loads: SIGTERM and SIGHUP stop a command as Ctrl-C does, at any moment.
+    raise_stops()
+    try:
+        return _command(argv)
+    except KeyboardInterrupt:
+        return 0
+    except BrokenPipeError:
+        # stdout was closed early (`| head`): stop quietly, as a process killed by SIGPIPE
+        # would, and point stdout at /dev/null so the interpreter's final flush stays silent.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 141
+
+
+def _command(argv: list[str]) -> int:
+    from actors.errors import ActorsError
+    from actors.messages.discovery import add_workspace
+
     if argv[:1] == ["launch"]:
         # actors.run's own parser takes the rest, options before or after the graph file.
         from actors.cli.launch import launch
@@ -70,10 +86,3 @@ def main(argv: Sequence[str] | None = None) -> int:
     except ActorsError as exc:
         print(f"actors: {exc}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
-        return 0
-    except BrokenPipeError:
-        # stdout was closed early (`| head`): stop quietly, as a process killed by SIGPIPE
-        # would, and point stdout at /dev/null so the interpreter's final flush stays silent.
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return 141

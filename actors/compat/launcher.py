@@ -50,6 +50,7 @@ from actors.compat.script_state import ScriptArgv
 from actors.compat.session import Session
 from actors.compat.turns import Turn
 from actors.core._frames import users_traceback
+from actors.core.signals import raise_stops, remember_stops, stop_signals
 from actors.errors import ActorsError, GraphFileError, LaunchFileError, PackageError, RosArgsError
 from actors.launch.graph_file import load_graph
 from actors.launch.rosargs import parse
@@ -154,6 +155,7 @@ def run_script(
         attach=[ControlEndpoint(), *attach],
     )
     stop.turn = session.turn
+    remember_stops()  # a stop signal while the runtime starts is raised once it can be stopped
     try:
         session.start()
     except BaseException as exc:
@@ -171,6 +173,7 @@ def run_script(
     if timeout is not None:
         _thread.start_new_thread(_bound, (timeout, stop, finished))
     try:
+        raise_stops()
         with use_session(session), overlaid(), stop.handling_signals(), session.timekeeping():
             for partner in others:
                 partner.start()
@@ -320,14 +323,16 @@ class _Stop:
 
     @contextmanager
     def handling_signals(self) -> Iterator[None]:
-        previous = signal.signal(signal.SIGINT, self._on_sigint), signal.signal(signal.SIGTERM, self._on_sigterm)
+        # A hang-up ends the script as SIGTERM does: nobody is left to read what it prints.
+        handlers = {signal.SIGINT: self._on_sigint, signal.SIGTERM: self._on_sigterm, signal.SIGHUP: self._on_sigterm}
+        previous = {sig: signal.signal(sig, handlers[sig]) for sig in stop_signals()}
         self._handling = True
         try:
             yield
         finally:
             self._handling = False
-            signal.signal(signal.SIGINT, previous[0])
-            signal.signal(signal.SIGTERM, previous[1])
+            for sig, handler in previous.items():
+                signal.signal(sig, handler)
 
 
 def _interrupt_default_context() -> None:

@@ -1,0 +1,181 @@
+"""SIGINT, SIGTERM and SIGHUP stop every long-running command cleanly, at any moment of its start-up.
+
+Each entry point gets a signal at 0.05, 0.2 and 0.4 s after it was started and
+once it runs (a line it prints says so), the three signals taking turns so that
+every pair of signal and moment comes up: exit code 0, no traceback, no control
+socket left behind.  Before a process has its handlers the system's defaults
+apply and nothing of ours could help, so a moment is never earlier than the
+handlers (read from ``/proc/PID/status``): on a loaded machine 0.05 s can come
+before the interpreter itself is up.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from conftest import ROOT, python_env
+from test_cli_live import GraphProcess
+
+from actors import codec
+from actors.recording.bag_writer import BagWriter
+from interfaces.std_msgs.msg import String
+
+pytestmark = [
+    pytest.mark.slow,
+    pytest.mark.skipif(not Path("/proc/self/status").exists(), reason="reads handlers from /proc"),
+]
+
+SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+MOMENTS = (0.05, 0.2, 0.4, "running")
+
+
+class Command(GraphProcess):
+    """A command in the background, its output (stdout and stderr) collected line by line."""
+
+    def __init__(self, argv: list[str], env: dict[str, str]) -> None:
+        self.started = time.monotonic()
+        self.lines = []
+        self._changed = threading.Condition()
+        self.proc = subprocess.Popen(
+            argv, cwd=ROOT, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True
+        )
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def wait_for_handlers(self, timeout: float = 30) -> None:
+        """Until the process catches all three signals (each is a bit of SigCgt, signal n at n-1)."""
+        wanted = sum(1 << (s - 1) for s in SIGNALS)
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            try:
+                status = Path(f"/proc/{self.proc.pid}/status").read_text()
+            except FileNotFoundError:
+                break
+            caught = int(next(line for line in status.splitlines() if line.startswith("SigCgt:")).split()[1], 16)
+            if caught & wanted == wanted:
+                return
+            time.sleep(0.002)  # a poll of the kernel's view: no event tells when a handler goes in
+        raise AssertionError(f"the handlers never went in:\n{''.join(self.lines[-20:])}")
+
+    def finish(self, timeout: float = 30) -> str:
+        try:
+            self.proc.wait(timeout=timeout)
+        finally:
+            self.proc.kill()
+        with self._changed:
+            self._changed.wait_for(lambda: self.lines[-1:] == ["<exited>"], 5)
+            return "".join(self.lines[:-1])
+
+
+def stop_at(command: Command, moment: float | str, ready: str, signum: int, watch: Command | None = None) -> str:
+    """Send ``signum`` at ``moment``: seconds after the start, or once ``ready`` shows (in ``watch``'s output)."""
+    command.wait_for_handlers()
+    if moment == "running":
+        (watch or command).wait_for(ready)
+    else:
+        assert isinstance(moment, float)
+        time.sleep(max(0.0, command.started + moment - time.monotonic()))  # a moment of start-up, by the wall clock
+    command.proc.send_signal(signum)
+    return command.finish()
+
+
+def cases(entry: int) -> list[tuple[float | str, signal.Signals]]:
+    # The signals take turns over moments and entry points: every pair comes up in the module.
+    return [(moment, SIGNALS[(entry + i) % 3]) for i, moment in enumerate(MOMENTS)]
+
+
+def check(command: Command, output: str, runtime_dir: Path | None = None) -> None:
+    assert command.proc.returncode == 0, output
+    assert "Traceback" not in output
+    if runtime_dir is not None:
+        assert list(runtime_dir.glob("actors/*.sock")) == [], output
+
+
+def own_env(tmp_path: Path) -> dict[str, str]:
+    env = python_env()
+    env["XDG_RUNTIME_DIR"] = str(tmp_path)  # where the control socket goes: this test's alone
+    return env
+
+
+# --------------------------------------------------------------------------- commands that run a graph
+
+
+@pytest.mark.parametrize(("moment", "signum"), cases(0))
+def test_python_m_actors_run(tmp_path, moment, signum):
+    command = Command([sys.executable, "-m", "actors.run", "graphs/pubsub.toml"], own_env(tmp_path))
+    check(command, stop_at(command, moment, "I heard", signum), tmp_path)
+
+
+@pytest.mark.parametrize(("moment", "signum"), cases(1))
+def test_actors_launch(tmp_path, moment, signum):
+    command = Command([sys.executable, "-m", "actors", "launch", "graphs/pubsub.toml"], own_env(tmp_path))
+    check(command, stop_at(command, moment, "I heard", signum), tmp_path)
+
+
+@pytest.mark.parametrize(("moment", "signum"), cases(2))
+def test_actors_run_an_rclpy_script(tmp_path, moment, signum):
+    command = Command([sys.executable, "-m", "actors", "run", "scripts/talker.py"], own_env(tmp_path))
+    check(command, stop_at(command, moment, "sent count", signum), tmp_path)
+
+
+# --------------------------------------------------------------------------- commands against a running graph
+
+
+@pytest.fixture(scope="module")
+def graph(tmp_path_factory: pytest.TempPathFactory) -> Iterator[tuple[str, dict[str, str], Command]]:
+    folder = tmp_path_factory.mktemp("signals")
+    path = folder / f"signals_{os.getpid()}.toml"
+    path.write_text((ROOT / "graphs/pubsub.toml").read_text())
+    env = own_env(folder)
+    running = Command([sys.executable, "-m", "actors.run", str(path)], env)
+    try:
+        running.wait_for("I heard")
+        yield path.stem, env, running
+    finally:
+        running.proc.terminate()
+        running.finish()
+
+
+def cli(graph: tuple[str, dict[str, str], Command], *argv: str) -> Command:
+    name, env, _ = graph
+    return Command([sys.executable, "-m", "actors", *argv, "--graph", name], env)
+
+
+@pytest.mark.parametrize(("moment", "signum"), cases(0))
+def test_topic_echo(graph, moment, signum):
+    command = cli(graph, "topic", "echo", "/topic")
+    check(command, stop_at(command, moment, "data:", signum))
+
+
+@pytest.mark.parametrize(("moment", "signum"), cases(1))
+def test_topic_hz(graph, moment, signum):
+    command = cli(graph, "topic", "hz", "/topic")
+    check(command, stop_at(command, moment, "average rate", signum))
+
+
+@pytest.mark.parametrize(("moment", "signum"), cases(2))
+def test_bag_record(graph, tmp_path, moment, signum):
+    command = cli(graph, "bag", "record", "/topic", "-o", str(tmp_path / "run.mcap"))
+    output = stop_at(command, moment, "Recording to", signum)
+    check(command, output)
+
+
+@pytest.mark.parametrize(("moment", "signum"), cases(0))
+def test_bag_play(graph, tmp_path, moment, signum):
+    bag = BagWriter(tmp_path / "played.mcap")
+    channel = bag.add_topic(
+        "/topic", "std_msgs/msg/String", definition=codec.definition_text(String), type_hash=codec.type_hash(String)
+    )
+    for i in range(100):  # ten seconds of messages: still playing when the signal comes
+        bag.write(channel, 1_000_000_000 + i * 100_000_000, codec.encode_cdr(String(data=f"played {i}")))
+    bag.close()
+    command = cli(graph, "bag", "play", str(tmp_path / "played.mcap"))
+    # Running once the graph's listener hears what the bag holds.
+    check(command, stop_at(command, moment, 'I heard: "played', signum, watch=graph[2]))
