@@ -1,4 +1,4 @@
-"""``actors bag record|info|play``: ROS 2 bags (MCAP), as ``ros2 bag`` records, shows and plays them."""
+"""``actors bag record|info|reindex|play``: ROS 2 bags (MCAP), as ``ros2 bag`` records, shows, mends and plays them."""
 
 from __future__ import annotations
 
@@ -27,11 +27,24 @@ def register(subparsers: Any) -> None:
     )
     record.add_argument("-x", "--exclude", metavar="REGEX", help="with -a: leave out topics matching REGEX")
     record.add_argument("--include-hidden-topics", action="store_true", help="with -a: hidden topics too")
+    record.add_argument(
+        "--flush-interval",
+        type=_positive,
+        default=1.0,
+        metavar="S",
+        help="write what was received to the file at least every S seconds (1): what a kill -9 can lose",
+    )
 
     info = verbs.add_parser("info", help="what a bag holds, as ros2 bag info prints it")
     info.add_argument("bag", metavar="BAG", help="an .mcap file or a bag directory")
     info.add_argument("--recover", action="store_true", help="show what is readable in a damaged bag")
     info.set_defaults(func=bag_info)
+
+    reindex = verbs.add_parser(
+        "reindex", help="make a bag whose recording was killed whole again (summary, metadata.yaml)"
+    )
+    reindex.add_argument("bag", metavar="BAG", help="an .mcap file or a bag directory")
+    reindex.set_defaults(func=reindex_bag)
 
     play = add_verb(verbs, "play", play_bag, help="publish a bag's messages into a running graph")
     play.add_argument("bag", metavar="BAG", help="an .mcap file or a bag directory")
@@ -129,6 +142,22 @@ def format_info(bag: Any) -> str:
         ),
     ]
     return "\n".join(lines) + "\n"
+
+
+def reindex_bag(args: argparse.Namespace) -> None:
+    """Rewrite the bag from its whole chunks, as ``ros2 bag reindex`` rebuilds a bag's metadata."""
+    from actors.errors import BagError
+    from actors.recording.reindex import reindex
+
+    try:
+        kept, problems = reindex(args.bag)
+    except FileNotFoundError as exc:
+        raise BagError(str(exc)) from None
+    except OSError as exc:
+        raise BagError(f"cannot rewrite {args.bag}: {exc.strerror or exc}") from None
+    for problem in problems:
+        print(f"warning: {problem}; kept what comes before it", file=sys.stderr)
+    print(f"reindexed {args.bag}: {kept} message(s)", file=sys.stderr)
 
 
 # --------------------------------------------------------------------------- play
@@ -245,6 +274,10 @@ def record_bag(args: argparse.Namespace) -> None:
                         msg = codec.convert(sample.msg, stream.msg_type)
                         bag.write(stream.channel, stamp, codec.encode_cdr(msg))
                         sample = stream.conn.sample(timeout=0)  # the rest already read
+                if bag.pending_since is not None:
+                    # Stamps are the graph's clock on virtual time: its last stamp is the time there.
+                    now = stamp if virtual else time.time_ns()
+                    bag.flush_older_than(now - round(args.flush_interval * 1e9))
                 if bag.error is not None:
                     raise BagError(f"recording to {bag.path} stopped: {bag.error}")
     except KeyboardInterrupt:

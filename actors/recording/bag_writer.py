@@ -73,6 +73,15 @@ class BagWriter:
         self.mcap.add_message(channel, log_time, log_time, data)
 
     @property
+    def pending_since(self) -> int | None:
+        """Log time of the oldest message not yet in the file, if any."""
+        return self.mcap.pending_since
+
+    def flush_older_than(self, log_time: int) -> None:
+        """Write the chunk in progress if it holds a message older than ``log_time`` (ns)."""
+        self.mcap.flush_older_than(log_time)
+
+    @property
     def error(self) -> OSError | None:
         """The write that failed (a full disk), if any: nothing more is written after it."""
         return self.mcap.error

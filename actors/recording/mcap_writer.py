@@ -272,6 +272,21 @@ class McapWriter:
         """Write the chunk in progress now (a smaller chunk than ``chunk_size``)."""
         self._finish_chunk()
 
+    @property
+    def pending_since(self) -> int | None:
+        """Log time of the oldest message not yet in the file (in the chunk in progress), if any."""
+        return self._chunk_start if self._chunk_messages else None
+
+    def flush_older_than(self, log_time: int) -> None:
+        """Write the chunk in progress if its oldest message is older than ``log_time``.
+
+        What bounds the loss when the recording process is killed outright:
+        the file holds every whole chunk, and no chunk stays open for longer
+        than its writer's interval.
+        """
+        if self._chunk_messages and self._chunk_start <= log_time:
+            self._finish_chunk()
+
     def close(self) -> None:
         """Write the last chunk and end the file: metadata, summary, footer.  Idempotent.
 

@@ -60,7 +60,11 @@ class Recorder:
     ``compression`` is ``zstd``, ``lz4`` or ``""``; ``max_pending`` bounds the
     messages waiting for the disk: when it is reached the publisher waits
     until they are written, or with ``lossy`` the message is dropped (counted
-    on its topic, in the bag's metadata and by doctor).
+    on its topic, in the bag's metadata and by doctor).  No message stays out
+    of the file for more than ``flush_interval`` seconds of runtime clock (a
+    chunk in progress is written early): a recording killed outright
+    (``kill -9``, a power cut) loses at most that, and ``bag reindex`` makes
+    the rest a whole bag again.
 
     :meth:`open` creates the file (the runtime calls it when it starts, if no
     one did before), raising FileExistsError, FileNotFoundError or OSError.
@@ -77,7 +81,10 @@ class Recorder:
         chunk_size: int = 1 << 20,
         max_pending: int = 100_000,
         lossy: bool = False,
+        flush_interval: float = 1.0,
     ) -> None:
+        if not 0 < flush_interval < float("inf"):
+            raise ValueError(f"flush_interval must be > 0 seconds, got {flush_interval}")
         self.output = Path(output)
         self.topics = frozenset(expand(t, "/", "_") for t in topics)
         self.exclude = re.compile(exclude) if exclude else None
@@ -86,6 +93,7 @@ class Recorder:
         self.chunk_size = chunk_size
         self.max_pending = max_pending
         self.lossy = lossy
+        self.flush_interval = flush_interval
         self.path: Path | None = None  # the MCAP file, once open
         self._writer: BagWriter | None = None
         self._taps = TapSet(RECORDER_NODE, self._takes, self._take, depth=max_pending, label="recorder")
@@ -150,10 +158,17 @@ class Recorder:
         inline = runtime.clock.virtual
         writer = self._writer
         assert writer is not None
+        interval = round(self.flush_interval * 1e9)
         while writer.error is None:
             if not self._items:
                 self._waiter = loop.create_future()
-                await self._waiter
+                pending = writer.pending_since
+                if pending is None:
+                    await self._waiter
+                else:
+                    # Woken by a message, or when the chunk in progress is due in the file.
+                    with anyio.move_on_after((pending + interval - self._now_ns()) / 1e9):
+                        await self._waiter
             self._batches.append(self._items)
             self._items = []
             if inline:
@@ -273,6 +288,7 @@ class Recorder:
                 failures.append((tap, exc))
                 continue
             add(channel, ns_at(stamp), data)
+        writer.flush_older_than(self._now_ns() - round(self.flush_interval * 1e9))
         return failures
 
     def _register(self, tap: Tap) -> int:
