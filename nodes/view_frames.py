@@ -135,12 +135,17 @@ class ViewFrames(Node):
         dot = shutil.which("dot")
         gv, picture = Path(f"{stem}.gv"), Path(f"{stem}.pdf" if dot else f"{stem}.svg")
         self.get_logger().info(f"Exporting graph in {picture} file...")
-        gv.write_text(frames_dot(table, sec + nanosec / 1e9))
-        if dot is not None:
-            subprocess.run([dot, "-Tpdf", str(gv), "-o", str(picture)], check=True)
+        try:
+            gv.write_text(frames_dot(table, sec + nanosec / 1e9))
+            if dot is not None:
+                subprocess.run([dot, "-Tpdf", str(gv), "-o", str(picture)], check=True)
+            else:
+                picture.write_text(frames_svg(table, sec + nanosec / 1e9))
+        except (OSError, subprocess.CalledProcessError) as exc:
+            # One line, and the node ends: a restart would only listen and fail again.
+            self.get_logger().error(f"cannot write the frame tree: {exc}")
         else:
-            picture.write_text(frames_svg(table, sec + nanosec / 1e9))
-        self.written = [gv, picture]
+            self.written = [gv, picture]
         self.destroy_node()
 
 
@@ -156,6 +161,10 @@ def main() -> int:
     options = parser.parse_args(args)
     if not 0 < options.wait_time < math.inf:
         print(f"view_frames: wait time {options.wait_time} is not a positive number of seconds", file=sys.stderr)
+        return 2
+    folder = Path(options.output).parent
+    if not folder.is_dir():
+        print(f"view_frames: -o {options.output}: no folder {folder} to write into", file=sys.stderr)
         return 2
     run_native(ViewFrames, "view_frames", {"wait_time": options.wait_time, "output": options.output})
     return 0

@@ -344,3 +344,22 @@ async def test_view_frames_writes_the_tree_as_graphviz_and_a_picture(tmp_path, c
     # the root on top, its child a row under it, the two leaves a row lower, side by side
     assert boxes["world"][1] < boxes["base_link"][1] < boxes["camera"][1] == boxes["wheel"][1]
     assert boxes["camera"][0] < boxes["base_link"][0] < boxes["wheel"][0]
+
+
+async def test_view_frames_that_cannot_write_says_so_in_one_line_and_ends(tmp_path, caplog):
+    caplog.set_level(logging.INFO, logger="actors")
+    (tmp_path / "taken").write_text("a file where the tool wants a folder")
+    async with Runtime() as rt:
+        rt.spawn(StaticFrames, transform("world", "base_link", 0.0))
+        viewer = rt.spawn(ViewFrames, params={"wait_time": 1.0, "output": str(tmp_path / "taken" / "frames")})
+        await anyio.sleep(3.0)
+    assert viewer.written == []
+    lines = [r.getMessage() for r in caplog.records if r.name.endswith("view_frames")]
+    assert lines[-1].startswith("cannot write the frame tree: ")
+    assert lines.count("Listening to tf data for 1.0 seconds...") == 1  # not restarted
+
+
+def test_view_frames_with_no_folder_for_its_output_exits_2(run_module, tmp_path):
+    done = run_module("actors", "run", "tf2_tools", "view_frames", "-o", str(tmp_path / "missing" / "frames"))
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr == f"view_frames: -o {tmp_path}/missing/frames: no folder {tmp_path}/missing to write into\n"
