@@ -92,7 +92,7 @@ class DrawSquare(Node):
     def _goal_turned(self, pose: Pose) -> None:
         self.state = State.TURN
         theta = math.fmod(pose.theta + PI / 2.0, 2 * PI)
-        if theta >= PI:  # into [-pi, pi), as turtlesim reports headings
+        if theta >= PI:  # the pose's heading range, so the goal compares with it directly
             theta -= 2 * PI
         self._set_goal(Pose(x=pose.x, y=pose.y, theta=theta))
 
