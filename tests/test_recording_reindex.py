@@ -167,6 +167,44 @@ def test_sigterm_to_bag_record_keeps_every_message_received(tmp_path):
     assert f"Recorded {len(numbers)} message(s)" in output
 
 
+@pytest.mark.slow
+def test_bag_record_of_a_quiet_topic_on_virtual_time_still_flushes(tmp_path):
+    # The graph's timers keep virtual time going; the recorded topic gets a few messages, then none:
+    # no later stamp comes to tell the recording that its open chunk is old.
+    env = own_env(tmp_path)
+    name = f"quiet{os.getpid()}"
+    graph = tmp_path / f"{name}.toml"
+    graph.write_text((ROOT / "graphs/pubsub.toml").read_text().replace('clock = "wall"', 'clock = "virtual"'))
+    running = Command([sys.executable, "-m", "actors.run", str(graph), "--duration", "1e9"], env)
+    record = None
+    try:
+        running.wait_for("I heard", timeout=60)
+        out = tmp_path / "quiet.mcap"
+        argv = [sys.executable, "-m", "actors", "bag", "record", "/few", "-o", str(out), "--graph", name]
+        record = Command([*argv, "--flush-interval", "0.2"], env)
+        record.wait_for("Recording to", timeout=60)
+        # A few: the first may go before the recording has seen the new topic and subscribed.
+        pub = [sys.executable, "-m", "actors", "topic", "pub", "-t", "20", "-r", "20", "/few", "std_msgs/msg/String"]
+        sent = subprocess.run([*pub, "{data: hi}", "--graph", name], env=env, capture_output=True, text=True)
+        assert sent.returncode == 0, sent.stderr
+        # Until the file has stopped growing (one second the same): then the recording's output
+        # says how many it received, and every one of them must have been in the file already.
+        deadline = time.monotonic() + 30  # bounds for a loaded machine
+        counts = [0]
+        while (counts[-1] == 0 or counts[-10:] != counts[-1:] * 10) and time.monotonic() < deadline:
+            time.sleep(0.1)  # a file growing on disk: no event tells of it
+            counts.append(sum(1 for _ in Bag(killed_copy(out, tmp_path), recover=True).messages()))
+        assert record.proc.poll() is None  # written while still recording, not at its end
+        record.proc.send_signal(signal.SIGTERM)
+        assert f"Recorded {counts[-1]} message(s)" in record.finish()
+        record = None
+    finally:
+        for command in (record, running):
+            if command is not None:
+                command.proc.terminate()
+                command.finish()
+
+
 def test_the_flush_interval_must_be_positive(tmp_path):
     with pytest.raises(ValueError, match="flush_interval must be > 0 seconds"):
         Recorder(tmp_path / "x.mcap", flush_interval=0)

@@ -260,6 +260,7 @@ def record_bag(args: argparse.Namespace) -> None:
         with graph as conn:
             virtual = conn.graph().clock == "virtual"
             next_look = 0.0
+            held_since: float | None = None  # when the chunk in progress got its first message
             while True:
                 if time.monotonic() >= next_look:
                     next_look = time.monotonic() + 0.1
@@ -274,10 +275,15 @@ def record_bag(args: argparse.Namespace) -> None:
                         msg = codec.convert(sample.msg, stream.msg_type)
                         bag.write(stream.channel, stamp, codec.encode_cdr(msg))
                         sample = stream.conn.sample(timeout=0)  # the rest already read
-                if bag.pending_since is not None:
-                    # Stamps are the graph's clock on virtual time: its last stamp is the time there.
-                    now = stamp if virtual else time.time_ns()
-                    bag.flush_older_than(now - round(args.flush_interval * 1e9))
+                # What a kill -9 of this process loses is real time, whatever the graph's clock
+                # (a quiet topic on virtual time gives no later stamp to measure by).
+                if bag.pending_since is None:
+                    held_since = None
+                elif held_since is None:
+                    held_since = time.monotonic()
+                elif time.monotonic() - held_since >= args.flush_interval:
+                    bag.flush_older_than(bag.pending_since)
+                    held_since = None
                 if bag.error is not None:
                     raise BagError(f"recording to {bag.path} stopped: {bag.error}")
     except KeyboardInterrupt:
