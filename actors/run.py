@@ -35,7 +35,8 @@ from actors.core.loops import WALL_LOOPS, VirtualTimeLoop
 from actors.core.signals import raise_stops, remember_stops, stop_signals, take_noted
 from actors.core.tomlfile import MAX_SECONDS
 from actors.errors import ActorsError, Escalation, GraphFileError
-from actors.launch.graph_file import GraphFile, TransportSection, load_graph
+from actors.launch.graph_args import format_arguments
+from actors.launch.graph_file import GraphFile, TransportSection, argument_rows, load_graph
 from actors.launch.spawn import NodeStartError, one_line, spawn_graph
 from actors.ops.control import ControlEndpoint
 from actors.recording.options import add_attachment_options
@@ -49,6 +50,8 @@ __all__ = ["main", "add_arguments", "launch", "run_graph"]
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """The graph file and the options that override its ``[runtime]`` table."""
     parser.add_argument("graph", help="the graph file, e.g. graph.toml")
+    parser.add_argument("arguments", nargs="*", metavar="name:=value", help="the graph's arguments (its [args])")
+    parser.add_argument("-s", "--show-args", action="store_true", help="list the graph's arguments and exit")
     parser.add_argument("--clock", choices=("wall", "virtual"), help="override [runtime] clock")
     parser.add_argument("--duration", type=_seconds, help="seconds to run; 0 runs until stopped")
     parser.add_argument("--log-level", choices=sorted(LEVELS), help="override [runtime] log_level")
@@ -142,7 +145,7 @@ def main(argv: Sequence[str] | None = None, prog: str = "python -m actors.run") 
         raise_stops()  # a signal noted while the imports loaded stops the run here
         parser = argparse.ArgumentParser(prog=prog, description="Run an actors graph file.")
         add_arguments(parser)
-        return launch(parser.parse_args(argv))
+        return launch(parser.parse_intermixed_args(argv))
     except KeyboardInterrupt:
         return 0  # Ctrl-C, SIGTERM or SIGHUP before the graph ran: nothing to stop
 
@@ -150,7 +153,16 @@ def main(argv: Sequence[str] | None = None, prog: str = "python -m actors.run") 
 def launch(args: argparse.Namespace) -> int:
     """Load and run the graph that :func:`add_arguments`' options name; return the exit code."""
     try:
-        graph, classes = load_graph(args.graph)
+        arguments = []
+        for word in args.arguments:
+            name, sep, value = word.partition(":=")
+            if not sep or not name:
+                raise GraphFileError(f"{args.graph}: graph arguments are name:=value, got {word!r}")
+            arguments.append((name, value))
+        if args.show_args:
+            print(format_arguments(argument_rows(args.graph)))
+            return 0
+        graph, classes = load_graph(args.graph, arguments)
     except GraphFileError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

@@ -241,13 +241,19 @@ def test_the_second_terminal_commands_run_as_written(private_endpoints, tmp_path
 
 
 @pytest.mark.slow
-def test_the_graph_file_example_runs(private_endpoints, tmp_path):
-    (example,) = blocks("toml")
-    graph = tmp_path / "example.toml"
-    graph.write_text(example)
-    result = python("-m", "actors.run", str(graph), "--clock", "virtual", "--duration", "2", env=private_endpoints)
-    assert result.returncode == 0, result.stderr
-    assert "[talker]: Publishing" in result.stdout
+def test_the_graph_file_examples_run(private_endpoints, tmp_path):
+    example, with_arguments = blocks("toml")
+    for name, text, argv, said in [
+        ("example", example, [], ["[talker]: Publishing"]),
+        ("args", with_arguments, ["who:=grace"], ["[talker_grace]: Publishing", "[robot1.constant_control]: sending"]),
+    ]:
+        graph = tmp_path / f"{name}.toml"
+        graph.write_text(text)
+        result = python(
+            "-m", "actors.run", str(graph), *argv, "--clock", "virtual", "--duration", "2", env=private_endpoints
+        )
+        assert result.returncode == 0, result.stderr
+        assert all(words in result.stdout for words in said), result.stdout
 
 
 def python_blocks(kind: str) -> list[str]:

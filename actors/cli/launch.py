@@ -79,17 +79,9 @@ def _show_args(path: Path) -> int:
     """Print the launch file's arguments as ``ros2 launch --show-args`` does."""
     from actors.compat.launch.loading import load_launch_file
     from actors.compat.overlay import overlaid
+    from actors.launch.graph_args import format_arguments
 
     with overlaid():
         declared = load_launch_file(str(path)).get_launch_arguments()
-    print("Arguments (pass arguments as '<name>:=<value>'):")
-    if not declared:
-        print("\n  No arguments.")
-    for argument in declared:
-        print(f"\n    '{argument.name}':")
-        print(f"        {argument.description}")
-        default = argument.default_text()
-        if argument.choices:
-            print(f"        Valid choices are: {argument.choices}")
-        print(f"        (default: {default})" if default is not None else "        (required)")
+    print(format_arguments((a.name, a.description, a.default_text(), a.choices) for a in declared))
     return 0

@@ -11,7 +11,7 @@ import msgspec
 from actors.core.explain import FILE_WORDS, explain
 from actors.errors import ActorsError
 
-__all__ = ["MAX_SECONDS", "load_toml"]
+__all__ = ["MAX_SECONDS", "load_toml", "read_toml", "convert_toml"]
 
 T = TypeVar("T")
 
@@ -31,6 +31,11 @@ def load_toml(path: str | Path, type_: type[T], error: type[ActorsError]) -> T:
     too deeply to read, an unknown or missing key (with the nearest known one),
     a value of the wrong type, out of range or not among the valid choices (listed).
     """
+    return convert_toml(read_toml(path, error), type_, path, error)
+
+
+def read_toml(path: str | Path, error: type[ActorsError]) -> dict[str, Any]:
+    """Read ``path`` as TOML into plain values (the first half of :func:`load_toml`)."""
     try:
         raw = Path(path).read_bytes()
     except OSError as exc:
@@ -42,11 +47,15 @@ def load_toml(path: str | Path, type_: type[T], error: type[ActorsError]) -> T:
             f"{path}: not UTF-8 text (byte {exc.start} is {raw[exc.start]:#04x}); TOML files are UTF-8"
         ) from None
     try:
-        data: Any = tomllib.loads(text)
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise error(f"{path}: TOML syntax error: {exc}") from None
     except RecursionError:
         raise error(f"{path}: values nested too deeply to read") from None
+
+
+def convert_toml(data: Any, type_: type[T], path: str | Path, error: type[ActorsError]) -> T:
+    """Decode plain values read from ``path`` into ``type_`` (the second half of :func:`load_toml`)."""
     try:
         return msgspec.convert(data, type_, strict=True)
     except msgspec.ValidationError as exc:

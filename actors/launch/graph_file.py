@@ -24,6 +24,16 @@ Every key is optional except each node's ``use``::
     restart = "transient"     # permanent, temporary
     delay = 0.0               # start this node so many seconds later (launch's TimerAction)
 
+    [args]                    # launch arguments: name:=value on the command line
+    speed = 0.2               # a default; or { default = 0.2, description = "...", choices = [...] }
+    world = { description = "the map" }   # no default: required
+    # "$(var speed)" in any value below is the argument's value (see actors.launch.graph_args)
+
+    [[include]]               # another graph file's nodes, before this file's own
+    file = "world.toml"       # relative to this file, or a shipped graph's name
+    args = { map = "signs" }  # its arguments
+    namespace = "robot1"      # pushed onto every node it gives
+
     [transport]               # other processes (and ROS 2 with rmw_zenoh_cpp) see this graph
     kind = "zenoh"
     domain_id = 0             # default: $ROS_DOMAIN_ID, else 0
@@ -32,10 +42,11 @@ Every key is optional except each node's ``use``::
     mode = "peer"             # or "client" (through a router)
     config = "zenoh.json5"    # a Zenoh config file for everything else (relative to this file)
 
-``use`` is found as :mod:`actors.launch.importing` says: the graph file's folder, then the
-working directory, then installed packages (``nodes`` and ``world`` are the
-shipped ``actors.nodes`` and ``actors.world`` when nothing else has them,
-and always for the shipped graphs).  ``load_graph`` also takes the bare name
+``use`` is found as :mod:`actors.launch.importing` says: the folder of the
+graph file that names it (an included file's, for its nodes), then the working
+directory, then installed packages (``nodes`` and ``world`` are the shipped
+``actors.nodes`` and ``actors.world`` when nothing else has them, and always
+for the shipped graphs); a ``params_file`` is beside the file that names it.  ``load_graph`` also takes the bare name
 of a shipped graph (``turtlebot``).
 
 Any error names the file, the key path and the problem, as one line.  Beyond
@@ -52,13 +63,15 @@ from __future__ import annotations
 import ast
 import inspect
 import textwrap
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
 import msgspec
 
-from actors.core.tomlfile import MAX_SECONDS, load_toml
+from actors.core.tomlfile import MAX_SECONDS, convert_toml, read_toml
 from actors.errors import GraphFileError, InvalidNameError, RosArgsError
+from actors.launch.graph_args import argument_values, declared_arguments, substitute
 from actors.launch.importing import find_graph, import_use
 from actors.launch.rosargs import load_params_file, node_key_matches, values_for
 from actors.messages.discovery import add_workspace
@@ -71,8 +84,10 @@ __all__ = [
     "SupervisorSection",
     "NodeEntry",
     "TransportSection",
+    "IncludeEntry",
     "GraphFile",
     "load_graph",
+    "argument_rows",
     "import_node_class",
     "default_node_name",
 ]
@@ -134,9 +149,22 @@ class TransportSection(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown
     config: str = ""
 
 
+class IncludeEntry(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
+    """``[[include]]``: another graph file's nodes, as launch's IncludeLaunchDescription gives them.
+
+    Only its ``[args]`` and nodes are read: how the graph runs is the including file's to say.
+    """
+
+    file: str
+    args: dict[str, Any] = {}
+    namespace: str = ""
+
+
 class GraphFile(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
     """A whole graph file."""
 
+    args: dict[str, Any] = {}  # as declared: actors.launch.graph_args reads them
+    include: list[IncludeEntry] = []
     runtime: RuntimeSection = RuntimeSection()
     supervisor: SupervisorSection = SupervisorSection()
     nodes: list[NodeEntry] = []
@@ -164,18 +192,19 @@ def import_node_class(use: str, graph: Path | None = None) -> type[Node]:
     return cls
 
 
-def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
+def load_graph(
+    path: str | Path, arguments: Mapping[str, Any] | Sequence[tuple[str, Any]] = ()
+) -> tuple[GraphFile, list[type[Node]]]:
     """Load and check a graph file: schema, values, names, and that every ``use`` imports.
 
-    Returns the decoded file and the node classes, in file order.  Raises
-    GraphFileError naming the file, the key path and the problem; nothing has
-    started then, so a graph with a mistake anywhere never starts half-way.
+    ``arguments`` give its ``[args]`` values (text from a command line is read
+    as YAML).  Returns the decoded file, with the nodes of its includes first
+    and ``$(var name)`` substituted, and the node classes, in that order.
+    Raises GraphFileError naming the file, the key path and the problem;
+    nothing has started then, so a graph with a mistake anywhere never starts half-way.
     """
-    try:
-        path = find_graph(path)
-    except FileNotFoundError as exc:
-        raise GraphFileError(str(exc)) from None
-    graph = load_toml(path, GraphFile, GraphFileError)
+    path = _find(path)
+    graph, sources = _read(Path(path), dict(arguments), ())
     add_workspace(Path(path).parent)  # the graph's workspace: its interface packages import by name
     if not graph.nodes:
         raise GraphFileError(f'{path}: no nodes: a graph needs at least one [[nodes]] table with use = "module:Class"')
@@ -187,13 +216,13 @@ def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
         graph = msgspec.structs.replace(graph, transport=msgspec.structs.replace(graph.transport, config=str(config)))
     classes = []
     nodes = list(graph.nodes)
-    taken: dict[str, int] = {}  # full node names known before start, and the entry that has each
+    taken: dict[str, str] = {}  # full node names known before start, and the entry that has each
     for i, entry in enumerate(graph.nodes):
-        key = f"nodes[{i}]"
+        origin, key = sources[i]
         try:
-            cls = import_node_class(entry.use, Path(path))
+            cls = import_node_class(entry.use, origin)
         except ValueError as exc:
-            raise GraphFileError(f"{path}: {key}.use: {exc}") from None
+            raise GraphFileError(f"{origin}: {key}.use: {exc}") from None
         classes.append(cls)
         try:
             if entry.name is not None:
@@ -201,27 +230,76 @@ def load_graph(path: str | Path) -> tuple[GraphFile, list[type[Node]]]:
             namespace = normalize_namespace(entry.namespace)
         except InvalidNameError as exc:
             field = "name" if entry.name is not None and "node name" in str(exc) else "namespace"
-            raise GraphFileError(f"{path}: {key}.{field}: {exc}") from None
+            raise GraphFileError(f"{origin}: {key}.{field}: {exc}") from None
         for source, target in entry.remap.items():
             try:
                 expand(source, namespace, entry.name or "node", what="remap source")
                 expand(target, namespace, entry.name or "node", what="remap target")
             except InvalidNameError as exc:
-                raise GraphFileError(f"{path}: {key}.remap.{source}: {exc}") from None
+                raise GraphFileError(f"{origin}: {key}.remap.{source}: {exc}") from None
         name = entry.name or default_node_name(cls)
         if entry.params_file is not None:
-            params = _file_params(Path(path).parent / entry.params_file, name, namespace, f"{path}: {key}")
+            params = _file_params(origin.parent / entry.params_file, name, namespace, f"{origin}: {key}")
             nodes[i] = msgspec.structs.replace(entry, params={**params, **entry.params})
         if name is not None:
             fqn = fully_qualified(namespace, name)
             if fqn in taken:
                 where = "name" if entry.name else "use"
                 raise GraphFileError(
-                    f"{path}: {key}.{where}: a node named {fqn} is already nodes[{taken[fqn]}]; "
+                    f"{origin}: {key}.{where}: a node named {fqn} is already {taken[fqn]}; "
                     "give one of them another name"
                 )
-            taken[fqn] = i
+            taken[fqn] = key if origin == Path(path) else f"{key} of {origin}"
     return msgspec.structs.replace(graph, nodes=nodes), classes
+
+
+def argument_rows(path: str | Path) -> list[tuple[str, str, str | None, list[Any] | None]]:
+    """The graph file's own arguments for :func:`~actors.launch.graph_args.format_arguments`."""
+    path = _find(path)
+    declared = declared_arguments(read_toml(path, GraphFileError).get("args", {}), str(path))
+    return [(name, arg.description, arg.default_text(), arg.choices) for name, arg in declared.items()]
+
+
+def _find(path: str | Path) -> Path:
+    try:
+        return find_graph(path)
+    except FileNotFoundError as exc:
+        raise GraphFileError(str(exc)) from None
+
+
+_MAX_INCLUDES = 32  # deep enough for any real tree of files; a cycle stops here at the latest
+
+
+def _read(path: Path, arguments: dict[str, Any], chain: tuple[Path, ...]) -> tuple[GraphFile, list[tuple[Path, str]]]:
+    """One file with its arguments applied and its includes' nodes before its own; beside each
+    node, the file it comes from and its key there."""
+    if len(chain) > _MAX_INCLUDES or path.resolve() in chain:
+        shown = " -> ".join(str(p) for p in (*chain, path.resolve()))
+        raise GraphFileError(f"{chain[-1]}: include: the files include each other: {shown}")
+    data = read_toml(path, GraphFileError)
+    declared = declared_arguments(data.get("args", {}), str(path))
+    values = argument_values(declared, arguments, str(path))
+    rest = substitute({k: v for k, v in data.items() if k != "args"}, values, str(path))
+    graph = convert_toml({**rest, "args": data.get("args", {})}, GraphFile, path, GraphFileError)
+    nodes: list[NodeEntry] = []
+    sources: list[tuple[Path, str]] = []
+    for i, include in enumerate(graph.include):
+        local = path.parent / include.file
+        try:
+            file = local if local.exists() else find_graph(include.file)
+        except FileNotFoundError as exc:
+            raise GraphFileError(f"{path}: include[{i}].file: {exc}") from None
+        included, origins = _read(file, include.args, (*chain, path.resolve()))
+        for entry, (origin, key) in zip(included.nodes, origins, strict=True):
+            if include.namespace:
+                namespace = "/".join(p.strip("/") for p in (include.namespace, entry.namespace) if p.strip("/"))
+                entry = msgspec.structs.replace(entry, namespace="/" + namespace)
+            nodes.append(entry)
+            sources.append((origin, key))
+    for i, entry in enumerate(graph.nodes):
+        nodes.append(entry)
+        sources.append((path, f"nodes[{i}]"))
+    return msgspec.structs.replace(graph, nodes=nodes), sources
 
 
 def _file_params(file: Path, name: str | None, namespace: str, where: str) -> dict[str, Any]:
