@@ -383,13 +383,33 @@ def load_yaml(text: str) -> Any:
         raise ValueError(" ".join(str(getattr(exc, "problem", None) or exc).split())) from None
 
 
-def dump_yaml(data: Any) -> str:
-    """Plain data as block-style YAML, keys in their order, as ROS tools print it (no line wrapping)."""
+def dump_yaml(data: Any, *, flow_style: bool = False) -> str:
+    """Plain data as block-style YAML, keys in their order, as ROS tools print it (no line wrapping).
+
+    ``flow_style`` writes sequences (and what they hold) in flow style, and
+    mappings outside them in block style: what ``ros2 topic echo --flow-style``
+    prints, its own representer leaving mappings to the block default.
+    """
     import sys
 
     import yaml
 
-    return yaml.safe_dump(data, sort_keys=False, default_flow_style=False, allow_unicode=True, width=sys.maxsize)
+    dumper = _FlowSequences() if flow_style else yaml.SafeDumper
+    return yaml.dump(
+        data, Dumper=dumper, sort_keys=False, default_flow_style=False, allow_unicode=True, width=sys.maxsize
+    )
+
+
+@_cache
+def _FlowSequences() -> type:  # a class, made once yaml is imported
+    import yaml
+
+    class FlowSequences(yaml.SafeDumper):
+        def represent_list(self, data: Any) -> Any:
+            return self.represent_sequence("tag:yaml.org,2002:seq", data, flow_style=True)
+
+    FlowSequences.add_representer(list, FlowSequences.represent_list)
+    return FlowSequences
 
 
 @_cache

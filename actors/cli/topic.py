@@ -4,9 +4,11 @@ from __future__ import annotations
 
 import argparse
 from collections.abc import Callable
+from types import CodeType
 from typing import TYPE_CHECKING, Any
 
 from actors.cli._client import add_type_and_find, add_verb, connect, graph_snapshot, print_names
+from actors.errors import ControlError
 
 if TYPE_CHECKING:
     from actors.cli._client import Connection
@@ -46,6 +48,26 @@ def register(subparsers: Any) -> None:
     echo.add_argument("--field", metavar="A.B", help="print only this field of each message")
     echo.add_argument("--no-arr", action="store_true", help="print each array field's type and length instead")
     echo.add_argument("--no-str", action="store_true", help="print each string field's length instead")
+    echo.add_argument(
+        "-l",
+        "--truncate-length",
+        type=_count,
+        default=TRUNCATE_LENGTH,
+        metavar="N",
+        help=f"cut arrays and strings after N elements, with '...' (default {TRUNCATE_LENGTH})",
+    )
+    echo.add_argument("-f", "--full-length", action="store_true", help="print arrays and strings whole")
+    echo.add_argument("--flow-style", action="store_true", help="print collections in YAML's flow style")
+    echo.add_argument("--csv", action="store_true", help="print each message's fields on one line, comma-separated")
+    echo.add_argument("--raw", action="store_true", help="print each message's serialized bytes (CDR)")
+    echo.add_argument(
+        "--filter",
+        dest="filter_expr",
+        type=_expression,
+        metavar="EXPR",
+        help="print only the messages m for which this Python expression is true, e.g. 'm.data > 2'",
+    )
+    echo.add_argument("--timeout", type=_positive, metavar="N", help="stop after N seconds")
 
     pub = add_verb(verbs, "pub", publish, help="publish a message, once or at a rate")
     pub.add_argument("topic", metavar="TOPIC")
@@ -75,6 +97,26 @@ def register(subparsers: Any) -> None:
             metavar="N",
             help="exit after N reports (default: run until interrupted)",
         )
+
+
+TRUNCATE_LENGTH = 128  # ros2 topic echo's default
+
+
+def _count(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"must be >= 0, got {value}")
+    return value
+
+
+def _expression(text: str) -> CodeType:
+    try:
+        return compile(text, "--filter", "eval")
+    except SyntaxError as exc:
+        raise argparse.ArgumentTypeError(f"not a Python expression: {text!r} ({exc.msg})") from None
 
 
 def _positive(text: str) -> float:
@@ -149,24 +191,53 @@ def echo_topic(args: argparse.Namespace) -> None:
     With ``TYPE`` the topic need not exist yet: the command waits for its
     first message, as ``ros2 topic echo TOPIC TYPE`` does.  ``--no-arr`` and
     ``--no-str`` print ros2's summaries (``<sequence type: float, length:
-    360>``, ``<string length: <5>>``) in place of arrays and strings.
+    360>``, ``<string length: <5>>``) in place of arrays and strings; arrays
+    and strings are cut after ``--truncate-length`` elements unless
+    ``--full-length``; ``--csv`` prints one line per message, ``--raw`` its
+    serialized bytes.  ``--filter`` is evaluated with ``m`` the message (or
+    its ``--field``), as ros2 evaluates it; ``--timeout`` ends the command
+    after so many seconds, messages or not.
     """
+    import time
+
     from actors import codec
-    from actors.cli._format import field, yaml_text
+    from actors.cli._format import csv_text, field, yaml_text
     from actors.ops.control import Subscribe
 
+    if args.raw and args.field:
+        raise ControlError("--raw prints whole messages: leave out --field")
+    truncate = None if args.full_length else args.truncate_length
+    deadline = None if args.timeout is None else time.monotonic() + args.timeout
     asked = codec.ros_name(codec.get_type(args.type)) if args.type else ""
     with connect(args.graph) as conn:
         msg_type = codec.get_type(conn.request(Subscribe(topic=args.topic, type=asked))["type"])
         while True:
-            sample = conn.sample()
-            assert sample is not None  # no timeout: waits for the next one
+            sample = conn.sample(None if deadline is None else max(0.0, deadline - time.monotonic()))
+            if sample is None:
+                return  # --timeout: the time to wait is over
             msg = codec.convert(sample.msg, msg_type)
             shown = field(msg, args.field) if args.field else msg
-            print(yaml_text(shown, no_arr=args.no_arr, no_str=args.no_str), end="")
-            print("---", flush=True)
+            if args.filter_expr is not None and not _passes(args.filter_expr, shown):
+                continue
+            if args.raw:
+                print(codec.encode_cdr(msg), end="\n---\n", flush=True)
+            elif args.csv:
+                print(csv_text(shown, no_arr=args.no_arr, no_str=args.no_str, truncate_length=truncate), flush=True)
+            else:
+                text = yaml_text(
+                    shown, no_arr=args.no_arr, no_str=args.no_str, truncate_length=truncate, flow_style=args.flow_style
+                )
+                print(text, end="---\n", flush=True)
             if args.once:
                 return
+
+
+def _passes(expression: CodeType, m: Any) -> bool:
+    """Whether ``--filter``'s expression holds for ``m``; ControlError naming what it raised."""
+    try:
+        return bool(eval(expression, {"m": m}))  # the user's own expression, as ros2 runs it
+    except Exception as exc:
+        raise ControlError(f"--filter: {type(exc).__name__}: {exc}") from None
 
 
 def publish(args: argparse.Namespace) -> None:
