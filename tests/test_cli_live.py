@@ -233,7 +233,8 @@ def test_topic_bw_counts_the_scans_cdr_bytes(graph):
 def test_topic_pub_once_and_times(graph):
     out = ok(graph, "topic", "pub", "/kill", "std_msgs/msg/Bool", "data: true", "--once")
     assert out == "publisher: beginning loop\npublishing #1: std_msgs.msg.Bool(data=True)\n\n"
-    out = ok(graph, "topic", "pub", "/cli_test", "std_msgs/msg/Int64", "{data: 7}", "-r", "50", "-t", "3")
+    # Nobody subscribes to /cli_test: -w 0 publishes anyway (-t would wait for one, as ros2's does).
+    out = ok(graph, "topic", "pub", "/cli_test", "std_msgs/msg/Int64", "{data: 7}", "-r", "50", "-t", "3", "-w", "0")
     assert re.findall(r"publishing #(\d): std_msgs\.msg\.Int64\(data=7\)", out) == ["1", "2", "3"]
 
 

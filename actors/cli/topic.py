@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from collections.abc import Callable
 from types import CodeType
 from typing import TYPE_CHECKING, Any
@@ -72,14 +73,31 @@ def register(subparsers: Any) -> None:
     pub = add_verb(verbs, "pub", publish, help="publish a message, once or at a rate")
     pub.add_argument("topic", metavar="TOPIC")
     pub.add_argument("type", metavar="TYPE", help="e.g. std_msgs/msg/Bool (must match an existing topic)")
-    pub.add_argument(
+    given = pub.add_mutually_exclusive_group()
+    given.add_argument(
         "values",
         metavar="VALUES",
         nargs="?",
         default="{}",
-        help='field values in YAML, e.g. "data: true" (default: all defaults)',
+        help='field values in YAML, e.g. "data: true" (default: all defaults); a header "auto" '
+        'and a time "now" are stamped as each message goes',
     )
+    given.add_argument("--stdin", action="store_true", help="read the values from standard input")
     pub.add_argument("-r", "--rate", type=_positive, default=1.0, help="publishing rate in Hz (default 1)")
+    pub.add_argument("-p", "--print", type=int, default=1, metavar="N", help="print only every N-th message (0: none)")
+    pub.add_argument(
+        "-w",
+        "--wait-matching-subscriptions",
+        type=_count,
+        metavar="N",
+        help="first wait for N subscriptions (default: 1 with --once or --times, else 0)",
+    )
+    pub.add_argument(
+        "--max-wait-time-secs", type=_positive, metavar="S", help="give up waiting for subscriptions after S seconds"
+    )
+    pub.add_argument(
+        "--keep-alive", type=_positive, default=0.1, metavar="S", help="stay S seconds after the last message (0.1)"
+    )
     pub.add_argument("-1", "--once", action="store_true", help="publish one message, then exit")
     pub.add_argument("-t", "--times", type=int, default=0, help="publish this many messages, then exit")
 
@@ -100,6 +118,7 @@ def register(subparsers: Any) -> None:
 
 
 TRUNCATE_LENGTH = 128  # ros2 topic echo's default
+_TIME = "builtin_interfaces/msg/Time"
 
 
 def _count(text: str) -> int:
@@ -240,36 +259,100 @@ def _passes(expression: CodeType, m: Any) -> bool:
         raise ControlError(f"--filter: {type(exc).__name__}: {exc}") from None
 
 
-def publish(args: argparse.Namespace) -> None:
+def publish(args: argparse.Namespace) -> int:
     """Publish ``VALUES`` as ``TYPE`` on ``TOPIC`` at ``--rate``, ``--times`` times (or forever).
 
     Prints ``publisher: beginning loop`` and then ``publishing #N: <repr>`` for
-    each message, as ``ros2 topic pub`` does.  Raises UnknownInterfaceError or
-    MessageValidationError (exit 2) before connecting for a bad type or value.
+    every ``--print``-th message, as ``ros2 topic pub`` does; with ``--once``
+    or ``--times`` it first waits for a subscription (``-w N``: for N), and
+    gives up after ``--max-wait-time-secs`` with ros2's words and exit code 1.
+    Raises UnknownInterfaceError or MessageValidationError (exit 2) before
+    connecting for a bad type or value.
     """
     import time
 
     from actors import codec
     from actors.cli._format import ros_repr
-    from actors.ops.control import Publish
+    from actors.ops.control import Publish, set_at
 
     msg_type = codec.get_type(args.type)
-    msg = codec.from_yaml(args.values, msg_type)
+    text = sys.stdin.read() if args.stdin else args.values
+    msg, stamps = _message(text, msg_type)
     times = 1 if args.once else args.times
-    request = Publish(topic=args.topic, type=codec.ros_name(msg_type), msg=codec.to_builtins(msg))
+    wanted = int(times != 0) if args.wait_matching_subscriptions is None else args.wait_matching_subscriptions
+    if args.max_wait_time_secs is not None and not wanted:
+        raise ControlError("--max-wait-time-secs works with --wait-matching-subscriptions, --once or --times")
+    fields = {"topic": args.topic, "type": codec.ros_name(msg_type), "msg": codec.to_builtins(msg)}
+    request = Publish(**fields, stamps=stamps)
     period = 1.0 / args.rate
     with connect(args.graph) as conn:
-        start = time.monotonic()  # the command's own pace, on the wall clock, as ros2's
-        conn.request(request)  # the graph refuses a topic of another type here, before anything is printed
+        # The graph refuses a topic of another type here, before anything is printed.
+        reached = conn.request(Publish(**fields, count_only=True))["subscribers"]
+        looks = 0  # ros2's pace: a look every 100 ms, a line every second
+        while reached < wanted:
+            if looks % 10 == 0:
+                print(f"Waiting for at least {wanted} matching subscription(s)...", flush=True)
+            if args.max_wait_time_secs is not None and looks / 10 >= args.max_wait_time_secs:
+                print(
+                    f"Timed out waiting for subscribers: Expected {wanted} subcribers but only got "
+                    f"{reached} subscribers",  # ros2's words, its typo too: scripts match them
+                    file=sys.stderr,
+                )
+                return 1
+            time.sleep(0.1)
+            looks += 1
+            reached = conn.request(Publish(**fields, count_only=True))["subscribers"]
         print("publisher: beginning loop")
-        count = 1
+        start = time.monotonic()  # the command's own pace, on the wall clock, as ros2's
+        count = 0
         while True:
-            print(f"publishing #{count}: {ros_repr(msg)}\n", flush=True)
-            if count == times:
-                return
-            time.sleep(max(0.0, start + count * period - time.monotonic()))
-            conn.request(request)
+            stamp = conn.request(request).get("stamp")
             count += 1
+            for path in stamps if stamp is not None else ():  # as the graph stamped it, for the line printed
+                set_at(msg, path, codec.convert(stamp, _TIME))
+            if args.print and count % args.print == 0:
+                print(f"publishing #{count}: {ros_repr(msg)}\n", flush=True)
+            if count == times:
+                break
+            time.sleep(max(0.0, start + count * period - time.monotonic()))
+    time.sleep(args.keep_alive)  # as ros2 lingers for its last message to reach the wire
+    return 0
+
+
+def _message(text: str, msg_type: type) -> tuple[Any, list[list[str | int]]]:
+    """The message ``text`` (YAML) gives, and the paths of the times to stamp as it is published:
+    a ``std_msgs/Header`` given as ``auto`` and a ``builtin_interfaces/Time`` given as ``now``."""
+    from actors import codec
+    from actors.messages._fields import MessageLayout, layout
+
+    try:
+        data = codec.load_yaml(text)
+    except ValueError:
+        data = None
+    if not isinstance(data, dict):
+        return codec.from_yaml(text, msg_type), []  # which says what is wrong with the text
+    stamps: list[list[str | int]] = []
+
+    def walk(values: dict[str, Any], message: MessageLayout, path: list[str | int]) -> None:
+        for field in message.fields:
+            value, nested = values.get(field.name), field.nested
+            if nested is None or value is None:
+                continue
+            if field.type.array:
+                for i, item in enumerate(value if isinstance(value, list) else []):
+                    if isinstance(item, dict):
+                        walk(item, nested, [*path, field.name, i])
+            elif value == "auto" and nested.ros_type == "std_msgs/msg/Header":
+                values[field.name] = {}
+                stamps.append([*path, field.name, "stamp"])
+            elif value == "now" and nested.ros_type == "builtin_interfaces/msg/Time":
+                values[field.name] = {}
+                stamps.append([*path, field.name])
+            elif isinstance(value, dict):
+                walk(value, nested, [*path, field.name])
+
+    walk(data, layout(msg_type), [])
+    return codec.convert(data, msg_type), stamps
 
 
 def topic_hz(args: argparse.Namespace) -> None:

@@ -49,7 +49,7 @@ import os
 import socket
 import stat
 import struct
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Sequence
 from contextlib import contextmanager, suppress
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Any, cast
@@ -98,6 +98,7 @@ __all__ = [
     "is_alive",
     "frame",
     "decode_reply",
+    "set_at",
 ]
 
 MAX_FRAME = 1 << 20
@@ -128,12 +129,18 @@ class Publish(Request, tag="publish"):
     """Publish ``msg`` (field values) on ``topic`` as ``type``, from the session's publisher.
 
     The publisher is made on first use and kept until the connection closes.
-    Result: ``{"subscribers": n}``.  Fails when the topic carries another type.
+    ``stamps`` are the paths (field names, list indices) of ``builtin_interfaces/Time``
+    fields set to the graph's clock as it publishes (``ros2 topic pub``'s ``auto``
+    headers and ``now`` stamps); ``count_only`` makes the publisher and publishes
+    nothing.  Result: ``{"subscribers": n}``, the subscriptions it reaches.  Fails
+    when the topic carries another type.
     """
 
     topic: str
     type: str
     msg: dict[str, Any] = {}
+    stamps: list[list[str | int]] = []
+    count_only: bool = False
 
 
 class Subscribe(Request, tag="subscribe"):
@@ -570,7 +577,7 @@ class _Session:
             msg_type = topic.msg_type
         return topic, msg_type
 
-    async def _publish(self, request: Publish) -> dict[str, int]:
+    async def _publish(self, request: Publish) -> dict[str, Any]:
         name = expand(request.topic, "/", "_")
         _, msg_type = self._topic(name, request.type)
         msg = codec.convert(request.msg, msg_type)  # before anything is made: a bad one leaves no trace
@@ -580,8 +587,13 @@ class _Session:
             self.runtime.topics.add_publisher(pub)
             self._publishers[name] = pub
             await self._reach_other_processes(pub)
+        if request.count_only:
+            return {"subscribers": pub.get_subscription_count()}
+        now = self.runtime.clock.now().to_msg()
+        for path in request.stamps:
+            set_at(msg, path, now)
         pub.publish(msg)
-        return {"subscribers": pub.get_subscription_count()}
+        return {"subscribers": pub.get_subscription_count(), "stamp": codec.to_builtins(now)}
 
     async def _reach_other_processes(self, pub: Publisher) -> None:
         """Give a new publisher a moment to find the subscriptions of other processes.
@@ -750,3 +762,16 @@ def _unlink_if_same(path: Path, inode: int) -> None:
     with suppress(OSError):
         if os.stat(path).st_ino == inode:
             path.unlink()
+
+
+def set_at(msg: Any, path: Sequence[str | int], value: Any) -> None:
+    """Set the field of ``msg`` that ``path`` names (names and list indices) to ``value``."""
+    target = msg
+    try:
+        for step in path[:-1]:
+            target = target[step] if isinstance(step, int) else getattr(target, step)
+        if not path or isinstance(path[-1], int) or type(getattr(target, path[-1])) is not type(value):
+            raise TypeError
+    except (AttributeError, IndexError, TypeError):
+        raise ControlError(f"stamps: {'.'.join(map(str, path))} is no time field of {type_name(type(msg))}") from None
+    setattr(target, path[-1], value)
