@@ -93,6 +93,23 @@ def test_list_prints_messages_then_services_then_actions(capsys):
     assert all(line.startswith("    ") for line in lines if not line.endswith(":"))
 
 
+@pytest.mark.parametrize(
+    ("flags", "titles"),
+    [
+        (["-m"], ["Messages:"]),
+        (["-s", "--only-actions"], ["Services:", "Actions:"]),
+        (["-a", "-m"], ["Messages:", "Actions:"]),
+    ],
+)
+def test_list_prints_only_the_kinds_asked_for_in_ros2s_order(capsys, flags, titles):
+    code, out, _ = run(capsys, "list", *flags)
+    lines = out.splitlines()
+    assert code == 0 and [line for line in lines if not line.startswith("    ")] == titles
+    kinds = {"Messages:": "/msg/", "Services:": "/srv/", "Actions:": "/action/"}
+    wanted = tuple(kinds[title] for title in titles)
+    assert all(any(kind in line for kind in wanted) for line in lines if line.startswith("    "))
+
+
 def test_generate_and_show_a_user_root(tmp_path, capsys, monkeypatch):
     for registry in ("_roots", "_types"):  # forget the registration afterwards
         monkeypatch.setattr(codec, registry, type(getattr(codec, registry))())

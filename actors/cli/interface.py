@@ -16,6 +16,10 @@ def register(subparsers: Any) -> None:
     root_help = "also search this generated interface root (repeatable)"
 
     listing = verbs.add_parser("list", help="list every message, service and action type")
+    # Not exclusive, as ros2's: -m -s lists messages, then services.
+    listing.add_argument("-m", "--only-msgs", action="store_true", help="list the messages")
+    listing.add_argument("-s", "--only-srvs", action="store_true", help="list the services")
+    listing.add_argument("-a", "--only-actions", action="store_true", help="list the actions")
     listing.add_argument("--root", action="append", default=[], type=Path, help=root_help)
     listing.set_defaults(func=list_types)
 
@@ -57,12 +61,22 @@ def register(subparsers: Any) -> None:
 
 
 def list_types(args: argparse.Namespace) -> None:
-    """Print ``Messages:``, ``Services:`` and ``Actions:``, each followed by its types indented four spaces."""
+    """Print ``Messages:``, ``Services:`` and ``Actions:`` (those that ``-m``/``-s``/``-a`` ask for),
+    each followed by its types indented four spaces."""
     from actors import codec
 
     _register_roots(args.root)
     names = codec.list_types()
-    for title, kind in (("Messages", "/msg/"), ("Services", "/srv/"), ("Actions", "/action/")):
+    sections = [
+        (title, kind)
+        for title, kind, only in (
+            ("Messages", "/msg/", args.only_msgs),
+            ("Services", "/srv/", args.only_srvs),
+            ("Actions", "/action/", args.only_actions),
+        )
+        if only or not (args.only_msgs or args.only_srvs or args.only_actions)
+    ]
+    for title, kind in sections:
         print(f"{title}:")
         for name in names:
             if kind in name:
