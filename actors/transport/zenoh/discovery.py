@@ -40,12 +40,12 @@ class Discovery:
     """Tokens of other processes, by key; ``on_change(token, appeared)`` hears each change."""
 
     def __init__(
-        self, own_zid: str, on_change: Callable[[Token, bool], None], on_bad: Callable[[str, str], None]
+        self, own_zid: str, on_change: Callable[[Token, bool], None], on_ignored: Callable[[str, str], None]
     ) -> None:
         self._own = own_zid
         self._tokens: dict[str, Token] = {}
         self._on_change = on_change
-        self._on_bad = on_bad  # (key, why): a token that is not rmw_zenoh's, logged once
+        self._on_ignored = on_ignored  # (kind of reason, why): a token ignored
 
     def put(self, key: str) -> None:
         """A token appeared (or was there when we asked)."""
@@ -54,7 +54,7 @@ class Discovery:
         try:
             token = parse_token(key)
         except ValueError as exc:
-            self._on_bad(key, str(exc))
+            self._on_ignored("not rmw_zenoh's", str(exc))
             return
         if token.zid == self._own:
             return

@@ -3,7 +3,9 @@
 One :class:`Link` per running transport.  It numbers entities as rmw_zenoh
 does (one counter per session for nodes and endpoints alike), holds the node
 tokens (a node's ``NN`` token lives while the node has an endpoint on the
-wire), and turns a local class into what the wire names it by.
+wire), and turns a local class into what the wire names it by.  Warnings
+about what other processes send go through its :class:`~.peer_warnings.PeerWarnings`;
+its own failures (a message it cannot encode) are logged once per endpoint.
 """
 
 from __future__ import annotations
@@ -21,8 +23,11 @@ from actors.transport.seam import Hub
 from actors.transport.zenoh.attachment import gid_of
 from actors.transport.zenoh.handoff import Handoff
 from actors.transport.zenoh.keys import data_key, endpoint_token, node_token
+from actors.transport.zenoh.peer_warnings import PeerWarnings
 
-__all__ = ["Link", "Endpoint", "wire_type"]
+__all__ = ["Link", "Endpoint", "wire_type", "peer_of", "shown"]
+
+_SHOWN = 200  # characters of what a peer wrote quoted in a warning
 
 
 @functools.lru_cache(maxsize=4096)
@@ -70,7 +75,8 @@ class Link:
         self.loop: asyncio.AbstractEventLoop = hub.loop
         self._next_id = 0
         self._nodes: dict[str, tuple[int, Any, int]] = {}  # fqn -> (node id, token, endpoints)
-        self._warned: set[tuple[str, str]] = set()
+        self._warned: set[tuple[str, str]] = set()  # our own failures: bounded by our endpoints
+        self.warnings = PeerWarnings(logger.warning, self.loop.call_later)
 
     def next_id(self) -> int:
         """The next entity id of this session."""
@@ -119,8 +125,19 @@ class Link:
             pass
 
     def warn_once(self, key: str, origin: str, text: str) -> None:
-        """Log ``text`` once per key expression and origin (a publisher's GID, a token)."""
+        """Log ``text`` once per key expression of ours and ``origin`` (what of ours failed)."""
         if (key, origin) in self._warned:
             return
         self._warned.add((key, origin))
         self.logger.warning(text)
+
+
+def peer_of(received: Any) -> str:
+    """The Zenoh id of the session a sample or query came from, where Zenoh tells it; else ``""``."""
+    info = received.source_info
+    return "" if info is None else str(info.source_id.zid)
+
+
+def shown(text: str) -> str:
+    """What a peer wrote (a key expression, or an error quoting one), cut short for a log line."""
+    return text if len(text) <= _SHOWN else f"{text[:_SHOWN]}... ({len(text)} characters)"

@@ -6,7 +6,7 @@ and queued for the server as a local call would be; the reply carries the
 response (CDR) and an attachment with the request's sequence number and the
 client's GID, as rmw_zenoh's clients match replies by them.  A handler that
 raises answers with a Zenoh error reply; a query that cannot be read is
-answered with one too (and logged once per client and key).
+answered with one too (and logged within the bounds of :mod:`.peer_warnings`).
 
 Calling.  While a server of a service runs elsewhere (an ``SS`` token of a
 type this process knows under the same hash) and none runs here, a
@@ -32,7 +32,7 @@ from actors.transport.seam import RemoteService, submit
 from actors.transport.zenoh.attachment import gid_of, pack, unpack
 from actors.transport.zenoh.discovery import Discovery, local_hash
 from actors.transport.zenoh.keys import Token, data_key
-from actors.transport.zenoh.link import Endpoint, Link
+from actors.transport.zenoh.link import Endpoint, Link, peer_of
 
 __all__ = ["ServiceBridge"]
 
@@ -101,11 +101,11 @@ class ServiceBridge:
             request = codec.decode_cdr(
                 payload.to_bytes() if payload is not None else b"", served.service.srv_type.Request
             )
-        except Exception as exc:  # anything a peer sends: answered with an error, logged once
-            link.warn_once(
+        except Exception as exc:  # anything a peer sends: answered with an error, logged within bounds
+            link.warnings.warn(
                 served.endpoint.key,
-                origin,
-                f"refused a malformed request on {served.endpoint.key} (client {origin}): {exc}",
+                peer_of(query),
+                f"refused a malformed request on {served.endpoint.key} (client {origin}, as it says): {exc}",
             )
             _finish(query, error=f"malformed request: {exc}")
             return

@@ -17,7 +17,8 @@ handoff, are decoded once and published to the local subscriptions by the
 topic's :class:`~actors.transport.seam.Inlet`.  Where a local subscription
 is transient-local, the subscriber is an advanced subscriber that fetches
 the history of late-joining publishers' caches.  A sample whose payload or
-attachment cannot be read is logged once per publisher and key, and dropped.
+attachment cannot be read is dropped, and logged within the bounds of
+:mod:`.peer_warnings` (a few lines per key, whatever GIDs it claims).
 
 Samples never loop back: publishers send to other sessions only, and
 subscribers hear only other sessions (local delivery stays in-process).
@@ -32,7 +33,7 @@ from actors.ros.qos import DurabilityPolicy, HistoryPolicy, ReliabilityPolicy
 from actors.ros.topics import Publisher, Subscription, Topic, TopicTable
 from actors.transport.seam import Inlet, Outlet
 from actors.transport.zenoh.attachment import pack, unpack
-from actors.transport.zenoh.link import Endpoint, Link
+from actors.transport.zenoh.link import Endpoint, Link, peer_of
 
 __all__ = ["TopicBridge"]
 
@@ -210,11 +211,11 @@ class TopicBridge:
             if raw is not None:
                 origin = unpack(raw.to_bytes())[2].hex()
             msg = codec.decode_cdr(sample.payload.to_bytes(), incoming.inlet.msg_type)
-        except Exception as exc:  # anything a peer sends: logged once per publisher, dropped
-            link.warn_once(
+        except Exception as exc:  # anything a peer sends: dropped, logged within the peer warnings' bounds
+            link.warnings.warn(
                 incoming.key,
-                origin,
-                f"dropped a malformed sample on {incoming.key} (publisher {origin}): {exc}",
+                peer_of(sample),
+                f"dropped a malformed sample on {incoming.key} (publisher {origin}, as it says): {exc}",
             )
             return
         incoming.inlet.publish(msg)

@@ -43,7 +43,8 @@ from actors.transport.zenoh.config import domain_id, load_zenoh, session_config
 from actors.transport.zenoh.discovery import Discovery
 from actors.transport.zenoh.handoff import Handoff
 from actors.transport.zenoh.keys import Token, graph_key
-from actors.transport.zenoh.link import Link
+from actors.transport.zenoh.link import Link, shown
+from actors.transport.zenoh.peer_warnings import PeerWarnings
 from actors.transport.zenoh.services import ServiceBridge
 from actors.transport.zenoh.topics import TopicBridge
 
@@ -62,7 +63,8 @@ class ZenohTransport:
     :mod:`actors.transport.zenoh.config`).  Starting raises TransportError
     when zenoh is not installed, a setting is wrong, the session cannot open,
     or the runtime is on virtual time.  ``zid`` is the session's id once
-    started.
+    started; ``warnings`` holds the bounded warnings about what other
+    processes sent (see :mod:`.peer_warnings`).
     """
 
     def __init__(self, section: TransportSection | None = None) -> None:
@@ -72,6 +74,7 @@ class ZenohTransport:
         self._discovery: Discovery | None = None
         self._topics: TopicBridge | None = None
         self._services: ServiceBridge | None = None
+        self.warnings: PeerWarnings | None = None
 
     async def __call__(
         self, runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any] = anyio.TASK_STATUS_IGNORED
@@ -94,7 +97,8 @@ class ZenohTransport:
         handoff = Handoff(runtime.loop, lambda exc: logger.error(f"zenoh transport: {exc!r}", exc_info=exc))
         link = Link(zenoh, session, domain, hub, handoff, runtime.clock.now_ns, logger)
         self.zid = link.zid
-        discovery = self._discovery = Discovery(link.zid, self._remote_changed, functools.partial(_bad_token, link))
+        self.warnings = link.warnings
+        discovery = self._discovery = Discovery(link.zid, self._remote_changed, functools.partial(_ignored, link))
         self._topics = TopicBridge(link, runtime.topics)
         self._services = ServiceBridge(link, runtime.services, discovery)
         try:
@@ -114,6 +118,7 @@ class ZenohTransport:
                 self._leave(runtime)
                 handoff.close()
                 link.undeclare(watch)
+                link.warnings.summarise()
         finally:
             with anyio.CancelScope(shield=True):
                 await anyio.to_thread.run_sync(session.close)
@@ -205,8 +210,8 @@ class ZenohTransport:
             self._services.remote_changed(token)
 
 
-def _bad_token(link: Link, key: str, why: str) -> None:
-    link.warn_once(key, "token", f"ignored a liveliness token that is not rmw_zenoh's: {why}")
+def _ignored(link: Link, reason: str, why: str) -> None:
+    link.warnings.warn(f"liveliness ({reason})", "", f"ignored a liveliness token ({reason}): {shown(why)}")
 
 
 def _tokens_now(liveliness: Any, key: str) -> list[str]:
