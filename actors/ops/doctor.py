@@ -23,6 +23,10 @@ check passes or fails with one reason per problem found:
   their counts per reason and the last sender;
 - callbacks that block the loop, named by node and callback (wall clock only:
   on virtual time the loop's clock stands still while a callback runs);
+- the transports' limits (each attachment that is a ``LimitSource``): liveliness
+  tokens of other processes ignored beyond the limit fail the check (the graph
+  seen is incomplete); warnings about what peers sent left out of the log are
+  warnings;
 - the control endpoint's limits (asked through the endpoint): running out of
   file descriptors fails the check; connections refused at the limit, closed
   for idleness, malformed requests and samples a slow reader lost are warnings;
@@ -49,6 +53,7 @@ from actors.ops._connections import ConnectionStats
 from actors.ros.names import is_hidden, is_hidden_name
 from actors.ros.qos import qos_incompatibility
 from actors.system.introspection import ActionInfo, EndpointInfo, NodeInfo, TopicInfo
+from actors.transport.seam import LimitSource
 
 if TYPE_CHECKING:
     from actors.runtime import Runtime
@@ -129,6 +134,7 @@ def diagnose(runtime: Runtime, monitor: LagMonitor | None = None, control: Conne
     events = tuple(monitor.events) if monitor is not None else ()
     if monitor is not None:
         checks.append(_lag(events))
+    checks.extend(_limits(source) for source in runtime.attachments if isinstance(source, LimitSource))
     if control is not None:
         checks.append(_control(control))
     missing = [f"{name} is not installed" for name in _REQUIRED if versions[name] == "not installed"]
@@ -263,6 +269,11 @@ def _lag(events: tuple[LagEvent, ...]) -> Check:
         for (node, callback), lags in sorted(worst.items())
     )
     return Check(name="callbacks blocking the loop", passed=not reasons, reasons=reasons)
+
+
+def _limits(source: LimitSource) -> Check:
+    reached, warnings = source.limits()
+    return Check(name="transport limits", passed=not reached, reasons=tuple(reached), warnings=tuple(warnings))
 
 
 def _control(stats: ConnectionStats) -> Check:

@@ -22,7 +22,9 @@ three kinds of endpoints of its own, all owned by one hidden :class:`Hub`:
 What a transport knows of other processes, it shows through
 :class:`GraphSource` (:class:`RemoteNode` and :class:`RemoteEndpoint`
 records), which the graph view merges with the local graph so that the
-command line and ``doctor`` see one graph.
+command line and ``doctor`` see one graph.  A transport that bounds what
+other processes make it keep says so through :class:`LimitSource`, which
+``doctor`` reports.
 """
 
 from __future__ import annotations
@@ -49,6 +51,7 @@ __all__ = [
     "RemoteEndpoint",
     "RemoteNode",
     "GraphSource",
+    "LimitSource",
     "Transport",
     "is_proxy",
     "submit",
@@ -230,6 +233,15 @@ class GraphSource(Protocol):
 
     def remote_nodes(self) -> list[RemoteNode]:
         """Every node seen in other processes now, sorted by name."""
+        ...
+
+
+@runtime_checkable
+class LimitSource(Protocol):
+    """Something with bounds on what other processes make it keep or log (a transport)."""
+
+    def limits(self) -> tuple[list[str], list[str]]:
+        """``(limits reached, warnings)``: what was left out because a bound was hit, one line each."""
         ...
 
 

@@ -12,6 +12,15 @@ Each endpoint is checked against this process's types: an endpoint whose
 type is unknown here, or known under another RIHS01 hash, cannot be read or
 written; it is shown with ``known=False`` and the reason (doctor reports it),
 and the transport leaves its data alone.
+
+Bounded.  It keeps at most :data:`MAX_FOREIGN_TOKENS` tokens: any peer that
+reaches the port may declare tokens, and each kept costs memory and a place
+in every answer.  A token beyond the limit is ignored (counted in
+``ignored``, said to ``on_ignored``, reported by doctor) until it is withdrawn;
+one that comes while there is room again is kept.  Zenoh's own liveliness
+state is not ours to bound: a bare Zenoh session subscribed to the same
+tokens grows as much (about 3 KB per token held, not all given back when they
+go), upstream.
 """
 
 from __future__ import annotations
@@ -24,7 +33,11 @@ from actors.errors import ActorsError
 from actors.transport.seam import RemoteEndpoint, RemoteNode
 from actors.transport.zenoh.keys import KINDS, Token, parse_token
 
-__all__ = ["Discovery", "local_hash"]
+__all__ = ["Discovery", "MAX_FOREIGN_TOKENS", "local_hash"]
+
+MAX_FOREIGN_TOKENS = 10_000
+"""Liveliness tokens of other processes kept at most: about 1,000 rclpy nodes, at about ten each
+(the node's own, its parameter services', /rosout's and /parameter_events')."""
 
 
 def local_hash(ros_type: str) -> tuple[type[Any] | None, str]:
@@ -46,6 +59,8 @@ class Discovery:
         self._tokens: dict[str, Token] = {}
         self._on_change = on_change
         self._on_ignored = on_ignored  # (kind of reason, why): a token ignored
+        self.limit = MAX_FOREIGN_TOKENS
+        self.ignored = 0  # tokens ignored for want of room, since the start
 
     def put(self, key: str) -> None:
         """A token appeared (or was there when we asked)."""
@@ -57,6 +72,10 @@ class Discovery:
             self._on_ignored("not rmw_zenoh's", str(exc))
             return
         if token.zid == self._own:
+            return
+        if len(self._tokens) >= self.limit:
+            self.ignored += 1
+            self._on_ignored("over the limit", f"{key}: at most {self.limit} tokens of other processes are kept")
             return
         self._tokens[key] = token
         self._on_change(token, True)

@@ -64,7 +64,8 @@ class ZenohTransport:
     when zenoh is not installed, a setting is wrong, the session cannot open,
     or the runtime is on virtual time.  ``zid`` is the session's id once
     started; ``warnings`` holds the bounded warnings about what other
-    processes sent (see :mod:`.peer_warnings`).
+    processes sent (see :mod:`.peer_warnings`), ``ignored_tokens`` counts
+    the liveliness tokens left out at the discovery's limit.
     """
 
     def __init__(self, section: TransportSection | None = None) -> None:
@@ -126,6 +127,27 @@ class ZenohTransport:
     def remote_nodes(self) -> list[RemoteNode]:
         """The nodes of other processes on this domain, as their tokens say (the GraphSource seam)."""
         return [] if self._discovery is None else self._discovery.remote_nodes()
+
+    @property
+    def ignored_tokens(self) -> int:
+        """Liveliness tokens of other processes ignored for want of room, since the start."""
+        return 0 if self._discovery is None else self._discovery.ignored
+
+    def limits(self) -> tuple[list[str], list[str]]:
+        """What doctor says of the transport's bounds: (limits reached, warnings) (the LimitSource seam)."""
+        reached = []
+        if self._discovery is not None and self._discovery.ignored:
+            reached.append(
+                f"{self._discovery.ignored} liveliness token(s) of other processes ignored: more than "
+                f"{self._discovery.limit} at once (their nodes and endpoints are missing from the graph)"
+            )
+        warnings = []
+        if self.warnings is not None and self.warnings.left_out:
+            warnings.append(
+                f"{self.warnings.left_out} of {self.warnings.seen} warning(s) about what other processes sent "
+                "left out of the log (rate-limited; the log has a summary)"
+            )
+        return reached, warnings
 
     # -- joining the tables -------------------------------------------------------------
 
