@@ -18,6 +18,16 @@
     graph's descriptors before, at their peak and after.  Every 50th probe
     also times a real ``actors node list`` process (Python's start included).
 
+``python -m bench.soak --round2 [--minutes 30]``
+    Issue 34's acceptance 6: the TurtleBot graph with the Zenoh transport, a
+    recorder and the live view; beside it a plain Zenoh peer declaring 500
+    liveliness tokens of fresh names and taking them back every 10 s, a
+    Foxglove viewer subscribed to every channel (20 s visits, again and
+    again), and every 10 s a control round (50 connections, a publish, a
+    subscription) and an ``actors topic echo /odom --once``.  Prints RSS and
+    descriptors every 10 s, the RSS slope over the last 20 minutes and the
+    descriptors' range.
+
 ``python -m bench.soak --stalled``
     Acceptance 3: five ``actors topic echo /scan`` processes whose output
     nobody reads, for 60 s; prints the graph's RSS growth beside the same 60 s
@@ -82,11 +92,11 @@ def slope(samples: list[tuple[float, int]]) -> float:
 class GraphProcess:
     """``python -m actors.run GRAPH`` in its own control directory; ``name`` is its endpoint name."""
 
-    def __init__(self, graph: Path, runtime_dir: Path) -> None:
+    def __init__(self, graph: Path, runtime_dir: Path, *options: str) -> None:
         self.name = graph.stem
         self.env = {**os.environ, "XDG_RUNTIME_DIR": str(runtime_dir), "PYTHONUNBUFFERED": "1"}
         self.proc = subprocess.Popen(
-            [sys.executable, "-m", "actors.run", str(graph)],
+            [sys.executable, "-m", "actors.run", str(graph), *options],
             cwd=ROOT,
             env=self.env,
             stdout=subprocess.DEVNULL,
@@ -342,11 +352,131 @@ def stalled(seconds: float = 60.0, readers: int = 5) -> None:
             print(f"{what}: RSS {before} KB -> {after} KB over {seconds:.0f} s: {after - before:+d} KB")
 
 
+# A plain Zenoh peer that declares tokens of fresh names and takes them back, round after round.
+_CHURN = """
+import json, sys, time
+import zenoh
+port, tokens = sys.argv[1], int(sys.argv[2])
+config = zenoh.Config()
+config.insert_json5("connect/endpoints", json.dumps([f"tcp/127.0.0.1:{port}"]))
+config.insert_json5("scouting/multicast/enabled", "false")
+session = zenoh.open(config)
+zid, round_ = str(session.info.zid()), 0
+while True:
+    declared = [
+        session.liveliness().declare_token(f"@ros2_lv/0/{zid}/0/{i}/NN/%/%/churn_{round_}_{i}") for i in range(tokens)
+    ]
+    time.sleep(5)
+    for token in declared:
+        token.undeclare()
+    round_ += 1
+    time.sleep(5)
+"""
+
+# A Foxglove viewer that subscribes to every channel and reads for a while, then leaves; again and again.
+_VIEWER = """
+import asyncio, json, sys
+import websockets
+
+async def visit(url):
+    async with websockets.connect(url, subprotocols=["foxglove.sdk.v1", "foxglove.websocket.v1"], max_size=None) as ws:
+        ids, loop = 0, asyncio.get_running_loop()
+        end = loop.time() + 20
+        while loop.time() < end:
+            try:
+                frame = await asyncio.wait_for(ws.recv(), timeout=1)
+            except asyncio.TimeoutError:
+                continue
+            if isinstance(frame, str):
+                message = json.loads(frame)
+                if message.get("op") == "advertise":
+                    subs = [{"id": (ids := ids + 1), "channelId": c["id"]} for c in message["channels"]]
+                    await ws.send(json.dumps({"op": "subscribe", "subscriptions": subs}))
+
+async def main(url):
+    while True:
+        try:
+            await visit(url)
+        except Exception as exc:
+            print(f"viewer: {exc!r}", file=sys.stderr, flush=True)
+        await asyncio.sleep(2)
+
+asyncio.run(main(sys.argv[1]))
+"""
+
+
+def _free_port() -> int:
+    import socket
+
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return int(sock.getsockname()[1])
+
+
+def round2(minutes: float) -> None:
+    """Issue 34's soak: TurtleBot with recorder, live view, Zenoh, a churning peer, a viewer, CLI loops."""
+    with tempfile.TemporaryDirectory() as tmp:
+        runtime_dir = Path(tmp) / "run"
+        runtime_dir.mkdir(mode=0o700)
+        zenoh_port, view_port = _free_port(), _free_port()
+        graph_file = Path(tmp) / "soak_turtlebot.toml"
+        graph_file.write_text(
+            (ROOT / "graphs/turtlebot.toml").read_text()
+            + f'\n[transport]\nkind = "zenoh"\nconnect = ["tcp/127.0.0.1:{zenoh_port}"]\n'
+            f'listen = ["tcp/127.0.0.1:{zenoh_port}"]\n'
+        )
+        bag = Path(tmp) / "soak.mcap"
+        graph = GraphProcess(graph_file, runtime_dir, "--record", str(bag), "--foxglove", str(view_port))
+        helpers = [
+            subprocess.Popen([sys.executable, "-c", _CHURN, str(zenoh_port), "500"], cwd=ROOT),
+            subprocess.Popen([sys.executable, "-c", _VIEWER, f"ws://127.0.0.1:{view_port}"], cwd=ROOT),
+        ]
+        try:
+            start = time.monotonic()
+            fds_before = fds(graph.pid)
+            samples: list[tuple[float, int]] = []
+            descriptors: list[int] = []
+            print(f"{'t (s)':>7} {'RSS (KB)':>9} {'fds':>4}  round")
+            while (now := time.monotonic() - start) < minutes * 60:
+                samples.append((now, rss_kb(graph.pid)))
+                descriptors.append(fds(graph.pid))
+                outcome = hammer_round(graph.path, connections=50)
+                with graph.connect() as conn:
+                    conn.graph()
+                subprocess.run(
+                    [sys.executable, "-m", "actors", "topic", "echo", "/odom", "--once", "--graph", graph.name],
+                    cwd=ROOT,
+                    env=graph.env,
+                    capture_output=True,
+                    timeout=60,
+                )
+                print(f"{now:7.0f} {samples[-1][1]:9d} {descriptors[-1]:4d}  {dict(outcome)}", flush=True)
+                time.sleep(max(0.0, SAMPLE_EVERY - (time.monotonic() - start - now)))
+            last = [(t, k) for t, k in samples if t >= samples[-1][0] - 20 * 60] or samples
+            print(f"RSS: {samples[0][1]} KB at start, {samples[-1][1]} KB at the end")
+            print(f"RSS slope over the last {(last[-1][0] - last[0][0]) / 60:.0f} min: {slope(last):.1f} KB/min")
+            print(
+                f"graph descriptors: {fds_before} at start, {min(descriptors)} to {max(descriptors)} while it ran, "
+                f"{fds(graph.pid)} at the end"
+            )
+        finally:
+            for helper in helpers:
+                helper.terminate()
+                helper.wait(timeout=30)
+            code = graph.stop()
+            print(f"graph exit code {code}, tracebacks in its log: {graph.tracebacks()}, bag {bag.stat().st_size} B")
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m bench.soak", description=__doc__.split("\n\n")[0])
     parser.add_argument("--minutes", type=float, default=10.0, help="how long the soak runs (default 10)")
     parser.add_argument("--connections", action="store_true", help="acceptance 2: 2,000 + 500 idle connections")
     parser.add_argument("--stalled", action="store_true", help="acceptance 3: five stalled readers for 60 s")
+    parser.add_argument(
+        "--round2",
+        action="store_true",
+        help="issue 34: TurtleBot, recorder, live view and viewer, a Zenoh peer churning tokens, CLI loops",
+    )
     args = parser.parse_args(argv)
     if not Path("/proc/self/status").exists():
         print("bench.soak reads /proc: Linux only", file=sys.stderr)
@@ -355,6 +485,8 @@ def main(argv: list[str] | None = None) -> int:
         connections()
     elif args.stalled:
         stalled()
+    elif args.round2:
+        round2(args.minutes)
     else:
         soak(args.minutes)
     return 0
