@@ -44,6 +44,18 @@ def test_a_native_node_as_a_shipped_packages_executable_takes_its_ros_arguments(
 
 
 @pytest.mark.slow
+def test_a_native_partner_of_a_native_program_stops_at_the_end_of_the_duration():
+    # It used to go on for ten seconds more: stopping it waited for a thread that only the run's end ended.
+    done = actors(
+        "run", "--clock", "virtual", "--duration", "3", "--with", "turtlesim turtlesim_node", "turtlesim", "draw_square"
+    )  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    stamps = [float(line.split("] [")[1]) for line in done.stderr.splitlines() if line.startswith("[INFO] [")]
+    assert any("[draw_square]: Reached goal" in line for line in done.stderr.splitlines())
+    assert stamps and max(stamps) <= 3.0, done.stderr
+
+
+@pytest.mark.slow
 @pytest.mark.parametrize(
     ("args", "problem"),
     [

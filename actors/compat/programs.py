@@ -137,8 +137,15 @@ def run_native(cls: type[Node], executable: str, params: dict[str, Any] | None =
     session = current_session()
     if session is None:
         raise PackageError(f"{executable}: a native node runs under actors run or actors launch")
+    from actors.compat.rclpy.utilities import get_default_context
+
     spawn_native(session, cls, executable, sys.argv[1:], params)
-    session.wait_until(lambda: False, None)  # until the run ends: Ctrl-C, --duration, a failure
+    # Until the run ends (Ctrl-C, --duration, a failure) or the launcher stops this program as it
+    # stops an rclpy one, by interrupting its context (a partner, once the main program has ended).
+    context = get_default_context()
+    waiter = session.waiter()
+    context.add_waker(waiter)
+    session.wait_until(lambda: context.interrupted, None, waiter)
 
 
 def spawn_native(

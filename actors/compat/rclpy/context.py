@@ -99,6 +99,11 @@ class Context:
         """Whether it is initialized and not shut down."""
         return self._ok
 
+    @property
+    def interrupted(self) -> bool:
+        """Whether :meth:`interrupt` stopped it (as a signal does)."""
+        return self._interrupted
+
     def track_node(self, node: _Node) -> None:
         """Destroy ``node`` when this context shuts down."""
         with self._lock:
