@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import pytest
@@ -28,6 +29,10 @@ class Visitor:
 
     def __init__(self) -> None:
         self.context = LaunchContext(service=self)
+        self.done: list[object] = []
+
+    def completed(self, action):
+        self.done.append(action)
 
     def visit(self, *entities):
         stack = list(reversed(entities))
@@ -137,3 +142,44 @@ def test_xml_and_yaml_read_into_the_same_actions(tmp_path: Path):
         description = load(str(tmp_path / name))
         assert Visitor().visit(description) == {"n": "1", "m": "12"}
         assert description.entities[1].where == f"{tmp_path / name}:3"
+
+
+def test_ros2_commands_become_actors_command_lines_only_when_no_ros2_is_on_the_path(tmp_path):
+    from actors.compat.launch.translation import holds_time, translated
+
+    environment = {"PATH": str(tmp_path)}
+    ours = [sys.executable, "-m", "actors"]
+    assert translated(["ros2", "param", "set", "a/b", "x", "1"], False, environment) == [
+        *ours, "param", "set", "a/b", "x", "1"
+    ]  # fmt: skip
+    assert translated(["ros2 service call ", "s", ' t "{x: 1, y: 2}"'], True, environment) == [
+        *ours, "service", "call", "s", "t", "{x: 1, y: 2}"
+    ]  # fmt: skip
+    for shell_line in ("ros2 topic list | grep chatter", "ros2 node list; ls", "ros2 node list > out"):
+        assert translated([shell_line], True, environment) is None, shell_line
+    assert translated(["echo", "ros2"], False, environment) is None
+    real = tmp_path / "ros2"
+    real.write_text("#!/bin/sh\n")
+    real.chmod(0o755)
+    assert translated(["ros2", "node", "list"], False, environment) is None
+    assert translated([str(real), "node", "list"], False, {"PATH": ""}) is None
+    # Requests hold virtual time while they run; what waits for the graph to move on does not.
+    assert holds_time([*ours, "service", "call", "s", "t", "{}"])
+    assert holds_time([*ours, "topic", "pub", "--once", "/x", "std_msgs/msg/Empty"])
+    assert not holds_time([*ours, "topic", "pub", "-r", "1", "/x", "std_msgs/msg/Empty"])
+    assert not holds_time([*ours, "topic", "echo", "/x"])
+    assert not holds_time([*ours, "launch", "pkg", "file.launch.py"])
+
+
+def test_find_executable_gives_a_path_stands_in_for_a_missing_ros2_and_names_any_other(tmp_path, monkeypatch):
+    from actors.compat.launch.substitutions import FindExecutable
+
+    tool = tmp_path / "tool"
+    tool.write_text("#!/bin/sh\n")
+    tool.chmod(0o755)
+    monkeypatch.setenv("PATH", str(tmp_path))
+    context = LaunchContext()
+    assert FindExecutable(name="tool").perform(context) == str(tool)
+    assert FindExecutable(name="ros2").perform(context) == "ros2"
+    with pytest.raises(LaunchFileError, match="executable 'nothere' not found on the PATH"):
+        FindExecutable(name="nothere").perform(context)

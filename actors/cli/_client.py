@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import functools
+import os
 import socket
 import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
@@ -24,6 +25,7 @@ import msgspec
 
 from actors.errors import ControlError
 from actors.ops.control import (
+    GRAPH_VARIABLE,
     Call,
     GetGraph,
     GraphSnapshot,
@@ -254,7 +256,7 @@ def _open(path: Path) -> socket.socket | None:
 
 
 def connect(graph: str | Path | None) -> Connection:
-    """A connection to the graph named ``graph``, or to the only one running when None.
+    """A connection to the graph named ``graph`` (when None: ``$ACTORS_GRAPH``, else the only one running).
 
     ``graph`` may also be the path of an endpoint's socket (``--transport``'s).
     Raises ControlError when no graph runs, when ``graph`` is not running, or
@@ -266,6 +268,7 @@ def connect(graph: str | Path | None) -> Connection:
             raise ControlError(f"cannot reach the endpoint at {graph}")
         return Connection(sock, "zenoh")
     paths = endpoint_paths()
+    graph = graph or os.environ.get(GRAPH_VARIABLE) or None
     if graph is not None:
         sock = _open(paths[graph]) if graph in paths else None
         if sock is None:

@@ -95,6 +95,8 @@ __all__ = [
     "ConnectionLimits",
     "endpoint_dir",
     "endpoint_paths",
+    "endpoint_name",
+    "GRAPH_VARIABLE",
     "is_alive",
     "frame",
     "decode_reply",
@@ -281,12 +283,21 @@ def endpoint_dir(*, create: bool = False) -> Path:
     return directory
 
 
+GRAPH_VARIABLE = "ACTORS_GRAPH"
+"""The environment variable naming the graph commands talk to when no ``--graph`` is given."""
+
+
+def endpoint_name(path: Path) -> str:
+    """The name the command line reaches the endpoint at ``path`` by (``--graph NAME``)."""
+    return path.name[: -len(_SUFFIX)]
+
+
 def endpoint_paths() -> dict[str, Path]:
     """The socket of every graph that may be running, by endpoint name (stale ones included)."""
     directory = endpoint_dir()
     if not directory.is_dir():
         return {}
-    return {path.name[: -len(_SUFFIX)]: path for path in sorted(directory.glob(f"*{_SUFFIX}"))}
+    return {endpoint_name(path): path for path in sorted(directory.glob(f"*{_SUFFIX}"))}
 
 
 LISTEN_BACKLOG = 1024
@@ -733,7 +744,7 @@ class ControlEndpoint:
             runtime.logger.warning(f"no control endpoint, the command line cannot reach this graph: {exc}")
             task_status.started()
             return
-        endpoint = path.name[: -len(_SUFFIX)]
+        endpoint = endpoint_name(path)
         if endpoint != _endpoint_base(runtime.name):
             runtime.logger.warning(
                 f"another graph named {runtime.name!r} is running: the command line reaches this one "

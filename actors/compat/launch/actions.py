@@ -208,6 +208,8 @@ class GroupAction(Action):
 class TimerAction(Action):
     """Actions visited ``period`` seconds (of the runtime's clock) from now."""
 
+    completes_later = True
+
     def __init__(
         self, *, period: Any, actions: Iterable[LaunchDescriptionEntity], cancel_on_shutdown: bool = True, **kwargs: Any
     ) -> None:
@@ -221,7 +223,7 @@ class TimerAction(Action):
             seconds = float(text)
         except ValueError:
             raise LaunchFileError(f"{self.where}: TimerAction period {text!r} is not a number of seconds") from None
-        context.service.after(seconds, self.actions, context)
+        context.service.after(seconds, self.actions, context, self)
 
 
 class LogInfo(Action):
@@ -237,6 +239,8 @@ class LogInfo(Action):
 
 class ExecuteProcess(Action):
     """A real subprocess: ``cmd`` (words, each text or substitutions), with ``cwd``, ``env``, ``shell``."""
+
+    completes_later = True
 
     def __init__(
         self,
@@ -280,7 +284,7 @@ class ExecuteProcess(Action):
             if words
             else "process"
         )
-        context.service.start_process(self, name, words, environment, cwd, self.shell, context)
+        context.service.start_process(self, name, words, environment, cwd, self.shell, str(self.output))
 
 
 class RegisterEventHandler(Action):

@@ -78,10 +78,16 @@ class Action(LaunchDescriptionEntity):
         """ROS's actions know their parent; nothing here needs it."""
         return None
 
+    completes_later = False
+    """Whether it is done only later (a process when it exits, a timer when it fires), not once executed."""
+
     def visit(self, context: LaunchContext) -> Sequence[LaunchDescriptionEntity] | None:
         if self.condition is not None and not self.condition.evaluate(context):
             return None
-        return self.execute(context)
+        result = self.execute(context)
+        if not self.completes_later and context.service is not None:
+            context.service.completed(self)
+        return result
 
     def execute(self, context: LaunchContext) -> Sequence[LaunchDescriptionEntity] | None:
         """What the action does; its result is visited next."""

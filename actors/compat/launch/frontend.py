@@ -12,6 +12,7 @@ is a LaunchFileError naming file and line.
 from __future__ import annotations
 
 import os
+import shlex
 import xml.parsers.expat
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -218,6 +219,7 @@ _SUBSTITUTIONS: dict[str, tuple[int, int, Callable[[list[list[Any]], Tag], Subst
     "dirname": (0, 0, lambda a, t: _this_file(substitutions.ThisLaunchFileDir, t)),
     "filename": (0, 0, lambda a, t: _this_file(substitutions.ThisLaunchFile, t)),
     "eval": (1, 1, lambda a, t: substitutions.PythonExpression(a[0])),
+    "find-exec": (1, 1, lambda a, t: substitutions.FindExecutable(name=a[0])),
     "not": (1, 1, lambda a, t: substitutions.NotSubstitution(a[0])),
     "and": (2, 2, lambda a, t: substitutions.AndSubstitution(a[0], a[1])),
     "or": (2, 2, lambda a, t: substitutions.OrSubstitution(a[0], a[1])),
@@ -356,13 +358,45 @@ def _executable(tag: Tag) -> LaunchDescriptionEntity:
     environment = {env.need("name"): parse_substitutions(env.need("value"), env) for env in tag.subs("env")}
     command = str(tag.need("cmd"))
     return actions.ExecuteProcess(
-        cmd=[parse_substitutions(word, tag) for word in command.split()],
+        cmd=_command_words(command, tag),
         name=_text(tag, "name"),
         cwd=_text(tag, "cwd"),
         additional_env=environment,
         shell=_flag(tag, "shell", False),
         output=tag.get("output", "log"),
     )
+
+
+def _command_words(command: str, tag: Tag) -> list[list[Any]]:
+    """A ``cmd`` as ROS's launch splits it: its text by shell quoting rules, a substitution part of the
+    word it touches."""
+    words: list[list[Any]] = []
+    word: list[Any] = []
+
+    def close() -> None:
+        nonlocal word
+        if word:
+            words.append(word)
+        word = []
+
+    for part in parse_substitutions(command, tag):
+        if not isinstance(part, str):
+            word.append(part)
+            continue
+        try:
+            tokens = shlex.split(part)
+        except ValueError as exc:
+            raise LaunchFileError(f"{tag.where}: cmd {command!r}: {exc}") from None
+        if part[0].isspace():
+            close()
+        for index, token in enumerate(tokens):
+            if index:
+                close()
+            word.append(token)
+        if part[-1].isspace():
+            close()
+    close()
+    return words
 
 
 def _timer(tag: Tag) -> LaunchDescriptionEntity:

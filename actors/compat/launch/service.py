@@ -22,6 +22,7 @@ takes no wall time; a subprocess's exit is heard when it happens, in real time.
 
 from __future__ import annotations
 
+import concurrent.futures
 import os
 import shutil
 import signal
@@ -39,8 +40,16 @@ from typing import Any
 import yaml
 
 from actors.compat.launch.entities import Event, EventHandler, LaunchContext, LaunchDescription, LaunchDescriptionEntity
-from actors.compat.launch.events import ProcessExited, ProcessStarted, Shutdown
+from actors.compat.launch.events import (
+    ExecutionComplete,
+    ProcessExited,
+    ProcessStarted,
+    ProcessStderr,
+    ProcessStdout,
+    Shutdown,
+)
 from actors.compat.launch.loading import load_launch_file
+from actors.compat.launch.translation import graph_environment, holds_time, translated
 from actors.compat.partners import Partner
 from actors.compat.programs import Program, load_target, program_of, spawn_native
 from actors.compat.rclpy.context import current_session
@@ -51,6 +60,12 @@ from actors.launch.packages import Executable, Package, find_executable, find_pa
 from actors.ros.node import Node as NativeNode
 
 __all__ = ["LaunchProgram", "LaunchService", "find_launch_file", "parse_launch_arguments"]
+
+IDLE = "idle"
+SIGINT = "ctrl-c (SIGINT)"
+END_OF_RUN = "the runtime ended"
+_EXIT_GRACE = 5.0  # real seconds the exits of stopped processes are waited for, to be reported
+_LAST_EVENTS = 1000  # events handled at most after the shutdown (a handler that emits forever)
 
 
 def find_launch_file(words: Sequence[str]) -> tuple[Path, list[str]]:
@@ -144,6 +159,8 @@ class LaunchService:
         self._shutdown: str | None = None
         self._folder = tempfile.mkdtemp(prefix="actors-launch-")
         self._executables: dict[tuple[str, str], tuple[Executable, Package]] = {}
+        self._pool = concurrent.futures.ThreadPoolExecutor(thread_name_prefix="actors launch process")
+        self._waits: list[concurrent.futures.Future[None]] = []
 
     # -- the main loop -------------------------------------------------------------------
 
@@ -161,6 +178,11 @@ class LaunchService:
                     with self._lock:
                         work = self._queue.popleft()
                     work()
+            # ROS's launch's reason when nothing is left to do; or the runtime stopped (it failed).
+            self._handle(Shutdown(reason=IDLE if self.session.running else END_OF_RUN))
+        except KeyboardInterrupt:
+            self._handle(Shutdown(reason=SIGINT, due_to_sigint=True))
+            raise
         finally:
             self._stop_all()
 
@@ -208,8 +230,15 @@ class LaunchService:
         """A line of launch's own, as ROS's launch prints it."""
         print(f"[{level}] [{logger}]: {text}", file=sys.stderr, flush=True)
 
-    def after(self, seconds: float, entities: Sequence[LaunchDescriptionEntity], context: LaunchContext) -> None:
-        """Visit ``entities`` ``seconds`` of runtime clock from now, with the launch configurations of now."""
+    def after(
+        self,
+        seconds: float,
+        entities: Sequence[LaunchDescriptionEntity],
+        context: LaunchContext,
+        action: Any = None,
+    ) -> None:
+        """Visit ``entities`` ``seconds`` of runtime clock from now, with the launch configurations of now;
+        then ``action`` (the timer) is complete."""
         snapshot = dict(context.launch_configurations)
         self._timers += 1
 
@@ -223,6 +252,8 @@ class LaunchService:
                 self.visit(entities, context)
             finally:
                 context.pop_configurations()
+            if action is not None:
+                self.completed(action)
 
         self.session.wake_after(seconds, lambda: self.post(due))
 
@@ -230,15 +261,32 @@ class LaunchService:
         """Handle ``event`` once the current visit is done."""
         self.post(lambda: self._handle(event))
 
+    def completed(self, action: Any) -> None:
+        """``action`` is done: its ExecutionComplete, for the handlers that wait for it."""
+        event = ExecutionComplete(action=action)
+        if any(handler.matches(event) for handler in self.handlers):
+            self.emit(event)
+
     def _handle(self, event: Event) -> None:
+        if isinstance(event, Shutdown):
+            if self._shutdown is not None:  # the launch shuts down once: later asks change nothing
+                return
+            self._shutdown = event.reason
+            if event.due_to_sigint:  # Ctrl-C, or the end of --duration (which stops a run as Ctrl-C does)
+                self.log("launch", f"user interrupted with {SIGINT}", level="WARNING")
+            elif event.reason not in (IDLE, END_OF_RUN):
+                self.log("launch", f"shutting down: {event.reason}" if event.reason else "shutting down")
         for handler in list(self.handlers):
             if handler.matches(event):
-                entities = handler.handle(event, self.context)
-                if entities:
-                    self.visit(entities, self.context)
-        if isinstance(event, Shutdown) and self._shutdown is None:
-            self._shutdown = event.reason
-            self.log("launch", f"shutting down: {event.reason}" if event.reason else "shutting down")
+                # The handler's entities see the event as the local ``event`` (LocalSubstitution).
+                saved = self.context.locals
+                self.context.locals = {**saved, "event": event}
+                try:
+                    entities = handler.handle(event, self.context)
+                    if entities:
+                        self.visit(entities, self.context)
+                finally:
+                    self.context.locals = saved
 
     def params_file(self, values: dict[str, Any]) -> str:
         """A ROS parameter file holding ``values`` for every node (what launch_ros writes for a dict)."""
@@ -257,7 +305,9 @@ class LaunchService:
         respawn: bool,
         respawn_delay: float,
     ) -> None:
-        """Start a package's executable as a node of this launch."""
+        """Start a package's executable as a node of this launch (nothing starts once it shuts down)."""
+        if self._shutdown is not None:
+            return
         program = program_of(executable, package.source, package.installed_prefix)
         self._counts[label] += 1
         name = f"{label}-{self._counts[label]}"
@@ -290,21 +340,60 @@ class LaunchService:
         environment: dict[str, str],
         cwd: str | None,
         shell: bool,
-        context: LaunchContext,
+        output: str,
     ) -> None:
-        """Start a real subprocess."""
+        """Start a real subprocess; its output lines are events, and shown as ``output`` says (as ROS's launch).
+
+        Nothing starts once the launch shuts down."""
+        if self._shutdown is not None:
+            return
         self._counts[label] += 1
         name = f"{label}-{self._counts[label]}"
+        command = " ".join(words) if shell else words
+        ours = translated(words, shell, environment)
+        if ours is not None:
+            command, environment, shell = ours, {**environment, **graph_environment(self.session.runtime)}, False
         try:
-            process = subprocess.Popen(" ".join(words) if shell else words, cwd=cwd, env=environment, shell=shell)
+            process = subprocess.Popen(
+                command, cwd=cwd, env=environment, shell=shell, stdout=subprocess.PIPE, stderr=subprocess.PIPE
+            )
         except OSError as exc:
             raise LaunchFileError(f"{action.where}: ExecuteProcess {words}: {exc.strerror or exc}") from None
         running = _Running(action, name, process.pid, " ".join(words), process=process)
         self._running.append(running)
         self.log(name, f"process started with pid [{process.pid}]")
         self.emit(ProcessStarted(action=action, name=name, pid=process.pid))
-        # A bare thread (no script thread: it holds no virtual time) waits for the exit in real time.
-        threading.Thread(target=lambda: self._exited(running, process.wait()), daemon=True).start()
+        shown = {1: output in ("screen", "both", "full"), 2: output != "own_log"}
+        # Pool workers are no script threads: they hold no virtual time while they wait for lines.
+        readers = [
+            self._pool.submit(self._read, running, pipe, fd, shown[fd])
+            for pipe, fd in ((process.stdout, 1), (process.stderr, 2))
+        ]
+
+        def wait() -> int:
+            code = process.wait()
+            concurrent.futures.wait(readers)  # every line is heard before the exit
+            return code
+
+        if ours is not None and holds_time(ours) and self.session.running:
+            # One of actors' commands against this graph: an executor job of the runtime's, so virtual
+            # time stands still until it ends (the graph still answers it), as if it took no time.
+            job = self.session.call(self.session.loop.run_in_executor, None, wait)
+            job.add_done_callback(lambda done: self._exited(running, done.result()))
+        else:
+            # Waited for in real time, on a pool worker: a process of its own takes the time it takes.
+            self._waits.append(self._pool.submit(lambda: self._exited(running, wait())))
+
+    def _read(self, running: _Running, pipe: Any, fd: int, shown: bool) -> None:
+        # On a reader thread: each line is an event (OnProcessIO), and shown when the output says so.
+        kind = ProcessStdout if fd == 1 else ProcessStderr
+        stream = sys.stdout if fd == 1 else sys.stderr
+        for line in iter(pipe.readline, b""):
+            if shown:
+                text = line.decode(errors="replace").rstrip("\n")
+                print(f"[{running.name}] {text}", file=stream, flush=True)
+            self.emit(kind(action=running.action, name=running.name, pid=running.pid, text=line, fd=fd))
+        pipe.close()
 
     def _exited(self, running: _Running, code: int) -> None:
         # From the node's or the process's own thread: the rest happens on the main thread.
@@ -320,6 +409,7 @@ class LaunchService:
                     level="ERROR",
                 )
             self.emit(ProcessExited(action=running.action, name=running.name, pid=running.pid, returncode=code))
+            self.completed(running.action)
             if running.respawn is not None and self._shutdown is None:
                 respawn = running.respawn
                 self._timers += 1
@@ -358,4 +448,18 @@ class LaunchService:
             except subprocess.TimeoutExpired:
                 process.kill()
                 process.wait()
+        for running in self._running:
+            if running.native is not None:  # stopped with the runtime, as a node ends on Ctrl-C
+                running.native = None
+                self._exited(running, 0)
+        # What they did on the way out is heard: exit lines, and the handlers of their exits (as on
+        # ROS, OnProcessExit runs during a shutdown; nothing new starts).
+        concurrent.futures.wait(self._waits, timeout=_EXIT_GRACE)
+        for _ in range(_LAST_EVENTS):
+            with self._lock:
+                if not self._queue:
+                    break
+                work = self._queue.popleft()
+            work()
+        self._pool.shutdown(wait=False)
         shutil.rmtree(self._folder, ignore_errors=True)

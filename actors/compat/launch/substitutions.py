@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import os
+import shutil
 from collections.abc import Iterable
 from typing import Any
 
@@ -23,6 +24,8 @@ __all__ = [
     "PathJoinSubstitution",
     "PythonExpression",
     "EnvironmentVariable",
+    "FindExecutable",
+    "LocalSubstitution",
     "ThisLaunchFileDir",
     "ThisLaunchFile",
     "NotSubstitution",
@@ -121,6 +124,44 @@ class EnvironmentVariable(Substitution):
         if self.default_value is not None:
             return perform_substitutions(context, self.default_value)
         raise LaunchFileError(f"{self.where or 'launch'}: environment variable {name!r} does not exist")
+
+
+ROS2 = "ros2"
+"""The command the launcher runs as actors' own when no ``ros2`` is on the PATH (see the service)."""
+
+
+class FindExecutable(Substitution):
+    """The path of an executable on the PATH; a missing ``ros2`` stands as the bare word ``ros2``."""
+
+    def __init__(self, *, name: Any) -> None:
+        self.name = normalize_to_list_of_substitutions(name)
+        self.where = caller_location()
+
+    def perform(self, context: LaunchContext) -> str:
+        name = perform_substitutions(context, self.name)
+        found = shutil.which(name, path=context.environment.get("PATH"))
+        if found is not None:
+            return found
+        if name == ROS2:  # the launcher translates ros2 commands onto actors' command line
+            return name
+        raise LaunchFileError(f"{self.where or 'launch'}: executable {name!r} not found on the PATH")
+
+
+class LocalSubstitution(Substitution):
+    """A context local by expression (``event.reason`` in an event handler's entities)."""
+
+    def __init__(self, expression: str, description: str | None = None) -> None:
+        self.expression = expression
+        self.where = caller_location()
+
+    def perform(self, context: LaunchContext) -> str:
+        try:
+            # The launch file's own expression over the context's locals, as ROS's launch evaluates it.
+            return str(eval(self.expression, {}, context.get_locals_as_dict()))
+        except Exception as exc:
+            raise LaunchFileError(
+                f"{self.where or 'launch'}: LocalSubstitution {self.expression!r}: {type(exc).__name__}: {exc}"
+            ) from None
 
 
 class ThisLaunchFile(Substitution):

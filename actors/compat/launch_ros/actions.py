@@ -16,7 +16,16 @@ from actors.compat.launch.entities import (
 )
 from actors.errors import LaunchFileError, PackageError
 
-__all__ = ["Node", "PushRosNamespace", "SetParameter", "SetRemap", "NAMESPACE", "PARAMETERS", "REMAPS"]
+__all__ = [
+    "Node",
+    "PushRosNamespace",
+    "PushROSNamespace",
+    "SetParameter",
+    "SetRemap",
+    "NAMESPACE",
+    "PARAMETERS",
+    "REMAPS",
+]
 
 # Kept among the launch configurations, so that a scoped group forgets them with the rest.
 NAMESPACE = "__actors_ros_namespace"
@@ -103,6 +112,8 @@ def _flatten(prefix: str, values: dict[str, Any], out: dict[str, Any]) -> None:
 
 class Node(Action):
     """A package's executable, run as a node of the launch (in this runtime): rclpy's or a native one."""
+
+    completes_later = True
 
     def __init__(
         self,
@@ -195,3 +206,7 @@ class Node(Action):
             respawn = perform_substitutions(context, respawn).strip().lower() in ("true", "1")
         label = perform_substitutions(context, self.exec_name) if self.exec_name else executable
         context.service.start_node(self, found, where, argv, label, respawn, float(self.respawn_delay or 0.0))
+
+
+PushROSNamespace = PushRosNamespace
+"""The name launch_ros gives it since Jazzy (the older one stays)."""
