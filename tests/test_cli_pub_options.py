@@ -117,3 +117,27 @@ def test_max_wait_without_a_wait_is_refused(tmp_path):
     done = pub(env, "nograph", "/topic", "std_msgs/msg/String", "--max-wait-time-secs", "1")
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert "--max-wait-time-secs works with --wait-matching-subscriptions, --once or --times" in done.stderr
+
+
+@pytest.mark.slow
+def test_qos_options_make_a_latched_publisher_and_a_subscription_that_asks_otherwise(graphs):
+    argv = ["--once", "-w", "0", "--keep-alive", "60", "--qos-durability", "transient_local", "--graph", "wall"]
+    latched = subprocess.Popen(
+        [sys.executable, "-m", "actors", "topic", "pub", *argv, "/latched", "std_msgs/msg/String", "data: kept"],
+        cwd=ROOT,
+        env=graphs,
+        stdout=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        assert latched.stdout is not None
+        assert "publishing #1" in latched.stdout.readline() + latched.stdout.readline()
+        # Published before either echo subscribed: only a transient-local subscription gets it.
+        late = ["topic", "echo", "/latched", "--once", "--timeout", "20", "--graph", "wall"]
+        kept = actors(graphs, *late, "--qos-durability", "transient_local", "--qos-reliability", "reliable")
+        assert kept.returncode == 0 and kept.stdout == "data: kept\n---\n", kept.stderr
+        volatile = actors(graphs, *late[:-4], "--timeout", "1", "--graph", "wall", "--qos-durability", "volatile")
+        assert volatile.returncode == 0 and volatile.stdout == "", volatile.stdout
+    finally:
+        latched.terminate()
+        latched.wait(timeout=30)

@@ -69,6 +69,7 @@ def register(subparsers: Any) -> None:
         help="print only the messages m for which this Python expression is true, e.g. 'm.data > 2'",
     )
     echo.add_argument("--timeout", type=_positive, metavar="N", help="stop after N seconds")
+    _add_qos_arguments(echo, "subscribe", "sensor_data")
 
     pub = add_verb(verbs, "pub", publish, help="publish a message, once or at a rate")
     pub.add_argument("topic", metavar="TOPIC")
@@ -98,6 +99,7 @@ def register(subparsers: Any) -> None:
     pub.add_argument(
         "--keep-alive", type=_positive, default=0.1, metavar="S", help="stay S seconds after the last message (0.1)"
     )
+    _add_qos_arguments(pub, "publish", "default")
     pub.add_argument("-1", "--once", action="store_true", help="publish one message, then exit")
     pub.add_argument("-t", "--times", type=int, default=0, help="publish this many messages, then exit")
 
@@ -119,6 +121,44 @@ def register(subparsers: Any) -> None:
 
 TRUNCATE_LENGTH = 128  # ros2 topic echo's default
 _TIME = "builtin_interfaces/msg/Time"
+
+
+def _add_qos_arguments(parser: argparse.ArgumentParser, doing: str, preset: str) -> None:
+    """ros2's ``--qos-*`` options: a preset, and policies in its place."""
+    from actors.ros.qos import DurabilityPolicy, HistoryPolicy, LivelinessPolicy, QoSPresetProfiles, ReliabilityPolicy
+
+    parser.add_argument(
+        "--qos-profile", choices=QoSPresetProfiles.short_keys(), help=f"the preset to {doing} with (default {preset})"
+    )
+    parser.add_argument("--qos-depth", type=int, metavar="N", help="the queue's depth, in place of the preset's")
+    for policy, cls in (
+        ("history", HistoryPolicy),
+        ("reliability", ReliabilityPolicy),
+        ("durability", DurabilityPolicy),
+        ("liveliness", LivelinessPolicy),
+    ):
+        parser.add_argument(f"--qos-{policy}", choices=cls.short_keys(), help=f"the {policy}, in place of the preset's")
+    parser.add_argument(
+        "--qos-liveliness-lease-duration-seconds", type=float, metavar="S", help="the liveliness lease, in seconds"
+    )
+    parser.set_defaults(qos_preset=preset)
+
+
+def _qos_choice(args: argparse.Namespace) -> Any:
+    """The ``QoSChoice`` the ``--qos-*`` options make; None when none is given (the graph chooses)."""
+    from actors.ops.control import QoSChoice
+
+    given = {
+        "depth": args.qos_depth,
+        "history": args.qos_history,
+        "reliability": args.qos_reliability,
+        "durability": args.qos_durability,
+        "liveliness": args.qos_liveliness,
+        "lease_seconds": args.qos_liveliness_lease_duration_seconds,
+    }
+    if args.qos_profile is None and all(value is None for value in given.values()):
+        return None
+    return QoSChoice(profile=args.qos_profile or args.qos_preset, **given)
 
 
 def _count(text: str) -> int:
@@ -229,7 +269,8 @@ def echo_topic(args: argparse.Namespace) -> None:
     deadline = None if args.timeout is None else time.monotonic() + args.timeout
     asked = codec.ros_name(codec.get_type(args.type)) if args.type else ""
     with connect(args.graph) as conn:
-        msg_type = codec.get_type(conn.request(Subscribe(topic=args.topic, type=asked))["type"])
+        request = Subscribe(topic=args.topic, type=asked, qos=_qos_choice(args))
+        msg_type = codec.get_type(conn.request(request)["type"])
         while True:
             sample = conn.sample(None if deadline is None else max(0.0, deadline - time.monotonic()))
             if sample is None:
@@ -282,7 +323,12 @@ def publish(args: argparse.Namespace) -> int:
     wanted = int(times != 0) if args.wait_matching_subscriptions is None else args.wait_matching_subscriptions
     if args.max_wait_time_secs is not None and not wanted:
         raise ControlError("--max-wait-time-secs works with --wait-matching-subscriptions, --once or --times")
-    fields = {"topic": args.topic, "type": codec.ros_name(msg_type), "msg": codec.to_builtins(msg)}
+    fields = {
+        "topic": args.topic,
+        "type": codec.ros_name(msg_type),
+        "msg": codec.to_builtins(msg),
+        "qos": _qos_choice(args),
+    }
     request = Publish(**fields, stamps=stamps)
     period = 1.0 / args.rate
     with connect(args.graph) as conn:
@@ -315,7 +361,9 @@ def publish(args: argparse.Namespace) -> int:
             if count == times:
                 break
             time.sleep(max(0.0, start + count * period - time.monotonic()))
-    time.sleep(args.keep_alive)  # as ros2 lingers for its last message to reach the wire
+        # The publisher lives as long as the connection: as ros2's node lingers, for the last message
+        # to reach the wire and a transient-local one to reach late subscribers.
+        time.sleep(args.keep_alive)
     return 0
 
 

@@ -65,7 +65,7 @@ from actors.core.tomlfile import MAX_SECONDS
 from actors.errors import ActorsError, ControlError, InterfaceError
 from actors.ops._connections import Connection, ConnectionLimits, ConnectionPool, ConnectionStats
 from actors.ros.names import expand
-from actors.ros.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from actors.ros.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy, profile_from_short_keys
 from actors.ros.topics import Publisher, Subscription, type_name
 from actors.services import Client
 from actors.system.introspection import NodeInfo, ServiceInfo, TopicInfo
@@ -82,6 +82,7 @@ __all__ = [
     "GetGraph",
     "GetNode",
     "Publish",
+    "QoSChoice",
     "Subscribe",
     "Call",
     "Diagnose",
@@ -127,10 +128,44 @@ class GetNode(Request, tag="node"):
     name: str
 
 
+class QoSChoice(msgspec.Struct, frozen=True, kw_only=True, forbid_unknown_fields=True):
+    """``--qos-*`` of ``topic echo`` and ``topic pub``: a preset and the policies that override it,
+    by rclpy's short keys (``sensor_data``, ``best_effort``)."""
+
+    profile: str
+    depth: Annotated[int, msgspec.Meta(ge=0, le=100_000)] | None = None
+    history: str | None = None
+    reliability: str | None = None
+    durability: str | None = None
+    liveliness: str | None = None
+    lease_seconds: Annotated[float, msgspec.Meta(ge=0, le=1e9)] | None = None
+
+    def overrides(self) -> bool:
+        """Whether a policy is given besides the preset."""
+        given = (self.depth, self.history, self.reliability, self.durability, self.liveliness, self.lease_seconds)
+        return any(value is not None for value in given)
+
+    def qos(self) -> QoSProfile:
+        """The profile; ControlError naming an unknown key."""
+        try:
+            return profile_from_short_keys(
+                self.profile,
+                history=self.history,
+                depth=self.depth,
+                reliability=self.reliability,
+                durability=self.durability,
+                liveliness=self.liveliness,
+                lease_seconds=self.lease_seconds,
+            )
+        except KeyError as exc:
+            raise ControlError(f"qos: unknown short key {exc}") from None
+
+
 class Publish(Request, tag="publish"):
     """Publish ``msg`` (field values) on ``topic`` as ``type``, from the session's publisher.
 
     The publisher is made on first use and kept until the connection closes.
+    ``qos`` is the publisher's profile (default: rclpy's default, depth 10).
     ``stamps`` are the paths (field names, list indices) of ``builtin_interfaces/Time``
     fields set to the graph's clock as it publishes (``ros2 topic pub``'s ``auto``
     headers and ``now`` stamps); ``count_only`` makes the publisher and publishes
@@ -143,6 +178,7 @@ class Publish(Request, tag="publish"):
     msg: dict[str, Any] = {}
     stamps: list[list[str | int]] = []
     count_only: bool = False
+    qos: QoSChoice | None = None  # the publisher's, when this request makes it (default: depth 10)
 
 
 class Subscribe(Request, tag="subscribe"):
@@ -151,13 +187,16 @@ class Subscribe(Request, tag="subscribe"):
     ``content=False`` streams stamps only (what ``topic hz`` needs).  With a
     ``type`` (``echo TOPIC TYPE``) the topic need not exist yet, as in ROS;
     without one, a topic that does not exist fails, and so does a topic of
-    another type.
+    another type.  The subscription's QoS is chosen to match every publisher
+    (see ``_subscribe``); a ``qos`` with policies of its own is taken as it is,
+    one with a preset only gives its depth and history, as ``ros2 topic echo`` does.
     """
 
     topic: str
     content: bool = True
     depth: Annotated[int, msgspec.Meta(ge=1, le=10_000)] = 100
     type: str = ""
+    qos: QoSChoice | None = None
 
 
 class Call(Request, tag="call"):
@@ -594,7 +633,8 @@ class _Session:
         msg = codec.convert(request.msg, msg_type)  # before anything is made: a bad one leaves no trace
         pub = self._publishers.get(name)
         if pub is None:
-            pub = Publisher(cast(Owner, self), name, msg_type, QoSProfile(depth=10))  # see _Session
+            qos = request.qos.qos() if request.qos is not None else QoSProfile(depth=10)
+            pub = Publisher(cast(Owner, self), name, msg_type, qos)  # see _Session
             self.runtime.topics.add_publisher(pub)
             self._publishers[name] = pub
             await self._reach_other_processes(pub)
@@ -630,11 +670,13 @@ class _Session:
         latched = (
             request.content and bool(pubs) and all(p.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in pubs)
         )
-        qos = QoSProfile(
-            depth=max(1, request.depth),
-            reliability=ReliabilityPolicy.BEST_EFFORT,
-            durability=DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE,
-        )
+        choice = request.qos
+        if choice is not None and choice.overrides():
+            qos = choice.qos()
+        else:
+            qos = choice.qos() if choice is not None else QoSProfile(depth=max(1, request.depth))
+            qos.reliability = ReliabilityPolicy.BEST_EFFORT
+            qos.durability = DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE
         clock = self.runtime.clock
         content = request.content
         post = self.connection.post

@@ -18,6 +18,7 @@ topic table when the endpoint joins its topic (see ``actors.ros.topics``).
 
 from __future__ import annotations
 
+import copy
 import warnings
 from enum import Enum, IntEnum
 from typing import Any
@@ -58,6 +59,7 @@ __all__ = [
     "QoSPresetProfiles",
     "QoSCompatibility",
     "qos_check_compatible",
+    "profile_from_short_keys",
     "as_qos",
     "incompatible_policies",
     "qos_incompatibility",
@@ -501,6 +503,36 @@ class QoSPresetProfiles(Enum):
     def get_from_short_key(cls, name: str) -> QoSProfile:
         """The preset of a short key, any case; KeyError for an unknown one."""
         return cls[name.upper()].value
+
+
+def profile_from_short_keys(
+    preset: str,
+    *,
+    history: str | None = None,
+    depth: int | None = None,
+    reliability: str | None = None,
+    durability: str | None = None,
+    liveliness: str | None = None,
+    lease_seconds: float | None = None,
+) -> QoSProfile:
+    """A copy of the preset named ``preset`` (``sensor_data``) with the policies given in its place,
+    by their short keys: what ``ros2 topic``'s ``--qos-*`` options make.  KeyError for an unknown key."""
+    profile = copy.copy(QoSPresetProfiles.get_from_short_key(preset))
+    if history:
+        profile.history = HistoryPolicy.get_from_short_key(history)
+    if durability:
+        profile.durability = DurabilityPolicy.get_from_short_key(durability)
+    if reliability:
+        profile.reliability = ReliabilityPolicy.get_from_short_key(reliability)
+    if liveliness:
+        profile.liveliness = LivelinessPolicy.get_from_short_key(liveliness)
+    if lease_seconds and lease_seconds >= 0:
+        profile.liveliness_lease_duration = Duration(seconds=lease_seconds)
+    if depth and depth >= 0:
+        profile.depth = depth
+    elif profile.durability == DurabilityPolicy.TRANSIENT_LOCAL and profile.depth == 0:
+        profile.depth = 1  # as ros2's: a latched topic keeps its last message at least
+    return profile
 
 
 # -- compatibility ---------------------------------------------------------------------
