@@ -3,12 +3,10 @@
 from __future__ import annotations
 
 from actors import DurabilityPolicy, Node, QoSProfile
-from actors.ros.tf_buffer import BufferCore
+from actors.ros.tf_buffer import LISTENER_AUTHORITY, BufferCore
 from interfaces.tf2_msgs.msg import TFMessage
 
 __all__ = ["feed"]
-
-AUTHORITY = "default_authority"
 
 
 def feed(node: Node) -> BufferCore:
@@ -17,11 +15,11 @@ def feed(node: Node) -> BufferCore:
 
     def dynamic(message: TFMessage) -> None:
         for transform in message.transforms:
-            buffer.set_transform(transform, AUTHORITY)
+            buffer.set_transform(transform, LISTENER_AUTHORITY)
 
     def static(message: TFMessage) -> None:
         for transform in message.transforms:
-            buffer.set_transform_static(transform, AUTHORITY)
+            buffer.set_transform_static(transform, LISTENER_AUTHORITY)
 
     node.create_subscription(TFMessage, "/tf", dynamic, QoSProfile(depth=100))
     latched = QoSProfile(depth=100, durability=DurabilityPolicy.TRANSIENT_LOCAL)

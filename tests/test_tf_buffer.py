@@ -19,6 +19,7 @@ from actors.errors import (
     InvalidArgumentException,
     LookupException,
 )
+from actors.ops.tf_frames import frames_dot
 from actors.ros.tf_buffer import BufferCore
 from actors.ros.time import Duration, Time
 from interfaces.builtin_interfaces.msg import Time as TimeMsg
@@ -26,7 +27,7 @@ from interfaces.geometry_msgs.msg import TransformStamped
 from interfaces.tf2_msgs.msg import TFMessage
 from nodes.static_transform_publisher import StaticTransformPublisher, parse_args
 from nodes.tf2_echo import Tf2Echo
-from nodes.view_frames import ViewFrames, frames_dot
+from nodes.view_frames import ViewFrames
 
 NS = 1_000_000_000
 

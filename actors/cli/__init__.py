@@ -29,6 +29,7 @@ GROUPS = (
     "run",
     "pkg",
     "bag",
+    "tf",
     "daemon",
 )
 

@@ -1,3 +1,3 @@
-"""Operating a running graph: the control endpoint the CLI talks to, its connections, and doctor."""
+"""Operating a running graph: the control endpoint the CLI talks to, its connections, doctor, the tf tree's drawing."""
 
 __all__: list[str] = []

@@ -40,6 +40,7 @@ from interfaces.geometry_msgs.msg import Quaternion, Transform, TransformStamped
 
 __all__ = [
     "DEFAULT_CACHE_TIME",
+    "LISTENER_AUTHORITY",
     "Vec",
     "Quat",
     "BufferCore",
@@ -51,6 +52,7 @@ __all__ = [
 ]
 
 DEFAULT_CACHE_TIME = 10.0  # seconds, tf2's BufferCore::DEFAULT_CACHE_TIME
+LISTENER_AUTHORITY = "default_authority"  # what tf2_ros's Python listener records (view_frames' "Broadcaster")
 _NS = 1_000_000_000
 _MAX_DEPTH = 1000  # tf2's MAX_GRAPH_DEPTH: deeper means a loop
 _NORMALIZED = 10e-3  # tf2's QUATERNION_NORMALIZATION_TOLERANCE

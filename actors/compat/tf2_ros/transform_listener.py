@@ -8,13 +8,13 @@ from typing import Any
 from actors.compat.rclpy.callback_groups import ReentrantCallbackGroup
 from actors.compat.rclpy.executors import SingleThreadedExecutor
 from actors.ros.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
+from actors.ros.tf_buffer import LISTENER_AUTHORITY
 from interfaces.tf2_msgs.msg import TFMessage
 
 __all__ = ["TransformListener", "DEFAULT_TF_TOPIC", "DEFAULT_STATIC_TF_TOPIC"]
 
 DEFAULT_TF_TOPIC = "/tf"
 DEFAULT_STATIC_TF_TOPIC = "/tf_static"
-_AUTHORITY = "default_authority"
 
 
 class TransformListener:
@@ -68,8 +68,8 @@ class TransformListener:
 
     def callback(self, data: TFMessage) -> None:
         for transform in data.transforms:
-            self.buffer.set_transform(transform, _AUTHORITY)
+            self.buffer.set_transform(transform, LISTENER_AUTHORITY)
 
     def static_callback(self, data: TFMessage) -> None:
         for transform in data.transforms:
-            self.buffer.set_transform_static(transform, _AUTHORITY)
+            self.buffer.set_transform_static(transform, LISTENER_AUTHORITY)
