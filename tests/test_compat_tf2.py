@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import math
+import os
 import re
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 from conftest import ROOT, python_env
@@ -14,6 +16,7 @@ from actors.compat import overlaid
 from interfaces.geometry_msgs.msg import PointStamped, PoseStamped, TransformStamped, Vector3Stamped
 
 SCRIPTS = ROOT / "scripts"
+RIG = ROOT / "tests" / "rclpy_scripts"
 GRAPH = str(ROOT / "graphs" / "turtlesim.toml")
 
 
@@ -184,3 +187,78 @@ def test_turtlesim_and_its_teleop_run_as_ros2_run_starts_them():
     assert "Use arrow keys to move the turtle." in done.stdout
     x, y = where_turtle1(done.stdout)
     assert (round(x, 3), round(y, 3)) == (7.496, 5.544)  # 2 m/s for a second, forward from the centre
+
+
+def frames(dump: str) -> dict[str, dict[str, str]]:
+    """The last ``all_frames_as_yaml`` dump of the output: each frame's parent and rate, as printed."""
+    found: dict[str, dict[str, str]] = {}
+    for child, parent, rate in re.findall(
+        r"^(\w+): \n  parent: '(\w+)'\n  broadcaster: '\w+'\n  rate: (\S+)", dump, re.M
+    ):
+        found[child] = {"parent": parent, "rate": rate}
+    return found
+
+
+@pytest.mark.slow
+def test_broadcasters_shaped_like_examples_tf2_pys_run_and_their_frames_add_up():
+    # Our programs make examples_tf2_py's calls: a tuple of static transforms; a TransformBroadcaster
+    # fed by a JointState subscription, beside a 20 Hz timer's node in one SingleThreadedExecutor;
+    # `with rclpy.init()`; a Buffer without a node, a listener without a thread, all_frames_as_yaml.
+    done = actors_run(
+        "--clock",
+        "virtual",
+        "--duration",
+        "2.5",
+        "--with",
+        str(RIG / "rig_static.py"),
+        "--with",
+        str(RIG / "rig_pan.py"),
+        str(RIG / "rig_watch.py"),
+    )
+    assert (done.returncode, done.stderr) == (0, ""), done.stderr
+    tree = frames(done.stdout)
+    parents = {child: f["parent"] for child, f in tree.items()}
+    # the encoder's "tilt" moves no frame
+    assert parents == {"mast": "base"} | dict.fromkeys(["camera", "lidar", "pan_left", "pan_right"], "mast")
+    assert tree["camera"]["rate"] == "10000.000"  # static: tf2's rate for one sample
+    assert tree["pan_left"]["rate"] == "20.526"  # 39 stamps, 0.05 s to 1.95 s: tf2's count over span
+    numbers = re.findall(r"^lidar->camera at 0\.0: (.*)$", done.stdout, re.M)
+    # the camera, turned 30 degrees on the mast, seen from the lidar, turned -90: 120 degrees, 0.1 m to its left
+    x, y, z, qx, qy, qz, qw = map(float, numbers[-1].split())
+    assert (x, y, z) == (pytest.approx(0.0, abs=1e-12), pytest.approx(0.1), pytest.approx(-0.05))
+    assert (qx, qy, qz, qw) == (0.0, 0.0, pytest.approx(math.sin(math.radians(60))), pytest.approx(0.5))
+    head = re.findall(r"^base->pan_left at (\S+): (.*)$", done.stdout, re.M)
+    stamp, values = float(head[-1][0]), [float(v) for v in head[-1][1].split()]
+    assert stamp == 1.95 and values == pytest.approx([0.0, 0.2, 0.5, 0.0, 0.0, math.sin(0.975), math.cos(0.975)])
+
+
+GEOMETRY2 = os.environ.get("ACTORS_GEOMETRY2", "")
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(
+    not GEOMETRY2,
+    reason="ros2/geometry2's examples_tf2_py is on no package registry and its code stays out of this "
+    "repository: set ACTORS_GEOMETRY2 to a checkout of ros2/geometry2 to run its programs unmodified",
+)
+def test_geometry2s_examples_tf2_py_broadcasters_run_unmodified(tmp_path):
+    package = Path(GEOMETRY2) / "examples_tf2_py"
+    assert (package / "setup.py").is_file(), f"ACTORS_GEOMETRY2={GEOMETRY2} holds no examples_tf2_py package"
+    (tmp_path / "src").mkdir()
+    (tmp_path / "src" / "examples_tf2_py").symlink_to(package)  # a workspace around the checkout, as colcon's
+    run = [sys.executable, "-m", "actors", "run", "--clock", "virtual", "--duration", "2.5"]
+    static, dynamic = "examples_tf2_py static_broadcaster", "examples_tf2_py dynamic_broadcaster"
+    given = {"cwd": tmp_path, "env": python_env(), "capture_output": True, "text": True, "timeout": 120}
+    done = subprocess.run([*run, "--with", static, "--with", dynamic, "examples_tf2_py", "frame_dumper"], **given)
+    assert (done.returncode, done.stderr) == (0, ""), done.stderr
+    tree = frames(done.stdout)
+    parents = {child: f["parent"] for child, f in tree.items()}
+    on_the_platform = dict.fromkeys(["camera", "sonar_0", "sonar_1", "sonar_2"], "platform")
+    assert parents == on_the_platform | dict.fromkeys(["platform", "port_wheel", "starboard_wheel"], "base_link")
+    assert tree["port_wheel"]["rate"] == "30.517"  # 59 stamps at 30 Hz, 1/30 s to 59/30 s: count over span
+    echo = subprocess.run([*run, "--with", static, "tf2_ros", "tf2_echo", "platform", "sonar_2"], **given)
+    assert echo.returncode == 0, echo.stderr
+    # sonar_2 sits 45 degrees right of ahead, 5 cm out, turned by the quaternion the program writes out
+    assert (
+        "- Translation: [0.035, -0.035, 0.000]\n- Rotation: in Quaternion [0.000, 0.000, -0.487, 0.873]" in echo.stdout
+    )
