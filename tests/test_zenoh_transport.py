@@ -62,7 +62,8 @@ async def test_malformed_samples_are_dropped_and_logged_once_per_key_then_summed
     warnings = [r.getMessage() for r in caplog.records if r.levelno >= logging.WARNING]
     assert len(warnings) == 2, warnings  # the first, then what was left out when the transport closed
     assert "malformed sample" in warnings[0] and bytes(16).hex() in warnings[0] and TOPIC_KEY in warnings[0]
-    assert warnings[1].startswith(f"left out 3 more warning(s) like these in 0 s: 3 on {TOPIC_KEY}")
+    assert warnings[1].startswith("left out 3 more warning(s) like these in ")
+    assert f" s: 3 on {TOPIC_KEY}" in warnings[1]
 
 
 @pytest.mark.slow
