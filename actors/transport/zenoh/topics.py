@@ -13,7 +13,10 @@ loop waits, as an rclcpp publish would), anything else drops.
 
 In.  Each topic with local subscriptions gets one Zenoh subscriber (and an
 ``MS`` token per subscription); samples cross to the loop through the
-handoff, are decoded once and published to the local subscriptions by the
+handoff, in a backlog of the topic's largest subscription depth (KEEP_ALL:
+:data:`KEEP_ALL_BACKLOG`): a peer that sends faster than the loop decodes
+pushes out the oldest, which a subscription of that depth would not have
+kept anyway, and never grows the graph.  They are decoded once and published to the local subscriptions by the
 topic's :class:`~actors.transport.seam.Inlet`.  Where a local subscription
 is transient-local, the subscriber is an advanced subscriber that fetches
 the history of late-joining publishers' caches.  A sample whose payload or
@@ -26,6 +29,8 @@ subscribers hear only other sessions (local delivery stays in-process).
 
 from __future__ import annotations
 
+import functools
+from collections import deque
 from typing import Any
 
 from actors import codec
@@ -38,6 +43,8 @@ from actors.transport.zenoh.link import Endpoint, Link, peer_of
 __all__ = ["TopicBridge"]
 
 _HEARTBEAT = 0.5  # seconds: rmw_zenoh's sample-miss heartbeat for RELIABLE + TRANSIENT_LOCAL
+KEEP_ALL_BACKLOG = 10_000
+"""Samples of a topic that may wait for the loop when a local subscription keeps all."""
 
 
 class _Out:
@@ -53,16 +60,27 @@ class _Out:
         self.sequence = 0
 
 
+class _Backlog:
+    """The samples of one subscriber waiting for the loop, the newest ``maxlen`` (Zenoh's thread appends)."""
+
+    __slots__ = ("samples", "scheduled")
+
+    def __init__(self, maxlen: int) -> None:
+        self.samples: deque[Any] = deque(maxlen=maxlen)
+        self.scheduled = False  # a drain is on its way to the loop
+
+
 class _In:
     """A topic's Zenoh subscriber and the inlet it feeds."""
 
-    __slots__ = ("key", "zsub", "inlet", "history")
+    __slots__ = ("key", "zsub", "inlet", "history", "depth")
 
     def __init__(self, key: str, inlet: Inlet) -> None:
         self.key = key
         self.inlet = inlet
         self.zsub: Any = None
         self.history = 0  # samples fetched from late publishers' caches (0: a plain subscriber)
+        self.depth = 0  # samples that may wait for the loop (see _backlog_bound)
 
 
 class TopicBridge:
@@ -168,7 +186,9 @@ class TopicBridge:
             self._table.add_publisher(inlet)
         latched = sub.qos.durability == DurabilityPolicy.TRANSIENT_LOCAL
         history = max(incoming.history, sub.qos.depth if latched else 0)
-        if incoming.zsub is None or history > incoming.history:
+        keeps = KEEP_ALL_BACKLOG if sub.qos.history == HistoryPolicy.KEEP_ALL else max(1, sub.qos.depth)
+        if incoming.zsub is None or history > incoming.history or keeps > incoming.depth:
+            incoming.depth = max(incoming.depth, keeps)
             self._listen(incoming, history)
 
     def _listen(self, incoming: _In, history: int) -> None:
@@ -177,11 +197,11 @@ class TopicBridge:
         zenoh = link.zenoh
         if incoming.zsub is not None:
             link.undeclare(incoming.zsub)
-        handoff, deliver = link.handoff, self._deliver
         # Indirect: zenoh runs the callback on one long-lived Python thread of this subscriber.
         # Run on zenoh's own receive thread, each sample made and deleted a Python thread
         # state: a one-way burst across processes ran at a quarter of the speed.
-        callback = zenoh.handlers.Callback(lambda sample: handoff.put(deliver, (incoming, sample)), indirect=True)
+        arrived = functools.partial(self._arrived, _Backlog(incoming.depth), incoming)
+        callback = zenoh.handlers.Callback(arrived, indirect=True)
         if history:
             ext = zenoh.ext
             incoming.zsub = ext.declare_advanced_subscriber(
@@ -199,8 +219,22 @@ class TopicBridge:
             )
         incoming.history = history
 
-    def _deliver(self, item: tuple[_In, Any]) -> None:
-        incoming, sample = item
+    def _arrived(self, backlog: _Backlog, incoming: _In, sample: Any) -> None:
+        # On zenoh's thread.  The loop may lag behind a peer that sends faster than it decodes:
+        # only the newest ``depth`` samples wait, which is all a subscription of that depth keeps.
+        backlog.samples.append(sample)
+        if not backlog.scheduled:
+            backlog.scheduled = True
+            self._link.handoff.put(self._drain, (incoming, backlog))
+
+    def _drain(self, item: tuple[_In, _Backlog]) -> None:
+        incoming, backlog = item
+        backlog.scheduled = False  # before taking: a sample appended from now on schedules another drain
+        samples = backlog.samples
+        for _ in range(len(samples)):
+            self._deliver(incoming, samples.popleft())
+
+    def _deliver(self, incoming: _In, sample: Any) -> None:
         if self._ins.get(incoming.inlet.topic_name) is not incoming:
             return  # the topic stopped listening while the sample crossed over
         link = self._link
