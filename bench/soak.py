@@ -18,15 +18,19 @@
     graph's descriptors before, at their peak and after.  Every 50th probe
     also times a real ``actors node list`` process (Python's start included).
 
-``python -m bench.soak --round2 [--minutes 30]``
+``python -m bench.soak --round2 [--minutes 30] [--fresh-names]``
     Issue 34's acceptance 6: the TurtleBot graph with the Zenoh transport, a
     recorder and the live view; beside it a plain Zenoh peer declaring 500
-    liveliness tokens of fresh names and taking them back every 10 s, a
-    Foxglove viewer subscribed to every channel (20 s visits, again and
-    again), and every 10 s a control round (50 connections, a publish, a
-    subscription) and an ``actors topic echo /odom --once``.  Prints RSS and
-    descriptors every 10 s, the RSS slope over the last 20 minutes and the
-    descriptors' range.
+    liveliness tokens and taking them back every 10 s, a Foxglove viewer
+    subscribed to every channel (20 s visits, again and again), and every
+    10 s a control round (50 connections, a publish, a subscription) and an
+    ``actors topic echo /odom --once``.  The baseline, in the same run, is a
+    bare Zenoh peer subscribed to the same liveliness tokens.  Prints RSS
+    and descriptors every 10 s, the RSS slopes over the last 20 minutes (the
+    graph's and the bare peer's) and the descriptors' range.  The tokens'
+    names come from three sets in turn; with ``--fresh-names`` every round
+    has new ones, and Zenoh itself (upstream, the bare peer as much as the
+    graph) keeps about 1.3 KB per name it ever heard of.
 
 ``python -m bench.soak --stalled``
     Acceptance 3: five ``actors topic echo /scan`` processes whose output
@@ -356,21 +360,35 @@ def stalled(seconds: float = 60.0, readers: int = 5) -> None:
 _CHURN = """
 import json, sys, time
 import zenoh
-port, tokens = sys.argv[1], int(sys.argv[2])
+port, tokens, name_sets = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])  # name_sets 0: fresh every round
 config = zenoh.Config()
 config.insert_json5("connect/endpoints", json.dumps([f"tcp/127.0.0.1:{port}"]))
 config.insert_json5("scouting/multicast/enabled", "false")
 session = zenoh.open(config)
 zid, round_ = str(session.info.zid()), 0
 while True:
+    names = round_ % name_sets if name_sets else round_
     declared = [
-        session.liveliness().declare_token(f"@ros2_lv/0/{zid}/0/{i}/NN/%/%/churn_{round_}_{i}") for i in range(tokens)
+        session.liveliness().declare_token(f"@ros2_lv/0/{zid}/0/{i}/NN/%/%/churn_{names}_{i}") for i in range(tokens)
     ]
     time.sleep(5)
     for token in declared:
         token.undeclare()
     round_ += 1
     time.sleep(5)
+"""
+
+# The baseline: a bare Zenoh peer that hears every liveliness token of the domain, as the transport does.
+_BARE = """
+import json, sys, threading
+import zenoh
+config = zenoh.Config()
+config.insert_json5("connect/endpoints", json.dumps([f"tcp/127.0.0.1:{sys.argv[1]}"]))
+config.insert_json5("scouting/multicast/enabled", "false")
+session = zenoh.open(config)
+heard = zenoh.handlers.Callback(lambda sample: None)
+watch = session.liveliness().declare_subscriber("@ros2_lv/**", heard, history=True)
+threading.Event().wait()
 """
 
 # A Foxglove viewer that subscribes to every channel and reads for a while, then leaves; again and again.
@@ -413,7 +431,7 @@ def _free_port() -> int:
         return int(sock.getsockname()[1])
 
 
-def round2(minutes: float) -> None:
+def round2(minutes: float, fresh_names: bool = False) -> None:
     """Issue 34's soak: TurtleBot with recorder, live view, Zenoh, a churning peer, a viewer, CLI loops."""
     with tempfile.TemporaryDirectory() as tmp:
         runtime_dir = Path(tmp) / "run"
@@ -427,18 +445,22 @@ def round2(minutes: float) -> None:
         )
         bag = Path(tmp) / "soak.mcap"
         graph = GraphProcess(graph_file, runtime_dir, "--record", str(bag), "--foxglove", str(view_port))
+        name_sets = "0" if fresh_names else "3"
         helpers = [
-            subprocess.Popen([sys.executable, "-c", _CHURN, str(zenoh_port), "500"], cwd=ROOT),
+            subprocess.Popen([sys.executable, "-c", _CHURN, str(zenoh_port), "500", name_sets], cwd=ROOT),
+            bare := subprocess.Popen([sys.executable, "-c", _BARE, str(zenoh_port)], cwd=ROOT),
             subprocess.Popen([sys.executable, "-c", _VIEWER, f"ws://127.0.0.1:{view_port}"], cwd=ROOT),
         ]
         try:
             start = time.monotonic()
             fds_before = fds(graph.pid)
             samples: list[tuple[float, int]] = []
+            baseline: list[tuple[float, int]] = []
             descriptors: list[int] = []
-            print(f"{'t (s)':>7} {'RSS (KB)':>9} {'fds':>4}  round")
+            print(f"{'t (s)':>7} {'RSS (KB)':>9} {'fds':>4} {'bare (KB)':>9}  round")
             while (now := time.monotonic() - start) < minutes * 60:
                 samples.append((now, rss_kb(graph.pid)))
+                baseline.append((now, rss_kb(bare.pid)))
                 descriptors.append(fds(graph.pid))
                 outcome = hammer_round(graph.path, connections=50)
                 with graph.connect() as conn:
@@ -450,11 +472,18 @@ def round2(minutes: float) -> None:
                     capture_output=True,
                     timeout=60,
                 )
-                print(f"{now:7.0f} {samples[-1][1]:9d} {descriptors[-1]:4d}  {dict(outcome)}", flush=True)
+                print(
+                    f"{now:7.0f} {samples[-1][1]:9d} {descriptors[-1]:4d} {baseline[-1][1]:9d}  {dict(outcome)}",
+                    flush=True,
+                )
                 time.sleep(max(0.0, SAMPLE_EVERY - (time.monotonic() - start - now)))
             last = [(t, k) for t, k in samples if t >= samples[-1][0] - 20 * 60] or samples
+            bare_last = [(t, k) for t, k in baseline if t >= last[0][0]]
             print(f"RSS: {samples[0][1]} KB at start, {samples[-1][1]} KB at the end")
-            print(f"RSS slope over the last {(last[-1][0] - last[0][0]) / 60:.0f} min: {slope(last):.1f} KB/min")
+            print(
+                f"RSS slope over the last {(last[-1][0] - last[0][0]) / 60:.0f} min: {slope(last):.1f} KB/min "
+                f"(the bare Zenoh peer beside it: {slope(bare_last):.1f} KB/min, {baseline[-1][1]} KB at the end)"
+            )
             print(
                 f"graph descriptors: {fds_before} at start, {min(descriptors)} to {max(descriptors)} while it ran, "
                 f"{fds(graph.pid)} at the end"
@@ -477,6 +506,9 @@ def main(argv: list[str] | None = None) -> int:
         action="store_true",
         help="issue 34: TurtleBot, recorder, live view and viewer, a Zenoh peer churning tokens, CLI loops",
     )
+    parser.add_argument(
+        "--fresh-names", action="store_true", help="with --round2: new token names every round (upstream keeps each)"
+    )
     args = parser.parse_args(argv)
     if not Path("/proc/self/status").exists():
         print("bench.soak reads /proc: Linux only", file=sys.stderr)
@@ -486,7 +518,7 @@ def main(argv: list[str] | None = None) -> int:
     elif args.stalled:
         stalled()
     elif args.round2:
-        round2(args.minutes)
+        round2(args.minutes, args.fresh_names)
     else:
         soak(args.minutes)
     return 0
