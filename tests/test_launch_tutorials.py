@@ -348,3 +348,62 @@ def test_includes_with_arguments_a_pushed_namespace_and_parameter_files_with_wil
         "/pond2/ns2/sim:background_b": "Integer value is: 255",  # its full name, the pushed namespace in front
         "/ns3/tester_sim:background_b": "Integer value is: 12",  # a name made of substitutions
     }, done.stdout + done.stderr
+
+
+CHATTER = {
+    "py": """\
+import launch
+import launch_ros.actions
+
+
+def generate_launch_description():
+    return launch.LaunchDescription([
+        launch_ros.actions.Node(package='demo_nodes_cpp', executable='talker', name='speaker'),
+        launch_ros.actions.Node(package='demo_nodes_py', executable='listener', name='ear'),
+    ])
+""",
+    "xml": '<launch>\n  <node pkg="demo_nodes_cpp" exec="talker" name="speaker"/>\n'
+    '  <node pkg="demo_nodes_py" exec="listener" name="ear"/>\n</launch>\n',
+    "yaml": "launch:\n\n- node: {pkg: demo_nodes_cpp, exec: talker, name: speaker}\n"
+    "- node: {pkg: demo_nodes_py, exec: listener, name: ear}\n",
+}
+
+LAUNCH_DATA_FILES = """\
+        (os.path.join('share', package_name, 'launch'), glob(os.path.join('launch', '*launch.[pxy][yma]*'))),
+"""
+
+
+def test_a_new_packages_launch_files_installed_by_a_glob_start_the_demo_talker_and_listener(tmp_path):
+    # As the tutorial integrating launch files into a package has it: ros2 pkg create, a launch/ folder,
+    # data_files globbing it into share/<pkg>/launch, then ros2 launch <pkg> <file> in each front end.
+    workspace = tmp_path / "ws"
+    (workspace / "src").mkdir(parents=True)
+    created = subprocess.run(
+        [sys.executable, "-m", "actors", "pkg", "create", "--build-type", "ament_python", "chat_launch"],
+        cwd=workspace / "src", env=python_env(), capture_output=True, text=True, timeout=60,
+    )  # fmt: skip
+    assert created.returncode == 0, created.stderr
+    package = workspace / "src" / "chat_launch"
+    setup = (package / "setup.py").read_text()
+    setup = "import os\nfrom glob import glob\n" + setup.replace(
+        "        ('share/' + package_name, ['package.xml']),\n",
+        "        ('share/' + package_name, ['package.xml']),\n" + LAUNCH_DATA_FILES,
+    )
+    (package / "setup.py").write_text(setup)
+    (package / "launch").mkdir()
+    for front_end, text in CHATTER.items():
+        (package / "launch" / f"chat_launch.{front_end}").write_text(text)
+    for front_end in CHATTER:
+        done = subprocess.run(
+            [sys.executable, "-m", "actors", "launch", "--clock", "virtual", "--duration", "2.5",
+             "chat_launch", f"chat_launch.{front_end}"],
+            cwd=workspace, env=python_env(), capture_output=True, text=True, timeout=120,
+        )  # fmt: skip
+        assert done.returncode == 0, done.stderr
+        heard = [line for line in done.stderr.splitlines() if "[speaker]" in line or "[ear]" in line]
+        assert heard == [
+            "[INFO] [1.000000000] [speaker]: Publishing: 'Hello World: 1'",
+            "[INFO] [1.000000000] [ear]: I heard: [Hello World: 1]",
+            "[INFO] [2.000000000] [speaker]: Publishing: 'Hello World: 2'",
+            "[INFO] [2.000000000] [ear]: I heard: [Hello World: 2]",
+        ], (front_end, done.stderr)

@@ -44,6 +44,19 @@ def test_a_native_node_as_a_shipped_packages_executable_takes_its_ros_arguments(
 
 
 @pytest.mark.slow
+def test_the_shipped_demo_talkers_count_and_quote_as_their_packages_do():
+    for package, lines in (
+        ("demo_nodes_cpp", ["Publishing: 'Hello World: 1'", "Publishing: 'Hello World: 2'"]),
+        ("demo_nodes_py", ['Publishing: "Hello World: 0"', 'Publishing: "Hello World: 1"']),
+    ):
+        done = actors("run", "--clock", "virtual", "--duration", "2.5", package, "talker")
+        assert done.returncode == 0, done.stderr
+        assert done.stderr.splitlines() == [
+            f"[INFO] [{t}.000000000] [talker]: {line}" for t, line in zip((1, 2), lines)
+        ]
+
+
+@pytest.mark.slow
 def test_a_native_partner_of_a_native_program_stops_at_the_end_of_the_duration():
     # It used to go on for ten seconds more: stopping it waited for a thread that only the run's end ended.
     done = actors(
