@@ -166,6 +166,39 @@ def test_topic_list_and_info(graph):
     assert "Dropped: 0\n" in verbose
 
 
+# What real rclpy (Kilted) prints for a talker's publisher on /topic (ros2 topic info -v prints
+# TopicEndpointInfo's str), the GID aside; History as rmw_zenoh reports it (Fast DDS says UNKNOWN).
+PUBLISHER_INFO = """\
+Node name: minimal_publisher
+Node namespace: /
+Topic type: std_msgs/msg/String
+Topic type hash: RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18
+Endpoint type: PUBLISHER
+GID: <gid>
+QoS profile:
+  Reliability: RELIABLE
+  History (Depth): KEEP_LAST (10)
+  Durability: VOLATILE
+  Lifespan: Infinite
+  Deadline: Infinite
+  Liveliness: AUTOMATIC
+  Liveliness lease duration: Infinite
+"""
+
+
+@pytest.mark.slow
+def test_topic_info_verbose_prints_each_endpoint_as_ros2_does(graph):
+    verbose = ok(graph, "topic", "info", "/topic", "-v")
+    gids = re.findall(r"^GID: ((?:[0-9a-f]{2}\.){15}[0-9a-f]{2})$", verbose, re.MULTILINE)
+    assert len(set(gids)) == 2  # one per endpoint, and not the same
+    shape = re.sub(r"^GID: .*$", "GID: <gid>", verbose, flags=re.MULTILINE)
+    head = f"Type: std_msgs/msg/String\n\nPublisher count: 1\n\n{PUBLISHER_INFO}\nSubscription count: 1\n\n"
+    assert shape.startswith(head), shape
+    subscription = shape.removeprefix(head)
+    expected = PUBLISHER_INFO.replace("minimal_publisher", "minimal_subscriber").replace("PUBLISHER", "SUBSCRIPTION")
+    assert subscription == f"{expected}Queued: 0\nDropped: 0\n\n"  # our two lines after ros2's
+
+
 @pytest.mark.slow
 def test_topic_echo_once_prints_one_yaml_document(graph):
     out = ok(graph, "topic", "echo", "/topic", "--once")

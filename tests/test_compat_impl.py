@@ -11,7 +11,7 @@ from actors.compat.rclpy.topic_endpoint_info import TopicEndpointInfo, TopicEndp
 from actors.compat.rclpy.type_hash import TypeHash
 from actors.errors import RosArgsError
 from actors.ros.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, qos_profile_sensor_data
-from actors.ros.time import Duration
+from actors.ros.time import Duration, Infinite
 from interfaces.std_msgs.msg import String
 
 
@@ -54,7 +54,9 @@ def test_a_publishers_info_carries_its_profile_and_type_hash(session):
     node.create_publisher(String, "said", QoSProfile(depth=3, durability=DurabilityPolicy.TRANSIENT_LOCAL))
     (info,) = node.get_publishers_info_by_topic("/ns/said")
     assert info.endpoint_type is TopicEndpointTypeEnum.PUBLISHER
-    assert info.qos_profile.depth == 3 and info.qos_profile.lifespan == Duration()
+    # A duration never set reads as rmw's infinite one, as real rclpy's graph query reports it.
+    assert info.qos_profile.depth == 3 and info.qos_profile.lifespan == Infinite
+    assert "  Lifespan: Infinite\n  Deadline: Infinite\n" in str(info)
     assert isinstance(info.topic_type_hash, TypeHash) and info.topic_type_hash.version == 1
     assert str(info.topic_type_hash) == codec.type_hash(String)
     assert "Topic type hash: RIHS01_" in str(info)

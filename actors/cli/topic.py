@@ -210,7 +210,7 @@ def list_topics(args: argparse.Namespace) -> None:
 def topic_info(args: argparse.Namespace) -> None:
     """Print the type and endpoint counts (with ``-v``, each endpoint); ControlError if unknown."""
     from actors.core.explain import did_you_mean
-    from actors.errors import ControlError
+    from actors.ros.endpoint_info import TopicEndpointInfo, TopicEndpointTypeEnum, reported_profile
     from actors.ros.names import expand
 
     name = expand(args.topic, "/", "_")
@@ -219,29 +219,36 @@ def topic_info(args: argparse.Namespace) -> None:
     if topic is None:
         raise ControlError(f"unknown topic {name}{did_you_mean(name, [t.name for t in topics])}")
     sections = (
-        ("Publisher", "PUBLISHER", topic.publishers),
-        ("Subscription", "SUBSCRIPTION", topic.subscriptions),
+        ("Publisher", TopicEndpointTypeEnum.PUBLISHER, topic.publishers),
+        ("Subscription", TopicEndpointTypeEnum.SUBSCRIPTION, topic.subscriptions),
     )
-    print(f"Type: {topic.type}")
+    end = "\n\n" if args.verbose else "\n"  # as ros2 spaces its lines
+    print(f"Type: {topic.type}", end=end)
     for title, kind, endpoints in sections:
-        if args.verbose:
-            print()
-        print(f"{title} count: {len(endpoints)}")
+        print(f"{title} count: {len(endpoints)}", end=end)
         for endpoint in endpoints if args.verbose else ():
             namespace, _, node = endpoint.node.rpartition("/")
-            qos = endpoint.qos
-            print()
-            print(f"Node name: {node}")
-            print(f"Node namespace: {namespace or '/'}")
-            print(f"Topic type: {endpoint.type}")
-            print(f"Endpoint type: {kind}")
-            print("QoS profile:")
-            print(f"  Reliability: {qos.reliability.name}")
-            print(f"  History (Depth): {qos.history.name} ({qos.depth})")
-            print(f"  Durability: {qos.durability.name}")
-            if kind == "SUBSCRIPTION":
-                print(f"Queued: {endpoint.queued}")
-                print(f"Dropped: {endpoint.dropped}")
+            info = TopicEndpointInfo(
+                node_name=node,
+                node_namespace=namespace or "/",
+                topic_type=endpoint.type,
+                topic_type_hash=endpoint.type_hash or _type_hash(endpoint.type),
+                endpoint_type=kind,
+                endpoint_gid=endpoint.gid,
+                qos_profile=reported_profile(endpoint.qos),
+            )
+            counts = f"\nQueued: {endpoint.queued}\nDropped: {endpoint.dropped}" if kind.name == "SUBSCRIPTION" else ""
+            print(f"{info}{counts}", end=end)
+
+
+def _type_hash(name: str) -> str:
+    from actors import codec
+    from actors.errors import ActorsError
+
+    try:
+        return codec.type_hash(codec.get_type(name))
+    except ActorsError:
+        return ""  # a type this process does not know: ros2 prints INVALID then too
 
 
 def echo_topic(args: argparse.Namespace) -> None:

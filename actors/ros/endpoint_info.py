@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import copy
 from enum import IntEnum
 from typing import Any
 
@@ -9,9 +10,10 @@ import msgspec
 
 from actors.codec import type_hash
 from actors.ros.qos import QoSProfile, QoSSnapshot
+from actors.ros.time import Infinite
 from actors.ros.topics import type_name
 
-__all__ = ["TopicEndpointTypeEnum", "TopicEndpointInfo", "endpoint_info"]
+__all__ = ["TopicEndpointTypeEnum", "TopicEndpointInfo", "endpoint_info", "gid_of", "reported_profile"]
 
 
 class TopicEndpointTypeEnum(IntEnum):
@@ -59,10 +61,10 @@ class TopicEndpointInfo(msgspec.Struct, kw_only=True):
             f"  Reliability: {qos.reliability.name}",
             f"  History (Depth): {qos.history.name}{depth}",
             f"  Durability: {qos.durability.name}",
-            f"  Lifespan: {qos.lifespan.nanoseconds} nanoseconds",
-            f"  Deadline: {qos.deadline.nanoseconds} nanoseconds",
+            f"  Lifespan: {qos.lifespan}",
+            f"  Deadline: {qos.deadline}",
             f"  Liveliness: {qos.liveliness.name}",
-            f"  Liveliness lease duration: {qos.liveliness_lease_duration.nanoseconds} nanoseconds",
+            f"  Liveliness lease duration: {qos.liveliness_lease_duration}",
         ]
         return "\n".join(lines)
 
@@ -76,10 +78,20 @@ def endpoint_info(endpoint: Any, kind: TopicEndpointTypeEnum) -> TopicEndpointIn
         topic_type=type_name(endpoint.msg_type),
         topic_type_hash=type_hash(endpoint.msg_type),
         endpoint_type=kind,
-        endpoint_gid=list(id(endpoint).to_bytes(8, "little")) + [0] * 8,
-        qos_profile=_profile(endpoint.qos),
+        endpoint_gid=gid_of(endpoint),
+        qos_profile=reported_profile(endpoint.qos),
     )
 
 
-def _profile(qos: Any) -> QoSProfile:
-    return qos.to_profile() if isinstance(qos, QoSSnapshot) else qos
+def gid_of(endpoint: Any) -> list[int]:
+    """An endpoint's GID: 16 bytes unique among the endpoints alive in this process."""
+    return list(id(endpoint).to_bytes(8, "little")) + [0] * 8
+
+
+def reported_profile(qos: Any) -> QoSProfile:
+    """``qos`` (a profile or a snapshot) as a graph query reports it: a duration never set is rmw's infinite one."""
+    profile = qos.to_profile() if isinstance(qos, QoSSnapshot) else copy.copy(qos)
+    for name in ("lifespan", "deadline", "liveliness_lease_duration"):
+        if not getattr(profile, name).nanoseconds:
+            setattr(profile, name, Infinite)
+    return profile

@@ -18,6 +18,7 @@ import msgspec
 
 from actors import codec
 from actors.errors import ActorsError
+from actors.ros.endpoint_info import gid_of
 from actors.ros.names import is_hidden
 from actors.ros.qos import QoSSnapshot
 from actors.ros.topics import Topic, TopicTable, type_name
@@ -61,6 +62,7 @@ class EndpointInfo(msgspec.Struct, frozen=True, kw_only=True):
     process: str = ""
     type_hash: str = ""
     why: str = ""
+    gid: list[int] = []  # this process's endpoints' (a remote one's is not kept)
 
 
 class TopicInfo(msgspec.Struct, frozen=True, kw_only=True):
@@ -242,7 +244,7 @@ class GraphView:
             name=topic.name,
             type=type_name(topic.msg_type),
             publishers=tuple(
-                EndpointInfo(node=p.node.fqn, type=type_name(p.msg_type), qos=p.qos, type_hash=hash_)
+                EndpointInfo(node=p.node.fqn, type=type_name(p.msg_type), qos=p.qos, type_hash=hash_, gid=gid_of(p))
                 for p in topic.publishers
                 if not is_proxy(p)
             )
@@ -257,6 +259,7 @@ class GraphView:
                     refused=dict(s.refusals.counts) if s.refusals else {},
                     refused_from=s.refusals.last_from if s.refusals else "",
                     type_hash=hash_,
+                    gid=gid_of(s),
                 )
                 for s in topic.subscriptions
             )
