@@ -118,3 +118,26 @@ def test_a_real_rclpy_keeps_working_outside_the_overlay(tmp_path):
     )
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "rclpy.node"
+
+
+@pytest.mark.parametrize(
+    ("name", "words"),
+    [
+        ("turtlesim", "turtlesim's interfaces are the package turtlesim_msgs (from turtlesim_msgs.srv import Spawn)"),
+        ("nav2_msgs", "actors does not ship it ('actors interface packages' lists the interface packages it has"),
+        ("cv_bridge", "actors does not ship it"),
+    ],
+)
+def test_a_ros_package_nothing_provides_fails_with_a_word_on_what_ships(name, words):
+    with overlaid(), pytest.raises(ModuleNotFoundError) as raised:
+        importlib.import_module(name)
+    assert raised.value.name == name and words in str(raised.value)
+    with pytest.raises(ModuleNotFoundError) as raised:  # the overlay gone, so is the word
+        importlib.import_module(name)
+    assert str(raised.value) == f"No module named {name!r}"
+
+
+def test_other_missing_modules_fail_as_python_says():
+    with overlaid(), pytest.raises(ModuleNotFoundError) as raised:
+        importlib.import_module("not_a_ros_thing")
+    assert str(raised.value) == "No module named 'not_a_ros_thing'"

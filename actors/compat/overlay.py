@@ -10,7 +10,9 @@ the modules of ``interfaces.<pkg>``).  The names are aliases: ``rclpy.node`` *is
 ``actors.compat.rclpy.node``, so ``std_msgs.msg.String is
 interfaces.std_msgs.msg.String``.  Uninstalling removes the aliases and puts
 back whatever those names held before, so a real rclpy in the same environment
-keeps working outside the overlay.
+keeps working outside the overlay.  A ROS package that nothing provides
+(``nav2_msgs``, ``cv_bridge``, Jazzy's ``turtlesim`` interfaces) fails with a
+word on what actors ships (:class:`MissingHint`).
 """
 
 from __future__ import annotations
@@ -29,7 +31,7 @@ from typing import Any
 
 from actors.messages.discovery import discovered
 
-__all__ = ["install", "uninstall", "installed", "overlaid", "OverlayFinder"]
+__all__ = ["install", "uninstall", "installed", "overlaid", "OverlayFinder", "MissingHint"]
 
 _INTERFACES = "interfaces"
 # The Python packages of ROS that the overlay provides, by the name programs import them as.
@@ -120,6 +122,35 @@ class _Alias:
             setattr(object.__getattribute__(self, "_target"), name, value)
 
 
+class MissingHint(importlib.abc.MetaPathFinder):
+    """Last on ``sys.meta_path``: a ROS package that nothing provides fails with a word on what ships."""
+
+    # ROS Python packages that programs import and actors has no stand-in for.
+    KNOWN = frozenset(
+        {"cv_bridge", "message_filters", "image_geometry", "laser_geometry", "sensor_msgs_py", "rosbag2_py"}
+        | {"nav2_simple_commander", "tf2_py", "launch_testing", "rqt_gui", "rqt_gui_py", "ros2cli"}
+    )
+
+    def find_spec(
+        self, fullname: str, path: Sequence[str] | None = None, target: ModuleType | None = None
+    ) -> importlib.machinery.ModuleSpec | None:
+        if path is not None or "." in fullname:
+            return None  # a submodule: its package says what is missing
+        if fullname == "turtlesim":
+            raise ModuleNotFoundError(
+                "No module named 'turtlesim': since ROS 2 Kilted turtlesim's interfaces are the package "
+                "turtlesim_msgs (from turtlesim_msgs.srv import Spawn), which actors ships",
+                name=fullname,
+            )
+        if fullname in self.KNOWN or fullname.endswith(("_msgs", "_srvs", "_interfaces")):
+            raise ModuleNotFoundError(
+                f"No module named {fullname!r}: actors does not ship it ('actors interface packages' lists "
+                "the interface packages it has; a package of your own imports by name from a workspace's src/)",
+                name=fullname,
+            )
+        return None
+
+
 def _interface_packages() -> frozenset[str]:
     """The shipped interface packages: the folders of ``interfaces`` that are packages."""
     spec = importlib.util.find_spec(_INTERFACES)
@@ -132,6 +163,7 @@ def _interface_packages() -> frozenset[str]:
     )
 
 
+_HINT = MissingHint()
 _lock = threading.Lock()
 _state: dict[str, Any] = {"finder": None, "depth": 0, "saved": {}}
 
@@ -159,6 +191,7 @@ def install() -> None:
         _state["saved"] = saved
         _state["finder"] = finder
         sys.meta_path.insert(0, finder)
+        sys.meta_path.append(_HINT)
         importlib.invalidate_caches()
 
 
@@ -171,8 +204,9 @@ def uninstall() -> None:
         finder: OverlayFinder | None = _state["finder"]
         if _state["depth"] or finder is None:
             return
-        if finder in sys.meta_path:
-            sys.meta_path.remove(finder)
+        for installed_finder in (finder, _HINT):
+            if installed_finder in sys.meta_path:
+                sys.meta_path.remove(installed_finder)
         for name in [n for n in sys.modules if finder.target(n) is not None]:
             del sys.modules[name]
         sys.modules.update(_state["saved"])
