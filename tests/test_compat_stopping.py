@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -114,3 +115,36 @@ def test_on_the_wall_clock_a_script_blocked_in_select_keeps_the_graph_running(tm
     finally:
         proc.kill()
     assert proc.returncode == 0, err
+
+
+TICKER = """\
+import rclpy
+from rclpy.node import Node
+
+class Ticker(Node):
+    def __init__(self):
+        super().__init__("ticker")
+        self.create_timer(0.5, lambda: self.get_logger().info("Publishing"))
+
+rclpy.init()
+rclpy.spin(Ticker())
+"""
+
+
+@pytest.mark.slow
+def test_what_is_due_at_the_end_of_the_duration_runs_for_scripts_as_for_graph_files(tmp_path) -> None:
+    # A script's timer and the graph file's talker both fire every 0.5 s: under --duration 1 each
+    # fires at t = 1.0 too, as python -m actors.run does for the graph alone.
+    graph = tmp_path / "talker.toml"
+    graph.write_text('[[nodes]]\nuse = "nodes.talker:MinimalPublisher"\nname = "graph_talker"\n')
+    ticker = tmp_path / "ticker.py"
+    ticker.write_text(TICKER)
+    done = actors_run("--clock", "virtual", "--duration", "1", "--graph", str(graph), str(ticker))
+    assert done.returncode == 0, done.stderr
+    stamps = re.findall(r"^\[INFO\] \[(\d+\.\d+)\] \[(\w+)\]: Publishing", done.stderr, re.MULTILINE)
+    assert sorted(stamps) == [
+        ("0.500000000", "graph_talker"),
+        ("0.500000000", "ticker"),
+        ("1.000000000", "graph_talker"),
+        ("1.000000000", "ticker"),
+    ]

@@ -144,6 +144,12 @@ class Session:
 
     async def _end_after(self, seconds: float) -> None:
         await anyio.sleep(seconds)
+        if isinstance(self.turn, VirtualTurn):
+            # What is due at the last instant still runs, as in a graph file's run (a 0.5 s timer
+            # ticks at t = 1.0 of --duration 1): the script threads it woke take their turns first.
+            await anyio.sleep(0)
+            while self.turn.has_queue():
+                await anyio.sleep(0)
         if self._on_duration is not None:
             self._on_duration()
 
