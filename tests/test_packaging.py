@@ -99,6 +99,13 @@ def test_installed_shipped_graphs_and_a_users_own_graph_each_run_their_own_code(
     assert "[constant_control]: sending constant control..." in shipped.stdout
     assert "student" not in shipped.stdout + shipped.stderr
 
+    demo = run("demo")  # the headline demo, the repository's graph.toml, by name from anywhere
+    assert demo.returncode == 0, demo.stderr
+    assert all(
+        f"[{node}]" in demo.stdout for node in ("minimal_publisher", "add_three_ints_client", "constant_control")
+    )
+    assert "student" not in demo.stdout + demo.stderr
+
     also_shipped = run(str(installed / "actors" / "graphs" / "pubsub.toml"))  # and by its path
     assert also_shipped.returncode == 0, also_shipped.stderr
     assert "[minimal_publisher]: Publishing: " in also_shipped.stdout
