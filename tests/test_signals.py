@@ -179,3 +179,37 @@ def test_bag_play(graph, tmp_path, moment, signum):
     command = cli(graph, "bag", "play", str(tmp_path / "played.mcap"))
     # Running once the graph's listener hears what the bag holds.
     check(command, stop_at(command, moment, 'I heard: "played', signum, watch=graph[2]))
+
+
+SIGNALLED_IMPORT = """\
+import os, signal, time
+os.kill(os.getpid(), signal.SIGHUP)  # lands while this module is being imported
+time.sleep(0.05)
+DONE = True
+"""
+
+IMPORTER = """\
+import sys, time
+from actors.core.signals import raise_stops
+raise_stops()
+try:
+    import signalled
+    print("imported", signalled.DONE)
+    time.sleep(30)
+    print("never interrupted")
+except KeyboardInterrupt:
+    print("interrupted", "after the import" if "signalled" in sys.modules else "inside the import")
+"""
+
+
+def test_a_stop_signal_inside_an_import_stops_the_command_once_the_import_is_done(tmp_path):
+    # Raised inside an import it would break what the import was building: importlib's module
+    # locks (a later import hung) or an extension's state (msgspec crashed making a decoder).
+    (tmp_path / "signalled.py").write_text(SIGNALLED_IMPORT)
+    (tmp_path / "importer.py").write_text(IMPORTER)
+    env = python_env()
+    env["PYTHONPATH"] = os.pathsep.join([str(tmp_path), env.get("PYTHONPATH", "")])
+    done = subprocess.run(
+        [sys.executable, str(tmp_path / "importer.py")], env=env, capture_output=True, text=True, timeout=60
+    )
+    assert done.stdout == "imported True\ninterrupted after the import\n", done.stdout + done.stderr

@@ -23,8 +23,11 @@ thread can set handlers; elsewhere these functions do nothing.
 
 from __future__ import annotations
 
+import _thread
+import os
 import signal
 import threading
+import time
 from collections.abc import Callable
 from types import FrameType
 from typing import Any
@@ -34,6 +37,7 @@ __all__ = ["STOP_SIGNALS", "remember_stops", "raise_stops", "stop_signals", "tak
 STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
 
 _noted: list[int] = []
+_AGAIN = 0.01  # seconds before a signal that landed inside an import is sent again
 
 
 def stop_signals() -> tuple[signal.Signals, ...]:
@@ -48,10 +52,34 @@ def remember_stops() -> None:
 
 def raise_stops() -> None:
     """From now on a stop signal raises ``KeyboardInterrupt``; one noted before raises it now."""
-    _install(signal.default_int_handler)
+    _install(_interrupt)
     if _noted:
         _noted.clear()
         raise KeyboardInterrupt
+
+
+def _interrupt(signum: int, frame: FrameType | None) -> None:
+    # An exception in the middle of an import breaks what it was building: importlib's module locks
+    # (the next import of that module waits forever) or an extension's half-made state (msgspec
+    # crashed building a decoder).  There the signal is sent again a moment later, until it lands
+    # outside any import.
+    if _importing(frame):
+        _thread.start_new_thread(_send_again, (signum,))
+        return
+    raise KeyboardInterrupt
+
+
+def _importing(frame: FrameType | None) -> bool:
+    while frame is not None:
+        if frame.f_code.co_filename.startswith("<frozen importlib"):
+            return True
+        frame = frame.f_back
+    return False
+
+
+def _send_again(signum: int) -> None:
+    time.sleep(_AGAIN)  # a bare thread of its own: real time, whatever the run's clock
+    os.kill(os.getpid(), signum)
 
 
 def take_noted() -> bool:
