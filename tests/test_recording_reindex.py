@@ -217,3 +217,41 @@ def test_the_flush_interval_must_be_positive(tmp_path):
         timeout=60,
     )
     assert done.returncode == 2 and "--flush-interval" in done.stderr
+
+
+@pytest.mark.slow
+def test_bag_record_keeps_a_latched_topics_only_message(tmp_path):
+    # Published once, before the recording began: it reaches the recording as the latched history
+    # that comes with the subscription's reply.
+    env = own_env(tmp_path)
+    name = f"latch{os.getpid()}"
+    graph = tmp_path / f"{name}.toml"
+    graph.write_text((ROOT / "graphs/pubsub.toml").read_text())
+    running = Command([sys.executable, "-m", "actors.run", str(graph)], env)
+    latched = record = None
+    try:
+        running.wait_for("I heard", timeout=60)
+        pub = ["topic", "pub", "--once", "-w", "0", "--keep-alive", "60", "--qos-durability", "transient_local"]
+        latched = Command(
+            [sys.executable, "-m", "actors", *pub, "/latched", "std_msgs/msg/String", "data: kept", "--graph", name],
+            env,
+        )
+        latched.wait_for("publishing #1", timeout=60)
+        out = tmp_path / "latched.mcap"
+        record = Command(
+            [sys.executable, "-m", "actors", "bag", "record", "/latched", "-o", str(out), "--graph", name], env
+        )
+        record.wait_for("Recording to", timeout=60)
+        deadline = time.monotonic() + 20  # the flush interval, and a loaded machine
+        kept: list[str] = []
+        while not kept and time.monotonic() < deadline:
+            time.sleep(0.1)  # a file growing on disk: no event tells of it
+            kept = [
+                codec.decode_cdr(m.data, String).data for m in Bag(killed_copy(out, tmp_path), recover=True).messages()
+            ]
+        assert kept == ["kept"]
+    finally:
+        for command in (record, latched, running):
+            if command is not None:
+                command.proc.terminate()
+                command.finish()
