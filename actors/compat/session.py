@@ -35,6 +35,7 @@ from typing import Any, TypeVar
 import anyio
 import anyio.abc
 import anyio.from_thread
+import anyio.lowlevel
 
 from actors.compat.dispatch import Dispatcher
 from actors.compat.turns import ScriptTimeLoop, ScriptWallLoop, Turn, VirtualTurn, Waiter, WallTurn
@@ -147,9 +148,9 @@ class Session:
         if isinstance(self.turn, VirtualTurn):
             # What is due at the last instant still runs, as in a graph file's run (a 0.5 s timer
             # ticks at t = 1.0 of --duration 1): the script threads it woke take their turns first.
-            await anyio.sleep(0)
+            await anyio.lowlevel.checkpoint()
             while self.turn.has_queue():
-                await anyio.sleep(0)
+                await anyio.lowlevel.checkpoint()
         if self._on_duration is not None:
             self._on_duration()
 
