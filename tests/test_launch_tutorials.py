@@ -77,6 +77,7 @@ def generate_launch_description():
             ],
         )),
         RegisterEventHandler(OnProcessExit(target_action=blue, on_exit=[LogInfo(msg='blue set')])),
+        RegisterEventHandler(OnProcessExit(target_action=sim, on_exit=[LogInfo(msg='the pond closed')])),
         RegisterEventHandler(OnProcessExit(target_action=check, on_exit=[
             LogInfo(msg=[EnvironmentVariable('WHO'), ' checked']), EmitEvent(event=Shutdown(reason='all done')),
         ])),
@@ -102,6 +103,7 @@ def test_ros2_commands_and_every_event_handler_against_the_launchs_own_graph(tmp
         *(["blue set"] if set_blue else []),
         "tester checked",
         "asked to end: all done",
+        "the pond closed",  # the node ends with the launch, and its exit handlers run (nothing new starts)
     ]
     assert user_lines(done.stderr) == expected, done.stderr
     # The last command's own output, on the screen as output='screen' asks, prefixed by its name: as ROS's
