@@ -42,6 +42,7 @@ check only when that fails, to name the culprit or convert it.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 import numbers
@@ -312,9 +313,11 @@ def _float_list_test(ftype: FieldType, value: str) -> str:
         test += f" and len({value}) == {ftype.size}"
     elif ftype.array == "bounded":
         test += f" and len({value}) <= {ftype.size}"
+    # _all, inlined.
+    floats = f"list(map(type, {value})).count(float) == len({value})"
     if ftype.base == "float32":
-        return test + f" and (not {value} or set(map(type, {value})) <= _FLOAT and _fits_float32({value}))"
-    return test + f" and set(map(type, {value})) <= _FLOAT"
+        return test + f" and (not {value} or {floats} and _fits_float32({value}))"
+    return test + f" and {floats}"
 
 
 def _array_call(
@@ -442,10 +445,9 @@ def _each(items: list[Any], path: str, check: Callable[[Any, str], Any]) -> list
     return items
 
 
-_FLOAT = {float}
-_INT = {int}
-_BOOL = {bool}
-_STR = {str}
+def _all(items: list[Any], kind: type) -> bool:
+    # Whether every item is exactly a ``kind``: counting it among the types costs half a set of them.
+    return list(map(type, items)).count(kind) == len(items)
 
 
 def _floats(value: Any, path: str, shape: Shape, single: bool) -> list[float]:
@@ -453,7 +455,7 @@ def _floats(value: Any, path: str, shape: Shape, single: bool) -> list[float]:
         items = value.tolist()  # a new list of Python floats, made in C: no type to look at
     else:
         items = _listed(value, path, shape)
-        if not set(map(type, items)) <= _FLOAT:
+        if not _all(items, float):
             _sized(items, path, shape)
             return _each(items, path, lambda item, where: _float(item, where, single))
     _sized(items, path, shape)
@@ -484,10 +486,14 @@ def _float_vector(value: Any) -> bool:
     return numpy is not None and type(value) is numpy.ndarray and value.ndim == 1 and value.dtype.char in "df"
 
 
+# The Struct of n float32s ("<360f"): compiled once for the lengths that recur.
+_float32s = functools.lru_cache(maxsize=256)(struct.Struct)
+
+
 def _fits_float32(items: list[float]) -> bool:
     # struct refuses a finite float beyond float32's range (and takes inf and nan), in C.
     try:
-        struct.pack(f"<{len(items)}f", *items)
+        _float32s(f"<{len(items)}f").pack(*items)
     except OverflowError:
         return False
     return True
@@ -497,7 +503,7 @@ def _ints(value: Any, path: str, shape: Shape, base: str) -> list[int]:
     items = _listed(value, path, shape)
     _sized(items, path, shape)
     low, high = INTEGER_RANGES[base]
-    if set(map(type, items)) <= _INT and (not items or (low <= min(items) and max(items) <= high)):
+    if _all(items, int) and (not items or (low <= min(items) and max(items) <= high)):
         return items
     return _each(items, path, lambda item, where: _int(item, where, base))
 
@@ -505,7 +511,7 @@ def _ints(value: Any, path: str, shape: Shape, base: str) -> list[int]:
 def _bools(value: Any, path: str, shape: Shape) -> list[bool]:
     items = _listed(value, path, shape)
     _sized(items, path, shape)
-    if set(map(type, items)) <= _BOOL:
+    if _all(items, bool):
         return items
     return _each(items, path, _bool)
 
@@ -513,7 +519,7 @@ def _bools(value: Any, path: str, shape: Shape) -> list[bool]:
 def _strs(value: Any, path: str, shape: Shape, bound: int | None) -> list[str]:
     items = _listed(value, path, shape)
     _sized(items, path, shape)
-    if set(map(type, items)) <= _STR and (bound is None or not items or max(map(len, items)) <= bound):
+    if _all(items, str) and (bound is None or not items or max(map(len, items)) <= bound):
         return items
     return _each(items, path, lambda item, where: _str(item, where, bound))
 
@@ -545,7 +551,6 @@ def _structs(value: Any, path: str, shape: Shape, cls: type, body: Snapshot, exp
 
 _HELPERS: Mapping[str, Any] = {
     "FLOAT32_MAX": FLOAT32_MAX,
-    "_FLOAT": _FLOAT,
     "_fits_float32": _fits_float32,
     "_Invalid": _Invalid,
     "_invalid": _invalid,
