@@ -14,6 +14,17 @@ decides what to accept and how to treat each client.
 
 It runs an asyncio loop on a thread of its own, as the SDK runs its server:
 its sockets and timeouts never touch the graph's loop.
+
+Being the one door in, it also bounds what viewers can take (the SDK has no
+limit of its own): at most ``max_viewers`` connections are open at once,
+counting those still in their handshake; one more is answered HTTP 503 and
+closed at once, so a crowd of clients costs the graph a descriptor each only
+for a moment and leaves the command line's control socket its own.  Turning
+viewers away is told through ``warn``: one line when it starts, then at most
+one count per :data:`REFUSALS_PERIOD`.  Each direction of a relayed
+connection holds at most one chunk plus the transport's write buffer: a
+viewer that never reads stalls its own upstream connection, where the SDK
+drops its oldest messages (``message_backlog_size``).
 """
 
 from __future__ import annotations
@@ -22,8 +33,9 @@ import asyncio
 import contextlib
 import socket
 import threading
+from collections.abc import Callable
 
-__all__ = ["SDK", "LEGACY", "SubprotocolFront"]
+__all__ = ["SDK", "LEGACY", "MAX_VIEWERS", "REFUSALS_PERIOD", "SubprotocolFront"]
 
 SDK = "foxglove.sdk.v1"
 """The subprotocol foxglove-sdk's server accepts."""
@@ -35,6 +47,17 @@ _HEADER = b"sec-websocket-protocol"
 _MAX_HEAD = 16 * 1024  # bytes of an HTTP upgrade request or response: far more than any has
 _HANDSHAKE_TIMEOUT = 10.0  # seconds (wall clock) a client or the server gets to send its head
 _CHUNK = 64 * 1024
+_LISTEN_BACKLOG = 1024  # a burst of clients waits in the kernel's queue, costing no descriptor
+
+MAX_VIEWERS = 32
+"""Viewers connected at once by default: a room full of screens; each may hold the SDK's backlog."""
+
+REFUSALS_PERIOD = 60.0
+"""Seconds (wall clock) between two log lines counting viewers turned away."""
+
+_BUSY = (
+    b"HTTP/1.1 503 Service Unavailable\r\nConnection: close\r\nContent-Type: text/plain\r\nContent-Length: %d\r\n\r\n%s"
+)
 
 
 class SubprotocolFront:
@@ -42,20 +65,28 @@ class SubprotocolFront:
 
     :meth:`start` binds (raising OSError when the address cannot be had) and
     returns the port; :meth:`stop` closes the listener and every relayed
-    connection.
+    connection.  At most ``max_viewers`` are open at once; :attr:`refused`
+    counts those turned away, ``warn`` (called in the front's thread) says so.
     """
 
-    def __init__(self, host: str, port: int, upstream: int) -> None:
+    def __init__(
+        self, host: str, port: int, upstream: int, *, max_viewers: int = MAX_VIEWERS, warn: Callable[[str], None]
+    ) -> None:
         self.host = host
         self.port = port
         self.upstream = upstream
+        self.max_viewers = max_viewers
+        self.warn = warn
+        self.refused = 0
+        self._unreported = 0  # refused since the last line said how many
+        self._reporting = False  # a count is due within REFUSALS_PERIOD
         self._loop: asyncio.AbstractEventLoop | None = None
         self._thread: threading.Thread | None = None
         self._stopped: asyncio.Event | None = None
 
     def start(self) -> int:
         """Bind and start relaying; returns the port."""
-        listener = socket.create_server((self.host, self.port))
+        listener = socket.create_server((self.host, self.port), backlog=_LISTEN_BACKLOG)
         self.port = listener.getsockname()[1]
         loop = self._loop = asyncio.new_event_loop()
         started = threading.Event()
@@ -88,6 +119,9 @@ class SubprotocolFront:
         connections: set[asyncio.Future[None] | None] = set()
 
         async def relay(reader: asyncio.StreamReader, writer: asyncio.StreamWriter) -> None:
+            if len(connections) >= self.max_viewers:
+                self._refuse(writer)
+                return
             task = asyncio.current_task()
             connections.add(task)
             try:
@@ -104,6 +138,32 @@ class SubprotocolFront:
             for task in running:
                 task.cancel()
             await asyncio.gather(*running, return_exceptions=True)
+
+    def _refuse(self, writer: asyncio.StreamWriter) -> None:
+        """Answer a viewer over the limit HTTP 503 and close (its request unread: no need to)."""
+        reason = f"the graph serves at most {self.max_viewers} viewers at once; try again later\n".encode()
+        writer.write(_BUSY % (len(reason), reason))
+        writer.close()  # the answer is still sent: the transport flushes before it closes
+        self.refused += 1
+        self._unreported += 1
+        if self.refused == 1:
+            self.warn(
+                f"foxglove: {self.max_viewers} viewers are connected, the limit: more are refused "
+                f"(HTTP 503) until some leave"
+            )
+            self._unreported = 0
+        if not self._reporting:
+            self._reporting = True
+            asyncio.get_running_loop().call_later(REFUSALS_PERIOD, self._report)
+
+    def _report(self) -> None:
+        self._reporting = False
+        if self._unreported:
+            self.warn(
+                f"foxglove: {self._unreported} more viewer(s) refused at the limit of {self.max_viewers} "
+                f"({self.refused} in all)"
+            )
+            self._unreported = 0
 
     async def _relay(self, client_in: asyncio.StreamReader, client_out: asyncio.StreamWriter) -> None:
         server_out: asyncio.StreamWriter | None = None

@@ -35,7 +35,7 @@ import anyio.abc
 from actors import codec
 from actors.core._actor import Owner
 from actors.errors import ActorsError
-from actors.recording._subprotocols import SubprotocolFront
+from actors.recording._subprotocols import MAX_VIEWERS, SubprotocolFront
 from actors.recording.tap import Tap, TapOwner, TapSet, latched
 from actors.ros.names import is_hidden_name
 from actors.ros.topics import type_name
@@ -44,7 +44,17 @@ from actors.services import Client, Service
 if TYPE_CHECKING:
     from actors.runtime import Runtime
 
-__all__ = ["FoxgloveView", "SceneHost", "Draw", "VIEW_NODE", "DEFAULT_PORT", "CALL_TIMEOUT", "TIME_PERIOD"]
+__all__ = [
+    "FoxgloveView",
+    "SceneHost",
+    "Draw",
+    "VIEW_NODE",
+    "DEFAULT_PORT",
+    "CALL_TIMEOUT",
+    "TIME_PERIOD",
+    "MAX_VIEWERS",
+    "BACKLOG",
+]
 
 VIEW_NODE = "/_actors_foxglove"
 """The hidden owner of the view's subscriptions, as ``topic info`` names it."""
@@ -57,6 +67,13 @@ CALL_TIMEOUT = 10.0
 
 TIME_PERIOD = 0.1
 """Seconds of graph time between two time broadcasts (and two updates of each watched scene)."""
+
+BACKLOG = 256
+"""Messages the SDK queues for one viewer (its default is 1,024): one that stops reading loses the oldest.
+
+A viewer that keeps up never has more than a few queued; one that never reads holds at most this
+many (issue 34 measured ~3.6 MB per such viewer at the default), times :data:`MAX_VIEWERS`.
+"""
 
 Draw = Callable[[int], Any]
 """A scene's painter: given the runtime clock's time (ns), the ``foxglove.messages.SceneUpdate`` to show."""
@@ -92,19 +109,28 @@ class FoxgloveView:
 
     ``port`` 0 lets the system choose one (:attr:`port` tells which, once
     started).  Hidden topics and services (a part starting with ``_``) only
-    with ``include_hidden``.  :meth:`start` opens the server (the runtime calls
+    with ``include_hidden``.  At most ``max_viewers`` clients are connected at
+    once; more are answered HTTP 503 (recording/_subprotocols.py).  :meth:`start` opens the server (the runtime calls
     it when it starts, if no one did before), raising ActorsError when the
     address cannot be had and ImportError without the ``foxglove`` extra.
     """
 
-    def __init__(self, port: int = DEFAULT_PORT, *, host: str = "127.0.0.1", include_hidden: bool = False) -> None:
+    def __init__(
+        self,
+        port: int = DEFAULT_PORT,
+        *,
+        host: str = "127.0.0.1",
+        include_hidden: bool = False,
+        max_viewers: int = MAX_VIEWERS,
+    ) -> None:
         self.host = host
         self.port = port
         self.include_hidden = include_hidden
+        self.max_viewers = max_viewers
         self._fox: Any = None
         self._context: Any = None
         self._server: Any = None
-        self._front = SubprotocolFront(host, port, 0)  # replaced by the one started
+        self._front = SubprotocolFront(host, port, 0, warn=self._warn)  # replaced by the one started
         self._taps = TapSet(VIEW_NODE, self._wants, self._deliver, label="foxglove", tapped=self._advertise)
         self._now_ns: Any = None
         self._loop: asyncio.AbstractEventLoop | None = None
@@ -130,10 +156,13 @@ class FoxgloveView:
                     supported_encodings=["cdr"],
                     context=self._context,
                     server_listener=self,
+                    message_backlog_size=BACKLOG,
                 )
             except Exception as exc:  # the SDK raises RuntimeError when it cannot listen
                 raise ActorsError(f"--foxglove: cannot serve on 127.0.0.1: {exc}") from None
-            self._front = SubprotocolFront(self.host, self.port, self._server.port)
+            self._front = SubprotocolFront(
+                self.host, self.port, self._server.port, max_viewers=self.max_viewers, warn=self._warn
+            )
             try:
                 self.port = self._front.start()
             except OSError as exc:
@@ -176,6 +205,15 @@ class FoxgloveView:
                 runtime.services.listeners.remove(self)
             self._front.stop()
             self._server.stop()
+
+    def _warn(self, message: str) -> None:
+        """Log ``message`` (told in the front's thread) in the graph's loop, once there is one."""
+        loop, runtime = self._loop, self._runtime
+        if loop is not None and runtime is not None:
+            try:
+                loop.call_soon_threadsafe(runtime.logger.warning, message)
+            except RuntimeError:  # the loop has closed: the graph is gone
+                pass
 
     # -- scenes (SceneHost) -----------------------------------------------------------------
 
