@@ -24,6 +24,7 @@ from actors.cli._client import (
     print_matching,
     type_of,
 )
+from actors.core.signals import raise_stops, remember_stops, take_noted
 
 __all__ = ["register"]
 
@@ -211,10 +212,17 @@ def _cancel(graph: str, service: str, impl: Any, goal_id: Any) -> None:
     """Ask to cancel the goal, on a fresh connection (the first one waits for the result)."""
     from interfaces.action_msgs.msg import GoalInfo
 
+    # A second Ctrl-C (or SIGTERM) must not leave the goal running on the server: the cancel is
+    # asked and answered first (call_service's timeout bounds it), and further stops are dropped.
+    remember_stops()
     print("Canceling goal...", flush=True)
-    with connect(graph) as conn:
-        request = impl.CancelGoalService.Request(goal_info=GoalInfo(goal_id=goal_id))
-        response = call_service(conn, service, impl.CancelGoalService, request)
+    try:
+        with connect(graph) as conn:
+            request = impl.CancelGoalService.Request(goal_info=GoalInfo(goal_id=goal_id))
+            response = call_service(conn, service, impl.CancelGoalService, request)
+    finally:
+        take_noted()
+        raise_stops()
     if response.goals_canceling:
         print("Goal canceled.")
     else:
