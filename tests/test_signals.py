@@ -167,6 +167,37 @@ def test_bag_record(graph, tmp_path, moment, signum):
     check(command, output)
 
 
+def test_bag_record_keeps_its_bag_whole_through_a_second_ctrl_c_as_it_closes(graph, tmp_path, monkeypatch, capsys):
+    from actors.cli import main
+    from actors.recording.bag_writer import BagWriter
+
+    write, close = BagWriter.write, BagWriter.close
+
+    def first_press_at_the_third(self, *args):
+        write(self, *args)
+        if self.message_count == 3:
+            signal.raise_signal(signal.SIGINT)
+
+    def second_press_as_it_closes(self, **kwargs):
+        signal.raise_signal(signal.SIGINT)
+        close(self, **kwargs)
+
+    monkeypatch.setattr(BagWriter, "write", first_press_at_the_third)
+    monkeypatch.setattr(BagWriter, "close", second_press_as_it_closes)
+    monkeypatch.setenv("XDG_RUNTIME_DIR", graph[1]["XDG_RUNTIME_DIR"])
+    bag = tmp_path / "run.mcap"
+    try:
+        code = main(["bag", "record", "/topic", "-o", str(bag), "--graph", graph[0]])
+    except KeyboardInterrupt:
+        pytest.fail("the second Ctrl-C cut the bag's closing short")
+    assert code in (0, None)
+    recorded = int(capsys.readouterr().err.rpartition("Recorded ")[2].split()[0])
+    assert recorded >= 3  # the first press lands within a message or two of the third
+    monkeypatch.undo()
+    assert main(["bag", "info", str(bag)]) in (0, None)
+    assert f"Messages:          {recorded}\n" in capsys.readouterr().out
+
+
 @pytest.mark.parametrize(("moment", "signum"), cases(0))
 def test_bag_play(graph, tmp_path, moment, signum):
     bag = BagWriter(tmp_path / "played.mcap")

@@ -10,6 +10,7 @@ from typing import Any
 
 from actors.cli._client import add_verb, connect
 from actors.cli.topic import _positive  # one reading of a positive number for every verb
+from actors.core.signals import raise_stops, remember_stops, take_noted
 
 __all__ = ["register", "format_info"]
 
@@ -299,9 +300,16 @@ def record_bag(args: argparse.Namespace) -> None:
             raise
         print(f"stopped recording: {exc}", file=sys.stderr)
     finally:
-        for stream in streams.values():
-            stream.conn.close()
-        bag.close()
+        # A second Ctrl-C (or SIGTERM) while the bag closes would cut its summary short: closing
+        # is quick, so stops are only noted until it is done.
+        remember_stops()
+        try:
+            for stream in streams.values():
+                stream.conn.close()
+            bag.close()
+        finally:
+            take_noted()
+            raise_stops()
     print(f"Recorded {bag.message_count} message(s) into {bag.path}", file=sys.stderr)
 
 
