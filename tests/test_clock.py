@@ -312,13 +312,15 @@ def test_a_loop_time_read_earlier_converts_to_what_now_said_then():
             clock = ROSClock(loop)
             then = loop.time()
             now = clock.now_ns()
-            assert clock.ns_at(then) <= now <= clock.ns_at(loop.time())
+            at_then, at_later, at_now = clock.ns_at([then, then + 0.25, loop.time()])
+            assert at_then <= now <= at_now
             if isinstance(loop, VirtualTimeLoop):
-                assert clock.ns_at(then) == now == 5_000_000_000
-            assert clock.ns_at(then + 0.25) - clock.ns_at(then) == 250_000_000
+                assert at_then == now == 5_000_000_000
+            assert at_later - at_then == 250_000_000
+            assert clock.ns_at([]) == []
             clock._set_ros_time_is_active(True)  # a time set by hand counts as it is now
             clock.set_ros_time_override(Time(seconds=42, clock_type=ClockType.ROS_TIME))
-            assert clock.ns_at(then) == 42_000_000_000
+            assert clock.ns_at([then, then + 1.0]) == [42_000_000_000] * 2
         finally:
             loop.close()
 

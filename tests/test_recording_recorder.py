@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import errno
+import io
 import subprocess
 import sys
 from pathlib import Path
@@ -15,6 +17,7 @@ from actors import Node, Runtime, VirtualTimeLoop, codec
 from actors.cli.bag import format_info
 from actors.ops.doctor import diagnose
 from actors.recording import Recorder
+from actors.recording.mcap_writer import McapWriter
 from actors.recording.reader import Bag
 from interfaces.std_msgs.msg import String
 
@@ -289,6 +292,29 @@ def test_a_disk_that_fills_up_leaves_a_valid_bag_and_the_graph_running(tmp_path)
     assert f"keeps the {written} message(s) written before" in done.stderr
     with AnyReader([path], default_typestore=get_typestore(Stores.EMPTY)) as reader:
         assert sum(1 for _ in reader.messages()) == written
+
+
+class _FillingDisk(io.BytesIO):
+    """A file with room for ``room`` bytes, then failing as a full disk does."""
+
+    def __init__(self, room: int) -> None:
+        super().__init__()
+        self.room = room
+
+    def write(self, data) -> int:  # type: ignore[override]
+        if self.tell() + len(data) > self.room:
+            raise OSError(errno.ENOSPC, "no space left on device")
+        return super().write(data)
+
+
+def test_a_batch_that_fills_the_disk_counts_every_message_left_out_of_the_file():
+    writer = McapWriter(_FillingDisk(room=3_000), chunk_size=1_000, compression="")
+    channel = writer.add_channel("/t", writer.add_schema("std_msgs/msg/String", "ros2msg", b"string data"), "cdr", {})
+    writer.add_messages([(channel, i, i, bytes(100)) for i in range(50)])
+    assert writer.error is not None and 0 < writer.message_count < 50
+    assert writer.message_count + writer.lost == 50
+    writer.add_message(channel, 50, 50, bytes(100))
+    assert writer.message_count + writer.lost == 51
 
 
 @pytest.mark.virtual_time

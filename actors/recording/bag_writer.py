@@ -72,6 +72,10 @@ class BagWriter:
         """Add one serialized message (log time in ns, as publish time too)."""
         self.mcap.add_message(channel, log_time, log_time, data)
 
+    def write_many(self, messages: Sequence[tuple[int, int, int, bytes]]) -> None:
+        """Add serialized messages in order: ``(channel, log time, publish time, data)``, times in ns."""
+        self.mcap.add_messages(messages)
+
     @property
     def pending_since(self) -> int | None:
         """Log time of the oldest message not yet in the file, if any."""

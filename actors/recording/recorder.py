@@ -275,10 +275,9 @@ class Recorder:
         writer = self._writer
         assert writer is not None
         encode = codec.encode_cdr
-        add = writer.write
-        ns_at = self._ns_at
         failures = []
-        for tap, stamp, msg in batch:
+        messages = []
+        for (tap, _, msg), stamp in zip(batch, self._ns_at([stamp for _, stamp, _ in batch])):
             channel = tap.channel
             if channel is None:
                 channel = self._register(tap)
@@ -287,7 +286,8 @@ class Recorder:
             except Exception as exc:  # a message its type cannot carry: counted, never fatal
                 failures.append((tap, exc))
                 continue
-            add(channel, ns_at(stamp), data)
+            messages.append((channel, stamp, stamp, data))
+        writer.write_many(messages)
         writer.flush_older_than(self._now_ns() - round(self.flush_interval * 1e9))
         return failures
 

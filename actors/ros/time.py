@@ -23,6 +23,7 @@ from __future__ import annotations
 import asyncio
 import math
 import time
+from collections.abc import Sequence
 from enum import IntEnum
 from typing import Any
 
@@ -373,12 +374,14 @@ class ROSClock(Clock):
             return time.time_ns()
         return self._epoch_ns + int(round(self._loop.time() * _NS))
 
-    def ns_at(self, loop_time: float) -> int:
-        """What :meth:`now_ns` read when the loop's clock read ``loop_time`` (a time set by hand
-        counts as it is now): for whoever stamps with the loop's cheaper clock and converts later."""
+    def ns_at(self, loop_times: Sequence[float]) -> list[int]:
+        """What :meth:`now_ns` read when the loop's clock read each of ``loop_times`` (a time set
+        by hand counts as it is now): for whoever stamps with the loop's cheaper clock and
+        converts later, a batch at a time."""
         if self._override_active:
-            return self._override_ns
-        return self._epoch_ns + int(round(loop_time * _NS))
+            return [self._override_ns] * len(loop_times)
+        epoch = self._epoch_ns
+        return [epoch + round(t * _NS) for t in loop_times]
 
     def monotonic(self) -> float:
         """The loop's time in seconds: what timers and deadlines are measured in."""
