@@ -201,7 +201,7 @@ class Tap(Subscription):
     taken.
     """
 
-    __slots__ = ("channel", "offers", "ros_type", "definition", "type_hash", "failed")
+    __slots__ = ("channel", "offers", "ros_type", "definition", "type_hash", "failed", "_deliver")
 
     def __init__(self, owner: TapOwner, topic: Topic, deliver: Deliver, depth: int) -> None:
         self.ros_type = type_name(topic.msg_type)
@@ -213,9 +213,16 @@ class Tap(Subscription):
         self.channel: Any = None
         self.offers: tuple[QoSSnapshot, ...] = tuple(p.qos for p in topic.publishers)
         self.failed = False
+        self._deliver = deliver
         self._queue = _Handover(self, deliver)  # type: ignore[assignment]  # stands in for the deque: only append() is used
         self._limit = sys.maxsize
         self._scheduled = True  # never on the actor's ready queue
+
+    def _push(self, msg: Any) -> None:
+        # publish() feeding several subscriptions: straight to the sink.  Subscription._push
+        # has nothing to do for a tap (its queue never fills, it is never woken, and no batch is
+        # open on its topic: a publisher that feeds a tap does not batch), only three calls to make.
+        self._deliver(self, msg)
 
 
 def _no_callback(msg: Any) -> None:  # pragma: no cover - a tap is never scheduled
