@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import asyncio
 import base64
 import contextlib
+import json
 import os
 import re
 import resource
 import socket
+import struct
 import subprocess
 import sys
 import threading
@@ -175,3 +178,87 @@ def test_viewers_over_the_limit_are_answered_503_and_counted_in_two_lines_not_on
         "foxglove: 0 viewers are connected, the limit: more are refused (HTTP 503) until some leave",
         "foxglove: 4 more viewer(s) refused at the limit of 0 (5 in all)",
     ]
+
+
+BUSY = {"/odom", "/scan", "/tf", "/scene"}  # the TurtleBot's channels with the most to send
+GREEDY = 20
+VIRTUAL_FOREVER = ("--clock", "virtual", "--duration", "1e6")  # virtual time as fast as it goes, never ending
+
+
+async def _frame(reader: asyncio.StreamReader) -> tuple[int, bytes]:
+    """One unmasked frame from the server: its opcode and payload."""
+    first, size = await reader.readexactly(2)
+    size &= 0x7F
+    if size == 126:
+        (size,) = struct.unpack(">H", await reader.readexactly(2))
+    elif size == 127:
+        (size,) = struct.unpack(">Q", await reader.readexactly(8))
+    return first & 0x0F, await reader.readexactly(size)
+
+
+def _text(payload: bytes) -> bytes:
+    """A masked client text frame (a zero mask: the bytes go as they are)."""
+    size = len(payload)
+    head = bytes([0x81, 0xFE]) + struct.pack(">H", size) if size >= 126 else bytes([0x81, 0x80 | size])
+    return head + b"\0\0\0\0" + payload
+
+
+async def _greedy(port: int, i: int) -> asyncio.StreamWriter:
+    """A viewer that subscribes to every channel advertised (the busy ones at least), then never reads again."""
+    reader, writer = await asyncio.open_connection("127.0.0.1", port)
+    writer.write(upgrade(i, SDK))
+    assert (await reader.readuntil(b"\r\n\r\n")).startswith(b"HTTP/1.1 101 ")
+    subscribed: set[str] = set()
+    while not subscribed >= BUSY:
+        opcode, payload = await _frame(reader)
+        if opcode == 1 and (op := json.loads(payload))["op"] == "advertise":
+            first = len(subscribed)
+            wanted = [{"id": first + n, "channelId": c["id"]} for n, c in enumerate(op["channels"])]
+            writer.write(_text(json.dumps({"op": "subscribe", "subscriptions": wanted}).encode()))
+            subscribed |= {c["topic"] for c in op["channels"]}
+    return writer
+
+
+async def _greedy_crowd(port: int, count: int, pid: int, grown: float) -> float:
+    """``count`` greedy viewers at once, until the graph's RSS has grown to ``grown`` MB (or 10 s); the RSS then."""
+    writers = [await _greedy(port, i) for i in range(count)]
+    try:
+        deadline = time.monotonic() + 10
+        while rss_mb(pid) < grown and time.monotonic() < deadline:  # another process's state, looked at
+            await asyncio.sleep(0.05)
+        return rss_mb(pid)
+    finally:
+        for writer in writers:
+            writer.close()
+
+
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads the graph's memory in /proc")
+@pytest.mark.slow
+def test_viewers_that_subscribe_to_everything_and_never_read_give_their_memory_back(tmp_path):
+    graph = tmp_path / f"greedy{os.getpid()}.toml"
+    graph.write_text((ROOT / "graphs" / "turtlebot.toml").read_text())
+    log = tmp_path / "graph.log"
+    with log.open("wb") as out:
+        proc = subprocess.Popen(
+            [sys.executable, "-m", "actors.run", str(graph), *VIRTUAL_FOREVER, "--foxglove", "0"],
+            cwd=ROOT,
+            env=python_env(),
+            stdout=out,
+            stderr=subprocess.STDOUT,
+        )
+    try:
+        assert eventually(lambda: SERVING.search(log.read_text()) is not None or proc.poll() is not None)
+        found = SERVING.search(log.read_text())
+        assert found, log.read_text()
+        port = int(found[1])
+        asyncio.run(_greedy_crowd(port, 1, proc.pid, 0))  # the SDK's threads started: where the graph stands
+        readings = [rss_mb(proc.pid)]
+        assert eventually(lambda: readings.append(rss_mb(proc.pid)) or readings[-1] == readings[-2])
+        before = readings[-1]
+        # Their backlogs fill (the SDK keeps up to 256 messages each) and the graph grows by tens of MB.
+        during = asyncio.run(_greedy_crowd(port, GREEDY, proc.pid, before + 25))
+        assert before + 25 <= during < 150, (before, during)
+        assert eventually(lambda: rss_mb(proc.pid) < before + 20), (before, during, rss_mb(proc.pid))
+    finally:
+        proc.terminate()
+        proc.wait(timeout=30)

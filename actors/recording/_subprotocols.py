@@ -24,13 +24,17 @@ viewers away is told through ``warn``: one line when it starts, then at most
 one count per :data:`REFUSALS_PERIOD`.  Each direction of a relayed
 connection holds at most one chunk plus the transport's write buffer: a
 viewer that never reads stalls its own upstream connection, where the SDK
-drops its oldest messages (``message_backlog_size``).
+drops its oldest messages (``message_backlog_size``).  When the last viewer
+has gone, the heap they used is handed back to the system (glibc's
+``malloc_trim``): freed, it would otherwise stay resident at its peak.
 """
 
 from __future__ import annotations
 
 import asyncio
 import contextlib
+import ctypes
+import ctypes.util
 import socket
 import threading
 from collections.abc import Callable
@@ -47,6 +51,7 @@ _HEADER = b"sec-websocket-protocol"
 _MAX_HEAD = 16 * 1024  # bytes of an HTTP upgrade request or response: far more than any has
 _HANDSHAKE_TIMEOUT = 10.0  # seconds (wall clock) a client or the server gets to send its head
 _CHUNK = 64 * 1024
+_GIVE_BACK_AFTER = (0.0, 0.5, 2.0)  # s after the last viewer left (the SDK lets go of its clients a moment later)
 _LISTEN_BACKLOG = 1024  # a burst of clients waits in the kernel's queue, costing no descriptor
 
 MAX_VIEWERS = 32
@@ -128,6 +133,9 @@ class SubprotocolFront:
                 await self._relay(reader, writer)
             finally:
                 connections.discard(task)
+                if not connections:
+                    for delay in _GIVE_BACK_AFTER:
+                        asyncio.get_running_loop().call_later(delay, _give_back)
 
         server = await asyncio.start_server(relay, sock=listener, limit=_MAX_HEAD)
         started.set()
@@ -181,6 +189,15 @@ class SubprotocolFront:
             for writer in (client_out, server_out):
                 if writer is not None:
                     writer.close()
+
+
+def _give_back() -> None:
+    """Hand the heap freed by departed viewers back to the system, where the C library can (glibc)."""
+    if _LIBC is not None:
+        _LIBC.malloc_trim(0)
+
+
+_LIBC = ctypes.CDLL(ctypes.util.find_library("c")) if hasattr(ctypes.CDLL(None), "malloc_trim") else None
 
 
 async def _pipe(source: asyncio.StreamReader, sink: asyncio.StreamWriter) -> None:
