@@ -409,3 +409,55 @@ def test_a_new_packages_launch_files_installed_by_a_glob_start_the_demo_talker_a
             "[INFO] [2.000000000] [speaker]: Publishing: 'Hello World: 2'",
             "[INFO] [2.000000000] [ear]: I heard: [Hello World: 2]",
         ], (front_end, done.stderr)
+
+
+# Three processes that outlive the launch and a quick one: the quick one's exit must be heard while
+# the others still run (readers of long-lived processes once filled a pool and queued the rest).
+MANY_PROCESSES = """\
+from launch import LaunchDescription
+from launch.actions import EmitEvent, ExecuteProcess, RegisterEventHandler
+from launch.event_handlers import OnProcessExit
+from launch.events import Shutdown
+
+
+def generate_launch_description():
+    quick = ExecuteProcess(cmd=['echo', 'hi'], output='screen')
+    return LaunchDescription([
+        *(ExecuteProcess(cmd=['sleep', '60']) for _ in range(3)),
+        quick,
+        RegisterEventHandler(OnProcessExit(target_action=quick, on_exit=[EmitEvent(event=Shutdown(reason='done'))])),
+    ])
+"""
+
+
+def test_a_quick_process_is_heard_while_long_ones_run(tmp_path):
+    path = tmp_path / "many.launch.py"
+    path.write_text(MANY_PROCESSES)
+    done = launch(path, "--duration", "600")
+    assert done.returncode == 0, done.stderr
+    assert "[echo-1] hi" in done.stdout
+    # The shutdown its exit asked for ended the sleeps: none of them got to finish by itself.
+    assert done.stderr.count("process has finished cleanly") == 1, done.stderr
+
+
+# A message published once, for a subscriber that a timer starts a second later in virtual time.
+LATE_LISTENER = """\
+from launch import LaunchDescription
+from launch.actions import ExecuteProcess, TimerAction
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        ExecuteProcess(cmd=['ros2', 'topic', 'pub', '--once', '/chatter', 'std_msgs/msg/String', '{data: late}']),
+        TimerAction(period=1.0, actions=[Node(package='demo_nodes_py', executable='listener')]),
+    ])
+"""
+
+
+def test_a_pub_that_waits_for_a_subscription_lets_virtual_time_go_on(tmp_path):
+    path = tmp_path / "late.launch.py"
+    path.write_text(LATE_LISTENER)
+    done = launch(path, "--duration", "3")
+    assert done.returncode == 0, done.stderr
+    assert "[listener]: I heard: [late]" in done.stderr, done.stderr

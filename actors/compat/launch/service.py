@@ -22,6 +22,7 @@ takes no wall time; a subprocess's exit is heard when it happens, in real time.
 
 from __future__ import annotations
 
+import _thread
 import concurrent.futures
 import os
 import shutil
@@ -49,7 +50,7 @@ from actors.compat.launch.events import (
     Shutdown,
 )
 from actors.compat.launch.loading import load_launch_file
-from actors.compat.launch.translation import graph_environment, holds_time, translated
+from actors.compat.launch.translation import WAITING, graph_environment, holds_time, translated
 from actors.compat.partners import Partner
 from actors.compat.programs import Program, load_target, program_of, spawn_native
 from actors.compat.rclpy.context import current_session
@@ -159,7 +160,6 @@ class LaunchService:
         self._shutdown: str | None = None
         self._folder = tempfile.mkdtemp(prefix="actors-launch-")
         self._executables: dict[tuple[str, str], tuple[Executable, Package]] = {}
-        self._pool = concurrent.futures.ThreadPoolExecutor(thread_name_prefix="actors launch process")
         self._waits: list[concurrent.futures.Future[None]] = []
 
     # -- the main loop -------------------------------------------------------------------
@@ -364,31 +364,32 @@ class LaunchService:
         self.log(name, f"process started with pid [{process.pid}]")
         self.emit(ProcessStarted(action=action, name=name, pid=process.pid))
         shown = {1: output in ("screen", "both", "full"), 2: output != "own_log"}
-        # Pool workers are no script threads: they hold no virtual time while they wait for lines.
+        released = threading.Event()  # the command no longer holds virtual time (see below)
         readers = [
-            self._pool.submit(self._read, running, pipe, fd, shown[fd])
+            _on_own_thread(self._read, running, pipe, fd, shown[fd], released)
             for pipe, fd in ((process.stdout, 1), (process.stderr, 2))
         ]
 
-        def wait() -> int:
+        def wait() -> None:
             code = process.wait()
             concurrent.futures.wait(readers)  # every line is heard before the exit
-            return code
+            self._exited(running, code)
+            released.set()
 
+        self._waits.append(_on_own_thread(wait))
         if ours is not None and holds_time(ours) and self.session.running:
             # One of actors' commands against this graph: an executor job of the runtime's, so virtual
-            # time stands still until it ends (the graph still answers it), as if it took no time.
-            job = self.session.call(self.session.loop.run_in_executor, None, wait)
-            job.add_done_callback(lambda done: self._exited(running, done.result()))
-        else:
-            # Waited for in real time, on a pool worker: a process of its own takes the time it takes.
-            self._waits.append(self._pool.submit(lambda: self._exited(running, wait())))
+            # time stands still while it runs (the graph still answers it), as if it took no time:
+            # until it ends, or says it waits for a subscription that only time may bring.
+            self.session.call(self.session.loop.run_in_executor, None, released.wait)
 
-    def _read(self, running: _Running, pipe: Any, fd: int, shown: bool) -> None:
+    def _read(self, running: _Running, pipe: Any, fd: int, shown: bool, released: threading.Event) -> None:
         # On a reader thread: each line is an event (OnProcessIO), and shown when the output says so.
         kind = ProcessStdout if fd == 1 else ProcessStderr
         stream = sys.stdout if fd == 1 else sys.stderr
         for line in iter(pipe.readline, b""):
+            if fd == 1 and line.startswith(WAITING):
+                released.set()
             if shown:
                 text = line.decode(errors="replace").rstrip("\n")
                 print(f"[{running.name}] {text}", file=stream, flush=True)
@@ -461,5 +462,23 @@ class LaunchService:
                     break
                 work = self._queue.popleft()
             work()
-        self._pool.shutdown(wait=False)
         shutil.rmtree(self._folder, ignore_errors=True)
+
+
+def _on_own_thread(fn: Callable[..., Any], *args: Any) -> concurrent.futures.Future[Any]:
+    """``fn(*args)`` on a thread of its own, its result a future.
+
+    One per pipe and per process: a pool would queue a new process's readers behind long-lived
+    ones (two running processes filled the default pool).  Started below ``threading``, so no
+    script thread's turn enlists it: it holds no virtual time while it waits for lines or an exit.
+    """
+    future: concurrent.futures.Future[Any] = concurrent.futures.Future()
+
+    def run() -> None:
+        try:
+            future.set_result(fn(*args))
+        except BaseException as exc:
+            future.set_exception(exc)
+
+    _thread.start_new_thread(run, ())
+    return future

@@ -28,11 +28,16 @@ from actors.compat.launch.substitutions import ROS2
 from actors.ops.control import GRAPH_VARIABLE, ControlEndpoint, endpoint_name
 from actors.runtime import Runtime
 
-__all__ = ["translated", "graph_environment", "holds_time"]
+__all__ = ["translated", "graph_environment", "holds_time", "WAITING"]
 
 _SHELL_SYNTAX = set("|&;<>()`$")
 _WAITS_FOR_TIME = {("topic", "echo"), ("topic", "hz"), ("topic", "bw"), ("topic", "delay"), ("action", "send_goal")}
 _PROGRAMS = {"bag", "run", "launch"}
+
+
+#: How ``actors topic pub`` (as ros2's) starts the line it prints while it waits for a subscription:
+#: from then on the command waits for what only the graph's time may bring.
+WAITING = b"Waiting for at least "
 
 
 def holds_time(command: Sequence[str]) -> bool:
