@@ -244,3 +244,22 @@ def test_a_stop_signal_inside_an_import_stops_the_command_once_the_import_is_don
         [sys.executable, str(tmp_path / "importer.py")], env=env, capture_output=True, text=True, timeout=60
     )
     assert done.stdout == "imported True\ninterrupted after the import\n", done.stdout + done.stderr
+
+
+STUCK_IMPORT = """\
+import os, signal, time
+os.kill(os.getpid(), signal.SIGHUP)
+while True:  # a module that never finishes importing
+    time.sleep(0.01)
+"""
+
+
+def test_a_stop_inside_an_import_that_never_ends_still_stops_the_command(tmp_path):
+    (tmp_path / "signalled.py").write_text(STUCK_IMPORT)
+    (tmp_path / "importer.py").write_text(IMPORTER)
+    env = python_env()
+    env["PYTHONPATH"] = os.pathsep.join([str(tmp_path), env.get("PYTHONPATH", "")])
+    done = subprocess.run(
+        [sys.executable, str(tmp_path / "importer.py")], env=env, capture_output=True, text=True, timeout=60
+    )
+    assert done.stdout == "interrupted inside the import\n", done.stdout + done.stderr

@@ -38,6 +38,8 @@ STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
 
 _noted: list[int] = []
 _AGAIN = 0.01  # seconds before a signal that landed inside an import is sent again
+_IMPORT_GRACE = 2.0  # seconds an import may take to finish before a stop interrupts it anyway
+_deferred: dict[int, float] = {}  # when each signal was first put off for an import
 
 
 def stop_signals() -> tuple[signal.Signals, ...]:
@@ -62,10 +64,13 @@ def _interrupt(signum: int, frame: FrameType | None) -> None:
     # An exception in the middle of an import breaks what it was building: importlib's module locks
     # (the next import of that module waits forever) or an extension's half-made state (msgspec
     # crashed building a decoder).  There the signal is sent again a moment later, until it lands
-    # outside any import.
+    # outside any import, or until a module that never finishes importing has had its grace.
     if _importing(frame):
-        _thread.start_new_thread(_send_again, (signum,))
-        return
+        first = _deferred.setdefault(signum, time.monotonic())
+        if time.monotonic() - first < _IMPORT_GRACE:
+            _thread.start_new_thread(_send_again, (signum,))
+            return
+    _deferred.pop(signum, None)
     raise KeyboardInterrupt
 
 
