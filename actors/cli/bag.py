@@ -289,7 +289,7 @@ def record_bag(args: argparse.Namespace) -> None:
                 elif held_since is None:
                     held_since = time.monotonic()
                 elif time.monotonic() - held_since >= args.flush_interval:
-                    bag.flush_older_than(bag.pending_since)
+                    bag.flush_older_than(bag.pending_since)  # the whole chunk in progress
                     held_since = None
                 if bag.error is not None:
                     raise BagError(f"recording to {bag.path} stopped: {bag.error}")

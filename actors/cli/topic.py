@@ -273,11 +273,12 @@ def echo_topic(args: argparse.Namespace) -> None:
     if args.raw and args.field:
         raise ControlError("--raw prints whole messages: leave out --field")
     truncate = None if args.full_length else args.truncate_length
-    deadline = None if args.timeout is None else time.monotonic() + args.timeout
     asked = codec.ros_name(codec.get_type(args.type)) if args.type else ""
     with connect(args.graph) as conn:
         request = Subscribe(topic=args.topic, type=asked, qos=_qos_choice(args))
         msg_type = codec.get_type(conn.request(request)["type"])
+        # From the subscription on, as ros2's timer starts once its node is up.
+        deadline = None if args.timeout is None else time.monotonic() + args.timeout
         while True:
             sample = conn.sample(None if deadline is None else max(0.0, deadline - time.monotonic()))
             if sample is None:

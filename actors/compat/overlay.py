@@ -123,7 +123,12 @@ class _Alias:
 
 
 class MissingHint(importlib.abc.MetaPathFinder):
-    """Last on ``sys.meta_path``: a ROS package that nothing provides fails with a word on what ships."""
+    """Last on ``sys.meta_path``: a ROS package that nothing provides fails with a word on what ships.
+
+    While the overlay is installed, ``importlib.util.find_spec`` of such a name raises
+    ModuleNotFoundError (with the word) where it would return None: a probe for an optional ROS
+    package catches ImportError, as a probe by import does.
+    """
 
     # ROS Python packages that programs import and actors has no stand-in for.
     KNOWN = frozenset(
