@@ -79,7 +79,7 @@ def test_bag_info_prints_as_ros2_bag_info(bag):
         f"Files:             {bag}",
         f"Bag size:          {size / 1024:.1f} KiB",
         "Storage id:        mcap",
-        "ROS Distro:        unknown",
+        "ROS Distro:        kilted",
         f"Duration:          {end}s",
         "Start:             Jan  1 1970 00:00:00.000000000 (0.000000000)",
         f"End:               Jan  1 1970 00:00:{end.zfill(12)} ({end})",

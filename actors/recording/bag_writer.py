@@ -15,6 +15,7 @@ from typing import Any
 
 from actors.recording.mcap_writer import McapWriter
 from actors.recording.rosbag import (
+    ROS_DISTRO,
     TopicRecord,
     metadata_dict,
     metadata_yaml,
@@ -121,6 +122,7 @@ class BagWriter:
             end=end,
             count=mcap.message_count,
             files=[self.path.name],
+            ros_distro=ROS_DISTRO,
             dropped=dropped,
         )
         mcap.add_metadata("rosbag2", {"serialized_metadata": metadata_yaml(metadata, top_level=False)})

@@ -21,6 +21,7 @@ import yaml
 __all__ = [
     "METADATA_VERSION",
     "DROPPED_KEY",
+    "ROS_DISTRO",
     "TopicRecord",
     "qos_profiles_yaml",
     "metadata_dict",
@@ -86,6 +87,11 @@ class TopicRecord:
     type_hash: str = ""
     message_count: int = 0
     serialization_format: str = "cdr"
+
+
+#: What rosbag2 writes as ``ros_distro`` (``bag info``'s "ROS Distro"): the distribution whose
+#: interfaces and type hashes actors speaks, whatever ROS the machine has or lacks.
+ROS_DISTRO = "kilted"
 
 
 def metadata_dict(
