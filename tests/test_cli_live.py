@@ -210,6 +210,18 @@ def test_topic_echo_once_prints_one_yaml_document(graph):
 
 
 @pytest.mark.slow
+def test_topic_delay_reports_the_odometrys_header_delay_as_ros2_prints_it(graph):
+    out = ok(graph, "topic", "delay", "/odom", "--count", "1")
+    report = re.fullmatch(
+        r"average delay: (\d+\.\d{3})\n\tmin: \d+\.\d{3}s max: \d+\.\d{3}s std dev: \d+\.\d{5}s window: (\d+)\n", out
+    )
+    assert report and float(report[1]) < 0.5 and int(report[2]) >= 1, out  # stamped as published, in one process
+    no_header = actors(graph, "topic", "delay", "/topic", "--count", "1")
+    assert no_header.returncode == 2, no_header
+    assert no_header.stderr == "actors: /topic carries std_msgs/msg/String, which has no header to take a delay from\n"
+
+
+@pytest.mark.slow
 def test_topic_hz_reports_about_two_hertz(graph):
     out = ok(graph, "topic", "hz", "/topic", "--count", "2")
     rates = [float(r) for r in re.findall(r"^average rate: (\d+\.\d{3})$", out, re.MULTILINE)]

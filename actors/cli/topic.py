@@ -1,10 +1,10 @@
-"""``actors topic list|info|type|find|echo|pub|hz|bw``: a running graph's topics, as ``ros2 topic``."""
+"""``actors topic list|info|type|find|echo|pub|hz|delay|bw``: a running graph's topics, as ``ros2 topic``."""
 
 from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from types import CodeType
 from typing import TYPE_CHECKING, Any
 
@@ -106,10 +106,13 @@ def register(subparsers: Any) -> None:
     hz = add_verb(verbs, "hz", topic_hz, help="print a topic's average rate every second")
     hz.add_argument("topic", metavar="TOPIC")
     hz.add_argument("-w", "--window", type=int, default=10000, help="intervals averaged (default 10000)")
+    delay = add_verb(verbs, "delay", topic_delay, help="print the delay from a topic's header stamps every second")
+    delay.add_argument("topic", metavar="TOPIC")
+    delay.add_argument("-w", "--window", type=int, default=10000, help="messages averaged (default 10000)")
     bw = add_verb(verbs, "bw", topic_bw, help="print a topic's bandwidth every second")
     bw.add_argument("topic", metavar="TOPIC")
     bw.add_argument("-w", "--window", type=int, default=100, help="messages averaged (default 100)")
-    for timed in (hz, bw):
+    for timed in (hz, delay, bw):
         timed.add_argument(
             "--count",
             type=int,
@@ -418,7 +421,6 @@ def topic_hz(args: argparse.Namespace) -> None:
     clock), so the rate is right under virtual time too.  Prints nothing for a
     second without new messages.  ``--count N`` exits after N reports.
     """
-    import math
     from collections import deque
 
     from actors.ops.control import Subscribe
@@ -439,18 +441,48 @@ def topic_hz(args: argparse.Namespace) -> None:
         if not fresh:
             return False
         fresh = False
-        n = len(intervals)
-        mean = sum(intervals) / n
-        std = math.sqrt(sum((x - mean) ** 2 for x in intervals) / n)
-        print(f"average rate: {1.0 / mean if mean > 0 else 0.0:.3f}")
-        print(
-            f"\tmin: {min(intervals):.3f}s max: {max(intervals):.3f}s std dev: {std:.5f}s window: {n + 1}",
-            flush=True,
-        )
+        mean = sum(intervals) / len(intervals)
+        _print_spread(f"average rate: {1.0 / mean if mean > 0 else 0.0:.3f}", intervals, len(intervals) + 1)
         return True
 
     with connect(args.graph) as conn:
         conn.request(Subscribe(topic=args.topic, content=False))
+        _each_second(conn, take, report, args.count)
+
+
+def topic_delay(args: argparse.Namespace) -> None:
+    """Every second of wall time, print the average delay of the last ``--window`` messages: when the
+    graph received each (its ROS time) less its header's stamp, as ``ros2 topic delay`` does (which
+    also leaves out the first message).  ControlError for a type without a header."""
+    from collections import deque
+
+    from actors import codec
+    from actors.ops.control import Subscribe
+
+    delays: deque[float] = deque(maxlen=max(1, args.window))
+    first = True
+    fresh = False
+
+    def take(sample: Sample) -> None:
+        nonlocal first, fresh
+        stamp = (sample.msg or {}).get("header", {}).get("stamp")
+        if stamp is None:
+            raise ControlError(f"{args.topic} carries {ros_type}, which has no header to take a delay from")
+        if not first:
+            delays.append(sample.stamp - (stamp.get("sec", 0) + stamp.get("nanosec", 0) / 1e9))
+            fresh = True
+        first = False
+
+    def report() -> bool:
+        nonlocal fresh
+        if not fresh:
+            return False
+        fresh = False
+        _print_spread(f"average delay: {sum(delays) / len(delays):.3f}", delays, len(delays))
+        return True
+
+    with connect(args.graph) as conn:
+        ros_type = codec.ros_name(codec.get_type(conn.request(Subscribe(topic=args.topic, ros_time=True))["type"]))
         _each_second(conn, take, report, args.count)
 
 
@@ -503,6 +535,16 @@ def _bytes_unit(rate: float) -> Callable[[float], str]:
     if rate < 1_000_000:
         return lambda n: f"{n / 1000:.2f} KB"
     return lambda n: f"{n / 1_000_000:.2f} MB"
+
+
+def _print_spread(head: str, values: Sequence[float], window: int) -> None:
+    """ros2's report of ``hz`` and ``delay``: ``head``, then the values' min, max and standard deviation."""
+    import math
+
+    mean = sum(values) / len(values)
+    std = math.sqrt(sum((x - mean) ** 2 for x in values) / len(values))
+    print(head)
+    print(f"\tmin: {min(values):.3f}s max: {max(values):.3f}s std dev: {std:.5f}s window: {window}", flush=True)
 
 
 def _each_second(conn: Connection, take: Callable[[Sample], None], report: Callable[[], bool], count: int) -> None:

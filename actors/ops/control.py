@@ -184,7 +184,8 @@ class Publish(Request, tag="publish"):
 class Subscribe(Request, tag="subscribe"):
     """Stream ``topic``: result ``{"type": ros_name}``, then :class:`Sample` frames until hang-up.
 
-    ``content=False`` streams stamps only (what ``topic hz`` needs).  With a
+    ``content=False`` streams stamps only (what ``topic hz`` needs); ``ros_time``
+    stamps samples in ROS time (what ``topic delay`` compares headers with).  With a
     ``type`` (``echo TOPIC TYPE``) the topic need not exist yet, as in ROS;
     without one, a topic that does not exist fails, and so does a topic of
     another type.  The subscription's QoS is chosen to match every publisher
@@ -195,6 +196,7 @@ class Subscribe(Request, tag="subscribe"):
     topic: str
     content: bool = True
     depth: Annotated[int, msgspec.Meta(ge=1, le=10_000)] = 100
+    ros_time: bool = False  # stamps in ROS time (the runtime clock's now), not loop time
     type: str = ""
     qos: QoSChoice | None = None
 
@@ -680,9 +682,10 @@ class _Session:
         clock = self.runtime.clock
         content = request.content
         post = self.connection.post
+        now = (lambda: clock.now_ns() / 1e9) if request.ros_time else clock.monotonic
 
         def forward(msg: Any) -> None:  # encoded at once: the outbox bounds what waits
-            post(frame(Sample(stamp=clock.monotonic(), msg=msg if content else None)))
+            post(frame(Sample(stamp=now(), msg=msg if content else None)))
 
         sub = Subscription(cast(Owner, self), name, msg_type, forward, qos)  # see _Session
         self.runtime.topics.add_subscription(sub)
