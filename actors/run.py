@@ -142,10 +142,14 @@ async def _shutdown_on(stop: anyio.Event, rt: Runtime) -> None:
 def main(argv: Sequence[str] | None = None, prog: str = "python -m actors.run") -> int:
     """Parse options, load the graph, run it; return the exit code."""
     try:
-        raise_stops()  # a signal noted while the imports loaded stops the run here
+        # Noted, not raised, while argparse parses: parse_intermixed_args changes its actions for
+        # the while and an exception in there leaves them half-changed (an AttributeError).
+        remember_stops()
         parser = argparse.ArgumentParser(prog=prog, description="Run an actors graph file.")
         add_arguments(parser)
-        return launch(parser.parse_intermixed_args(argv))
+        args = parser.parse_intermixed_args(argv)
+        raise_stops()  # a signal noted while the imports loaded, or while parsing, stops the run here
+        return launch(args)
     except KeyboardInterrupt:
         return 0  # Ctrl-C, SIGTERM or SIGHUP before the graph ran: nothing to stop
 

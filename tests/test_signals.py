@@ -263,3 +263,29 @@ def test_a_stop_inside_an_import_that_never_ends_still_stops_the_command(tmp_pat
         [sys.executable, str(tmp_path / "importer.py")], env=env, capture_output=True, text=True, timeout=60
     )
     assert done.stdout == "interrupted inside the import\n", done.stdout + done.stderr
+
+
+def test_a_stop_while_the_options_are_parsed_ends_the_run_quietly(monkeypatch, tmp_path):
+    # parse_intermixed_args changes argparse's actions for the while: a KeyboardInterrupt inside
+    # left them half-changed (AttributeError: save_nargs).  The stop is noted, then honoured.
+    import argparse
+
+    import actors.run
+
+    parse = argparse.ArgumentParser.parse_known_args
+    parsed = []
+
+    def interrupted(self, *args, **kwargs):
+        os.kill(os.getpid(), signal.SIGINT)  # as a Ctrl-C in the middle of parsing
+        result = parse(self, *args, **kwargs)
+        parsed.append(True)  # the parse went on to its end
+        return result
+
+    monkeypatch.setattr(argparse.ArgumentParser, "parse_known_args", interrupted)
+    previous = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)}
+    try:
+        assert actors.run.main([str(tmp_path / "never.toml"), "--clock", "virtual"]) == 0
+        assert parsed  # and then the stop ended the run, before the graph (there is none) was read
+    finally:
+        for s, handler in previous.items():
+            signal.signal(s, handler)
