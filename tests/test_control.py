@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import socket
 import stat
 import struct
 import zlib
@@ -13,7 +14,7 @@ import pytest
 from anyio.streams.buffered import BufferedByteReceiveStream
 
 from actors import DurabilityPolicy, Node, QoSProfile, Runtime
-from actors.cli._client import connect
+from actors.cli._client import Connection, connect
 from actors.errors import ControlError
 from actors.ops.control import (
     MAX_FRAME,
@@ -25,6 +26,7 @@ from actors.ops.control import (
     NodeDetail,
     Publish,
     Reply,
+    Sample,
     Subscribe,
     decode_reply,
     endpoint_dir,
@@ -281,3 +283,18 @@ async def test_hz_does_not_replay_a_latched_topics_history(name):
         # echo shows a latched topic's last message; hz must not count that replay as a burst
         assert await anyio.to_thread.run_sync(subscribe, True) is DurabilityPolicy.TRANSIENT_LOCAL
         assert await anyio.to_thread.run_sync(subscribe, False) is DurabilityPolicy.VOLATILE
+
+
+def test_samples_that_came_in_the_same_read_as_the_reply_are_drained_without_waiting():
+    # A latched history follows the subscription's reply at once: one recv may take both, and
+    # then the socket never says it is readable for the samples already in the buffer.
+    ours, graphs = socket.socketpair()
+    with Connection(ours, "pair") as conn, graphs:
+        graphs.sendall(
+            frame(Reply(result={"type": "std_msgs/msg/String"}))
+            + b"".join(frame(Sample(stamp=float(i), msg={"data": f"m{i}"})) for i in range(3))
+        )
+        assert conn.request(Subscribe(topic="/latched"))["type"] == "std_msgs/msg/String"
+        graphs.sendall(frame(Sample(stamp=9.0, msg={"data": "later"}))[:3])  # a frame's first bytes only
+        assert [s.msg["data"] for s in conn.samples(0)] == ["m0", "m1", "m2"]
+        assert list(conn.samples(0)) == []  # nothing whole is left, and nothing waited for

@@ -185,6 +185,17 @@ class Connection:
         with self._readable():
             return _sample_decoder.decode(body)
 
+    def samples(self, wait: float = 0.0) -> Iterator[Sample]:
+        """The next sample, waiting up to ``wait`` seconds for it, then every other one already read.
+
+        A reply's read may bring streamed samples with it, and the socket does not say
+        it is readable for those: a stream drains them with this after each read.
+        """
+        sample = self.sample(timeout=wait)
+        while sample is not None:
+            yield sample
+            sample = self.sample(timeout=0)
+
     @contextlib.contextmanager
     def _readable(self) -> Iterator[None]:
         """Turn a reply this command line cannot decode into one clear ControlError."""

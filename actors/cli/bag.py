@@ -256,13 +256,12 @@ def record_bag(args: argparse.Namespace) -> None:
         selector.register(conn, selectors.EVENT_READ, stream)
         return stream
 
-    def write(stream: _Stream, sample: Any, virtual: bool) -> None:
-        """Write ``sample`` and every other one already read from the stream's connection."""
-        while sample is not None:
+    def write(stream: _Stream, wait: float, virtual: bool) -> None:
+        """Write the stream's next sample (waiting ``wait`` s for it) and every other one already read."""
+        for sample in stream.conn.samples(wait):
             stamp = round(sample.stamp * 1e9) if virtual else time.time_ns()
             msg = codec.convert(sample.msg, stream.msg_type)
             bag.write(stream.channel, stamp, codec.encode_cdr(msg))
-            sample = stream.conn.sample(timeout=0)
 
     print(f"Recording to {bag.path} (Ctrl-C stops)", file=sys.stderr, flush=True)
     try:
@@ -276,12 +275,11 @@ def record_bag(args: argparse.Namespace) -> None:
                     for topic in conn.graph().topics:
                         if topic.name not in streams and wanted_topic(topic.name):
                             streams[topic.name] = stream = subscribe(topic)
-                            # A latched topic's history may have come with the subscription's reply,
-                            # already read: the socket will not say it is readable for it.
-                            write(stream, stream.conn.sample(timeout=0), virtual)
+                            # A latched topic's history may have come with the subscription's reply.
+                            write(stream, 0, virtual)
                 for key, _ in selector.select(timeout=0.1):
                     stream = key.data
-                    write(stream, stream.conn.sample(timeout=0.01), virtual)  # readable: a frame is coming
+                    write(stream, 0.01, virtual)  # readable: a frame is coming
                 # What a kill -9 of this process loses is real time, whatever the graph's clock
                 # (a quiet topic on virtual time gives no later stamp to measure by).
                 if bag.pending_since is None:

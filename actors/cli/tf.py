@@ -102,10 +102,8 @@ def _take(conn: Connection, store: Callable[[Any, str], bool], wait: float) -> f
     from interfaces.tf2_msgs.msg import TFMessage
 
     newest = 0.0
-    sample = conn.sample(timeout=wait)
-    while sample is not None:
+    for sample in conn.samples(wait):
         newest = max(newest, sample.stamp)
         for transform in codec.convert(sample.msg, TFMessage).transforms:
             store(transform, LISTENER_AUTHORITY)
-        sample = conn.sample(timeout=0)
     return newest
