@@ -233,16 +233,21 @@ except KeyboardInterrupt:
 """
 
 
-def test_a_stop_signal_inside_an_import_stops_the_command_once_the_import_is_done(tmp_path):
-    # Raised inside an import it would break what the import was building: importlib's module
-    # locks (a later import hung) or an extension's state (msgspec crashed making a decoder).
-    (tmp_path / "signalled.py").write_text(SIGNALLED_IMPORT)
+def import_signalled(tmp_path, module: str) -> subprocess.CompletedProcess[str]:
+    """Run IMPORTER with ``module`` as the module it imports; what it printed."""
+    (tmp_path / "signalled.py").write_text(module)
     (tmp_path / "importer.py").write_text(IMPORTER)
     env = python_env()
     env["PYTHONPATH"] = os.pathsep.join([str(tmp_path), env.get("PYTHONPATH", "")])
-    done = subprocess.run(
+    return subprocess.run(
         [sys.executable, str(tmp_path / "importer.py")], env=env, capture_output=True, text=True, timeout=60
     )
+
+
+def test_a_stop_signal_inside_an_import_stops_the_command_once_the_import_is_done(tmp_path):
+    # Raised inside an import it would break what the import was building: importlib's module
+    # locks (a later import hung) or an extension's state (msgspec crashed making a decoder).
+    done = import_signalled(tmp_path, SIGNALLED_IMPORT)
     assert done.stdout == "imported True\ninterrupted after the import\n", done.stdout + done.stderr
 
 
@@ -255,13 +260,7 @@ while True:  # a module that never finishes importing
 
 
 def test_a_stop_inside_an_import_that_never_ends_still_stops_the_command(tmp_path):
-    (tmp_path / "signalled.py").write_text(STUCK_IMPORT)
-    (tmp_path / "importer.py").write_text(IMPORTER)
-    env = python_env()
-    env["PYTHONPATH"] = os.pathsep.join([str(tmp_path), env.get("PYTHONPATH", "")])
-    done = subprocess.run(
-        [sys.executable, str(tmp_path / "importer.py")], env=env, capture_output=True, text=True, timeout=60
-    )
+    done = import_signalled(tmp_path, STUCK_IMPORT)
     assert done.stdout == "interrupted inside the import\n", done.stdout + done.stderr
 
 
