@@ -42,7 +42,7 @@ MB = 2**20
 
 # Phase one: the samples and the queries; phase two (a line on stdin): the tokens, held until stdin ends.
 FLOOD = """
-import json, sys, time
+import json, sys
 import zenoh
 from actors.transport.zenoh.attachment import pack
 
@@ -52,8 +52,10 @@ config.insert_json5("connect/endpoints", json.dumps([f"tcp/127.0.0.1:{port}"]))
 config.insert_json5("scouting/multicast/enabled", "false")
 session = zenoh.open(config)
 pub = session.declare_publisher(topic, congestion_control=zenoh.CongestionControl.BLOCK)  # every one arrives
-while not pub.matching_status.matching:
-    time.sleep(0.01)  # the graph's subscriber is known to this session: no event to wait on
+matching = pub.declare_matching_listener()  # before the look: a change after it is heard
+if not pub.matching_status.matching:
+    while not matching.recv().matching:
+        pass
 for i in range(samples):
     pub.put(b"\\x00\\x01\\x00\\x00\\xff\\xff\\xff\\x7fno", attachment=pack(i, 0, i.to_bytes(16, "little")))
 end = b"\\x00\\x01\\x00\\x00\\x04\\x00\\x00\\x00end\\x00"  # the last one is well-formed
