@@ -126,9 +126,14 @@ async def peer(port: int) -> AsyncIterator[Any]:
 async def matched(session: Any, key: str) -> Any:
     """A publisher on ``key`` once a subscriber elsewhere matches it (the listener's transport)."""
     pub = session.declare_publisher(key)
-    with anyio.fail_after(10):
-        while not pub.matching_status.matching:  # zenoh tells status, not change, to a caller without a listener
-            await anyio.sleep(0.01)
+    changes = pub.declare_matching_listener()  # before the look: a change after it is heard
+    try:
+        with anyio.fail_after(10):
+            matching = pub.matching_status.matching
+            while not matching:
+                matching = (await anyio.to_thread.run_sync(changes.recv, abandon_on_cancel=True)).matching
+    finally:
+        changes.undeclare()  # a recv abandoned by the timeout ends with it
     return pub
 
 
