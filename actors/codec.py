@@ -23,6 +23,7 @@ import functools
 import importlib
 import re
 import sys
+from array import array
 from collections.abc import Callable
 from pathlib import Path
 from types import ModuleType
@@ -74,8 +75,17 @@ else:
 _roots: list[Path] = []  # user roots, newest first; the shipped root is implied last
 _registered: dict[str, type[Any]] = {}  # from register_module
 _types: dict[str, type[Any]] = {}  # every name already resolved, in the form it was asked for
-_msgpack_encoder = msgspec.msgpack.Encoder()
-_json_encoder = msgspec.json.Encoder()
+
+
+def _listed(value: Any) -> Any:
+    # msgspec knows no array.array (a numeric sequence, see actors.messages.arrays): it goes as a list.
+    if isinstance(value, array):
+        return value.tolist()
+    raise TypeError(f"Encoding objects of type {type(value).__name__} is unsupported")
+
+
+_msgpack_encoder = msgspec.msgpack.Encoder(enc_hook=_listed)
+_json_encoder = msgspec.json.Encoder(enc_hook=_listed)
 _msgpack_decoders: dict[Any, msgspec.msgpack.Decoder[Any]] = {}
 _json_decoders: dict[Any, msgspec.json.Decoder[Any]] = {}
 

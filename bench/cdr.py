@@ -1,4 +1,4 @@
-"""CDR speed: encode and decode Twist, a 360-beam LaserScan, an Odometry and a 640×480 rgb8 Image.
+"""CDR speed: encode and decode Twist, a 360-beam LaserScan, an Odometry, a 640×480 rgb8 Image, a PointCloud2.
 
 Run: ``python -m bench.cdr [--quick]`` (or scenario ``i`` of ``python -m bench``).
 Three codecs side by side, in one run: actors' generated CDR
@@ -26,7 +26,7 @@ from bench import ros
 from bench.harness import Result, repeat, run_child, standalone
 from interfaces.geometry_msgs.msg import Point, Pose, PoseWithCovariance, Quaternion, TwistWithCovariance
 from interfaces.nav_msgs.msg import Odometry
-from interfaces.sensor_msgs.msg import Image
+from interfaces.sensor_msgs.msg import Image, PointCloud2, PointField
 from interfaces.std_msgs.msg import Header
 
 __all__ = ["samples", "run"]
@@ -36,7 +36,7 @@ ROSBAGS_HINT = "rosbags: not installed — pip install -e '.[bench-ros]'"
 
 
 def samples() -> dict[str, Any]:
-    """The messages measured, by name (the codec benchmark's Twist and LaserScan, and two more)."""
+    """The messages measured, by name (the codec benchmark's Twist and LaserScan, and three more)."""
     base = codec_bench.samples()
     header = Header(frame_id="odom")
     odometry = Odometry(
@@ -57,12 +57,24 @@ def samples() -> dict[str, Any]:
         step=3 * width,
         data=bytes(range(256)) * (3 * width * height // 256),
     )
-    return {**base, "Odometry": odometry, "Image 640×480 rgb8": image}
+    points = 10_000  # a lidar sweep of x, y, z and intensity, float32 each
+    names = ("x", "y", "z", "intensity")
+    cloud = PointCloud2(
+        header=Header(frame_id="lidar"),
+        height=1,
+        width=points,
+        fields=[PointField(name=n, offset=4 * i, datatype=PointField.FLOAT32, count=1) for i, n in enumerate(names)],
+        point_step=16,
+        row_step=16 * points,
+        data=bytes(range(256)) * (16 * points // 256) + bytes(16 * points % 256),
+        is_dense=True,
+    )
+    return {**base, "Odometry": odometry, "Image 640×480 rgb8": image, "PointCloud2 10k xyzi": cloud}
 
 
 def loops_for(name: str, quick: bool) -> int:
-    """Calls per sample: fewer for the 0.9 MB image."""
-    loops = 50 if name.startswith("Image") else 2000
+    """Calls per sample: fewer for the 0.9 MB image and the 160 kB cloud."""
+    loops = 50 if name.startswith("Image") else 300 if name.startswith("PointCloud2") else 2000
     return max(1, loops // 20) if quick else loops
 
 

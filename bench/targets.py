@@ -222,10 +222,10 @@ TARGETS = (
     Target("e", "1,000 nodes spawned ≤ 1 s", _at_most("e. spawn 1,000 nodes", "actors", 1.0, "s")),
     Target(
         "i",
-        "CDR encode and decode ≥ rclpy's serialize/deserialize (Twist, LaserScan, Odometry, Image)",
+        "CDR encode and decode ≥ rclpy's serialize/deserialize (Twist, LaserScan, Odometry, Image, PointCloud2)",
         _cdr("rclpy", 1),
     ),
-    Target("i", "CDR encode and decode ≥ 2× rosbags' serializer (the same four)", _cdr("rosbags", 2)),
+    Target("i", "CDR encode and decode ≥ 2× rosbags' serializer (the same five)", _cdr("rosbags", 2)),
 )
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import logging
+from array import array
 
 import anyio
 import anyio.lowlevel
@@ -72,7 +73,7 @@ class FibonacciClient(Node):
         self.create_subscription(GoalStatusArray, "fibonacci/_action/status", self.on_status, 10)
 
     def on_feedback(self, feedback: Fibonacci.Feedback) -> None:
-        self.feedback.append(feedback.sequence)
+        self.feedback.append(list(feedback.sequence))
 
     def on_status(self, msg: GoalStatusArray) -> None:
         self.statuses.append([s.status for s in msg.status_list])
@@ -93,7 +94,7 @@ async def test_feedback_arrives_in_order_then_the_result():
         start_time = rt.clock.monotonic()
         response = await handle.get_result()
         assert rt.clock.monotonic() - start_time == pytest.approx(4.0)
-        assert (response.status, response.result.sequence) == (SUCCEEDED, [0, 1, 1, 2, 3, 5])
+        assert (response.status, response.result.sequence) == (SUCCEEDED, array("i", [0, 1, 1, 2, 3, 5]))
         await anyio.lowlevel.checkpoint()
         assert node.feedback == [[0, 1, 1], [0, 1, 1, 2], [0, 1, 1, 2, 3], [0, 1, 1, 2, 3, 5]]
         assert handle.status == SUCCEEDED and handle.done
@@ -111,7 +112,7 @@ async def test_a_callback_can_follow_feedback_live_while_it_awaits_the_goal():
             await self.client.wait_for_server()
             handle = await self.client.send_goal(Fibonacci.Goal(order=4))
             async for feedback in handle.feedback():
-                self.seen.append((self.get_clock().monotonic(), feedback.sequence))
+                self.seen.append((self.get_clock().monotonic(), list(feedback.sequence)))
             self.response = await handle.get_result()
 
     async with Runtime() as rt:
@@ -120,7 +121,7 @@ async def test_a_callback_can_follow_feedback_live_while_it_awaits_the_goal():
         await anyio.sleep(5.0)
         # Each message when it was published (one a second), not all at the end.
         assert node.seen == [(0.0, [0, 1, 1]), (1.0, [0, 1, 1, 2]), (2.0, [0, 1, 1, 2, 3])]
-        assert node.response.status == SUCCEEDED and node.response.result.sequence == [0, 1, 1, 2, 3]
+        assert node.response.status == SUCCEEDED and node.response.result.sequence == array("i", [0, 1, 1, 2, 3])
 
 
 async def test_a_feedback_callback_that_raises_crashes_the_client_node(caplog):
@@ -168,7 +169,7 @@ async def test_cancel_an_executing_goal():
         assert cancel.return_code == cancel.ERROR_NONE
         assert [bytes(g.goal_id.uuid) for g in cancel.goals_canceling] == [bytes(handle.goal_id.uuid)]
         response = await handle.get_result()
-        assert response.status == CANCELED and response.result.sequence == [0, 1, 1, 2, 3]
+        assert response.status == CANCELED and response.result.sequence == array("i", [0, 1, 1, 2, 3])
         assert rt.clock.monotonic() == pytest.approx(3.0)  # stopped at its next check, not at the end
         again = await handle.cancel()
         assert (again.return_code, again.goals_canceling) == (again.ERROR_GOAL_TERMINATED, [])
@@ -205,7 +206,8 @@ async def test_two_concurrent_goals_run_side_by_side():
         assert rt.clock.monotonic() == pytest.approx(2.0)
         first_result = await first.get_result()
         assert rt.clock.monotonic() == pytest.approx(3.0)  # not 5: they overlapped
-        assert (first_result.result.sequence, second_result.result.sequence) == ([0, 1, 1, 2, 3], [0, 1, 1, 2])
+        assert first_result.result.sequence == array("i", [0, 1, 1, 2, 3])
+        assert second_result.result.sequence == array("i", [0, 1, 1, 2])
         assert server.executed == [4, 3]
 
 
@@ -284,10 +286,10 @@ async def test_a_result_is_kept_for_the_result_timeout_then_forgotten(caplog):
         ask = Fibonacci.Impl.GetResultService.Request(goal_id=handle.goal_id)
         await anyio.sleep(4.9)
         kept = await node.client._results.call(ask)
-        assert (kept.status, kept.result.sequence) == (SUCCEEDED, [0, 1])
+        assert (kept.status, kept.result.sequence) == (SUCCEEDED, array("i", [0, 1]))
         await anyio.sleep(ended + 5.0 - rt.clock.monotonic())
         gone = await node.client._results.call(ask)
-        assert (gone.status, gone.result.sequence) == (GoalStatus.STATUS_UNKNOWN, [])
+        assert (gone.status, gone.result.sequence) == (GoalStatus.STATUS_UNKNOWN, array("i"))
     assert any("unknown or expired goal" in r.getMessage() for r in caplog.records)
 
 
@@ -300,7 +302,7 @@ async def test_a_server_crash_aborts_its_goals_and_the_supervisor_restarts_it(ca
         await anyio.sleep(2.5)
         node.crash.publish(Empty())
         response = await handle.get_result(timeout=1.0)
-        assert (response.status, response.result.sequence) == (ABORTED, [])
+        assert (response.status, response.result.sequence) == (ABORTED, array("i"))
         assert handle.status == ABORTED
         received = len(node.feedback)
         await anyio.sleep(1.0)
@@ -331,7 +333,7 @@ async def test_execute_that_raises_aborts_the_goal_and_the_server_keeps_serving(
         bad = await node.client.send_goal(Fibonacci.Goal(order=-1))
         assert (await bad.get_result()).status == ABORTED
         good = await node.client.send_goal(Fibonacci.Goal(order=3))
-        assert (await good.get_result()).result.sequence == [3]
+        assert (await good.get_result()).result.sequence == array("i", [3])
         assert rt.graph.nodes()[0].crashes == 0
     assert any("execute callback raised ValueError('negative order')" in r.getMessage() for r in caplog.records)
 
@@ -348,7 +350,7 @@ async def test_execute_that_ends_without_a_terminal_state_aborts(caplog):
         rt.spawn(Forgetful)
         node = rt.spawn(FibonacciClient)
         response = await (await node.client.send_goal(Fibonacci.Goal())).get_result()
-        assert (response.status, response.result.sequence) == (ABORTED, [1])
+        assert (response.status, response.result.sequence) == (ABORTED, array("i", [1]))
     assert any("ended without succeed()" in r.getMessage() for r in caplog.records)
 
 
@@ -374,7 +376,7 @@ async def test_deferred_goals_start_when_the_server_says():
         handle = await node.client.send_goal(Fibonacci.Goal(order=4))
         await anyio.sleep(1.0)
         assert handle.status == GoalStatus.STATUS_ACCEPTED and len(server.waiting) == 1
-        assert (await handle.get_result()).result.sequence == [4]
+        assert (await handle.get_result()).result.sequence == array("i", [4])
         assert rt.clock.monotonic() == pytest.approx(3.0)
         with pytest.raises(ActionError, match="cannot execute"):
             ServerGoalHandle.execute(handle_of(server))

@@ -8,6 +8,7 @@ import random
 import re
 import struct
 import tracemalloc
+from array import array
 from pathlib import Path
 
 import pytest
@@ -188,12 +189,12 @@ def test_big_endian_input():
         + struct.pack(">I", 0)
     )
     decoded = cdr.decode(scan, LaserScan)
-    assert decoded.header.stamp.sec == 7 and decoded.ranges == [1.5, 2.5] and decoded.scan_time == 0.5
+    assert decoded.header.stamp.sec == 7 and decoded.ranges == array("f", [1.5, 2.5]) and decoded.scan_time == 0.5
 
 
 def test_nan_and_infinity_survive():
     scan = cdr.decode(cdr.encode(LaserScan(ranges=[math.inf, -math.inf, math.nan])), LaserScan)
-    assert scan.ranges[:2] == [math.inf, -math.inf] and math.isnan(scan.ranges[2])
+    assert scan.ranges[:2] == array("f", [math.inf, -math.inf]) and math.isnan(scan.ranges[2])
 
 
 def test_decode_accepts_bytearray_and_memoryview():

@@ -28,7 +28,7 @@ def graph(tmp_path_factory: pytest.TempPathFactory) -> Iterator[GraphProcess]:
     path.write_text(GRAPH)
     running = GraphProcess(path)
     try:
-        running.wait_for("Result: [0, 1, 1]")  # the graph's own client has had its answer
+        running.wait_for("Result: array('i', [0, 1, 1])")  # the graph's own client has had its answer
         yield running
     finally:
         running.stop()

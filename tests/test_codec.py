@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from array import array
+
 import msgspec
 import pytest
 from goldens.values import DrawPick, message, shipped_messages
@@ -28,7 +30,7 @@ def test_messages_default_to_ros_zero_values_and_are_mutable():
     sphere.center.x = 1.5
     assert sphere.center.x == 1.5 and Sphere().center.x == 0.0
     assert Quaternion().w == 1.0
-    assert Imu().orientation_covariance == [0.0] * 9
+    assert Imu().orientation_covariance == array("d", [0.0] * 9)
     assert ParameterValue().byte_array_value == b""
     assert ParameterDescriptor().floating_point_range == []
     assert (Log.DEBUG, Log.FATAL) == (10, 50)

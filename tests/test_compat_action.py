@@ -9,6 +9,7 @@ from __future__ import annotations
 import asyncio
 import threading
 import time
+from array import array
 from collections.abc import Callable, Iterator
 from typing import Any
 
@@ -132,11 +133,11 @@ def test_a_goal_runs_to_its_result_with_feedback_messages_while_spun(rclpy_sessi
     assert isinstance(goal, ClientGoalHandle) and goal.accepted
     assert goal.status == GoalStatus.STATUS_EXECUTING  # the status topic said so meanwhile
     result = spun(node, goal.get_result_async())
-    assert (result.status, result.result.sequence) == (SUCCEEDED, [0, 1, 1, 2, 3])
+    assert (result.status, result.result.sequence) == (SUCCEEDED, array("i", [0, 1, 1, 2, 3]))
     assert goal.status == SUCCEEDED
     # rclpy's feedback callback gets the whole FeedbackMessage: the goal's id and the feedback.
     assert all(type(m) is Fibonacci.Impl.FeedbackMessage and m.goal_id == goal.goal_id for _, m in heard)
-    assert [(t, m.feedback.sequence) for t, m in heard] == [
+    assert [(t, list(m.feedback.sequence)) for t, m in heard] == [
         (0.5, [0, 1, 1]),
         (pytest.approx(1.0), [0, 1, 1, 2]),
         (pytest.approx(2.0), [0, 1, 1, 2, 3]),
@@ -161,7 +162,7 @@ def test_callbacks_run_on_the_executors_threads_and_goals_run_side_by_side(rclpy
     for result in results:
         rclpy.spin_until_future_complete(node, result)
     assert now(rclpy_session) == pytest.approx(3.0)  # not 4: they overlapped on two pool threads
-    assert [r.result().result.sequence for r in results] == [[0, 1, 1, 2, 3], [0, 1, 1]]
+    assert [list(r.result().result.sequence) for r in results] == [[0, 1, 1, 2, 3], [0, 1, 1]]
     assert {name for _, name in server.calls} <= {t.name for t in threading.enumerate()} | {"rclpy executor_0"}
     assert all(name.startswith("rclpy executor") for name in [*threads.values(), *(n for _, n in server.calls)])
     assert threads["execute 4"] != threads["execute 2"]
@@ -206,7 +207,7 @@ def test_cancel_an_executing_goal(rclpy_session, serving, client):
     cancel = spun(node, goal.cancel_goal_async())
     assert [info.goal_id for info in cancel.goals_canceling] == [goal.goal_id]
     result = spun(node, goal.get_result_async())
-    assert (result.status, result.result.sequence) == (CANCELED, [0, 1, 1, 2])
+    assert (result.status, result.result.sequence) == (CANCELED, array("i", [0, 1, 1, 2]))
     assert now(rclpy_session) == pytest.approx(2.0)  # the execute callback saw it at its next step
     assert [what for what, _ in server.calls] == ["goal", "cancel"]
 
@@ -255,7 +256,7 @@ def test_deferred_execution_and_the_goal_handle_states(rclpy_session, serving, c
     assert goal.request.order == 1 and goal.goal_id == sent.goal_id and goal == handles[0]
     goal.execute()  # from the script's thread, when it likes
     result = spun(node, sent.get_result_async())
-    assert (result.status, result.result.sequence) == (ABORTED, [7])
+    assert (result.status, result.result.sequence) == (ABORTED, array("i", [7]))
     assert seen == [(GoalStatus.STATUS_ACCEPTED, True, False), (GoalStatus.STATUS_EXECUTING, True, False)]
     assert (goal.status, goal.is_active) == (ABORTED, False)
     with pytest.raises(RCLError, match="cannot succeed from ABORTED"):
@@ -275,7 +276,7 @@ def test_blocking_send_goal_cancel_and_result_while_another_thread_spins(rclpy_s
     spinner = threading.Thread(target=Serving._spin, args=(type("S", (), {"executor": executor})(),), daemon=True)
     spinner.start()
     response = action.send_goal(Fibonacci.Goal(order=2))
-    assert (response.status, response.result.sequence) == (SUCCEEDED, [0, 1, 1])
+    assert (response.status, response.result.sequence) == (SUCCEEDED, array("i", [0, 1, 1]))
     chosen = UUID(uuid=bytes(range(16)))
     sent = action.send_goal_async(Fibonacci.Goal(order=6), goal_uuid=chosen)
     while not sent.done():
@@ -296,7 +297,7 @@ def test_asyncio_tasks_await_rclpy_futures(rclpy_session, serving, client):
 
     async def one(order: int) -> list[int]:
         goal = await action.send_goal_async(Fibonacci.Goal(order=order))
-        return (await goal.get_result_async()).result.sequence
+        return list((await goal.get_result_async()).result.sequence)
 
     async def main() -> list[list[int]]:
         async def spin() -> None:

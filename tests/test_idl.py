@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import importlib
 import sys
+from array import array
 from pathlib import Path
 
 import pytest
@@ -250,8 +251,13 @@ def test_user_root_types_behave_like_shipped_ones(user_root):
 
     thing = Thing()
     assert (Thing.RED, Thing.NAME, Thing.SCALE) == (1, "thing # not a comment", 2.5)
-    assert thing.counts == [] and thing.weights == [0.0, 0.0, 0.0]
-    assert (thing.tag, thing.limit, thing.gains, thing.enabled) == ("abc", 5, [1.0, 2.0], True)
+    assert thing.counts == array("i") and thing.weights == array("f", [0.0, 0.0, 0.0])
+    assert (thing.tag, thing.limit, thing.gains, thing.enabled) == ("abc", 5, array("d", [1.0, 2.0]), True)
+    assert [(type(a), a.typecode) for a in (thing.counts, thing.weights, thing.gains)] == [
+        (array, "i"),
+        (array, "f"),
+        (array, "d"),
+    ]
     assert (thing.blob, thing.raw, thing.labels) == (b"", bytes(4), ["a", "b"])
     assert thing.parts == [Part(), Part()] and thing.parts[0] is not thing.parts[1]
     assert type(thing.header) is StdHeader and type(thing.local_header) is Header

@@ -123,12 +123,16 @@ def test_what_rclpy_accepts_beyond_the_exact_type_is_delivered_in_the_canonical_
     ]
     assert (copy := snapshot(Int64(data=True))).data == 1 and type(copy.data) is int
     assert (same := adopter(Int64)(Int64(data=True))).data == 1 and type(same.data) is int
-    scan = snapshot(LaserScan(ranges=(1, 2.5), intensities=np.array([0.25, 3.0], dtype=np.float32)))
-    assert scan.ranges == [1.0, 2.5] and all(type(v) is float for v in scan.ranges + scan.intensities)
-    assert scan.intensities == [0.25, 3.0]
-    value = snapshot(ParameterValue(byte_array_value=bytearray(b"ab"), integer_array_value=array.array("q", [7])))
+    scan = LaserScan()  # assigned after construction: the snapshot makes the arrays
+    scan.ranges, scan.intensities = (1, 2.5), np.array([0.25, 3.0], dtype=np.float32)
+    scan = snapshot(scan)
+    assert (scan.ranges, scan.intensities) == (array.array("f", [1.0, 2.5]), array.array("f", [0.25, 3.0]))
+    assert [(type(a), a.typecode) for a in (scan.ranges, scan.intensities)] == [(array.array, "f")] * 2
+    value = ParameterValue()
+    value.byte_array_value, value.integer_array_value = bytearray(b"ab"), array.array("i", [7])
+    value = snapshot(value)
     assert value.byte_array_value == b"ab" and type(value.byte_array_value) is bytes
-    assert value.integer_array_value == [7] and type(value.integer_array_value) is list
+    assert value.integer_array_value == array.array("q", [7]) and value.integer_array_value.typecode == "q"
     assert snapshot(LaserScan(ranges=[float("inf"), float("nan"), -FLOAT32_MAX])).ranges[2] == -FLOAT32_MAX
 
 
@@ -170,22 +174,26 @@ def test_a_numpy_array_in_a_float_array_field_fares_as_the_list_of_its_values(va
     assert _outcome(LaserScan(ranges=values)) == _outcome(LaserScan(ranges=values.tolist()))
 
 
-def test_a_numpy_array_is_delivered_as_a_list_that_later_writes_to_the_array_do_not_reach():
+def test_a_numpy_array_is_delivered_as_an_array_that_later_writes_to_the_numpy_array_do_not_reach():
     ranges = np.array([1.0, 2.0, 3.0])
-    copy = snapshot(LaserScan(ranges=ranges))
+    scan = LaserScan()
+    scan.ranges = ranges
+    copy = snapshot(scan)
+    built = LaserScan(ranges=ranges)  # the constructor makes its own array, as rclpy's does
     ranges[0] = 9.0
-    assert copy.ranges == [1.0, 2.0, 3.0] and type(copy.ranges) is list
+    for held in (copy.ranges, built.ranges):
+        assert held == array.array("f", [1.0, 2.0, 3.0]) and type(held) is array.array and held.typecode == "f"
     with pytest.raises(MessageValidationError, match=r"expected 36 items \(float64\[36\]\), got 35"):
         snapshot(Odometry(pose=PoseWithCovariance(covariance=np.zeros(35))))
 
 
 def test_trusted_float_arrays_are_copied_unlooked_at_and_the_rest_still_checked():
     trusted = frozenset({"ranges", "intensities"})
-    ranges = np.array([1.0, np.inf])
-    scan = LaserScan(ranges=ranges, intensities=[0.5], range_max=2.0)
+    scan = LaserScan(intensities=[0.5], range_max=2.0)
+    scan.ranges = np.array([1.0, np.inf])  # assigned: a numpy vector until the snapshot
     copy = snapshotter(LaserScan, trusted)(scan)
-    assert copy.ranges == [1.0, np.inf] and type(copy.ranges) is list and type(copy.ranges[0]) is float
-    assert copy.intensities == [0.5] and copy.intensities is not scan.intensities
+    assert copy.ranges == array.array("f", [1.0, np.inf]) and copy.ranges.typecode == "f"
+    assert copy.intensities == array.array("f", [0.5]) and copy.intensities is not scan.intensities
     assert copy.range_max == 2.0 and copy.header is not scan.header
     assert checker(LaserScan, trusted)(LaserScan(ranges=[1e39])) is None  # the caller vouched for them
     for wrong in (snapshotter(LaserScan, trusted), checker(LaserScan, trusted)):
@@ -218,7 +226,7 @@ def test_arrays_of_anything_but_floats_are_checked_even_when_trusted():
         with pytest.raises(MessageValidationError, match=r"field 'name\[1\]'"):
             made(JointState, everything)(JointState(name=["a", 2], position=[1e39]))
     copy = snapshotter(JointState, everything)(JointState(name=["a"], position=np.array([1.0])))
-    assert copy.name == ["a"] and copy.position == [1.0] and type(copy.position) is list
+    assert copy.name == ["a"] and copy.position == array.array("d", [1.0]) and copy.position.typecode == "d"
 
 
 @pytest.mark.parametrize(

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from array import array
+
 import anyio
 import numpy as np
 import pytest
@@ -118,8 +120,9 @@ async def test_trusted_fields_changed_after_publishing_are_delivered_as_publishe
         scan.header.frame_id = "changed"
         await anyio.sleep(0.01)
         first, second = heard
-        assert first.ranges == [1.0, 2.0] and type(first.ranges) is list and first.intensities == [3.0]
-        assert second.ranges == [9.0, 2.0] and second.header.stamp.sec == 1 and second.header.frame_id == ""
+        assert first.ranges == array("f", [1.0, 2.0]) and first.ranges.typecode == "f"
+        assert first.intensities == array("f", [3.0])
+        assert second.ranges == array("f", [9.0, 2.0]) and second.header.stamp.sec == 1 and second.header.frame_id == ""
 
 
 async def test_the_subscribers_of_one_publish_share_one_snapshot():

@@ -48,11 +48,13 @@ import math
 import numbers
 import struct
 import sys
+from array import array
 from collections.abc import Callable, Mapping
 from typing import Any
 
 from actors.errors import MessageValidationError
 from actors.messages._fields import MessageLayout, layout
+from actors.messages.arrays import TYPECODES, typecode
 from actors.messages.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType
 
 __all__ = ["snapshotter", "checker", "adopter", "snapshot", "FLOAT32_MAX", "ALONE"]
@@ -219,20 +221,20 @@ def _generate(top: MessageLayout, *, entry: bool, mode: str = "copy", trusted: T
                     emit(field.nested, value, path + ".", indent, True)
             elif sure and (not ftype.array or ftype.base in FLOATS):
                 if copy and ftype.array:
-                    listed = f"{value}.copy() if type({value}) is list else {value}.tolist()"
-                    lines.append(f"{indent}{obj}.{field.name} = {listed}")
+                    held = f"{value}[:] if {_array_test(ftype, value)} else array({TYPECODES[ftype.base]!r}, {value})"
+                    lines.append(f"{indent}{obj}.{field.name} = {held}")
             elif ftype.array:
-                call = _array_call(ftype, field.nested, value, path, names, "_floats" if copy else "_check_floats")
-                if ftype.base not in FLOATS:
+                call = _array_call(ftype, field.nested, value, path, names, "_numbers" if copy else "_check_numbers")
+                if typecode(ftype) is None:
                     store(obj, field.name, call, indent)
                 elif copy:
-                    # The common case inlined: a list of floats that fits needs only a copy.
-                    lines.append(f"{indent}if {_float_list_test(ftype, value)}:")
-                    lines.append(f"{indent}    {obj}.{field.name} = {value}.copy()")
+                    # The common case inlined: an array of the field's typecode needs only a copy.
+                    lines.append(f"{indent}if {_array_test(ftype, value)}:")
+                    lines.append(f"{indent}    {obj}.{field.name} = {value}[:]")
                     lines.append(f"{indent}else:")
                     lines.append(f"{indent}    {obj}.{field.name} = {call}")
                 else:
-                    lines.append(f"{indent}if not ({_float_list_test(ftype, value)}):")
+                    lines.append(f"{indent}if not ({_array_test(ftype, value)}):")
                     lines.append(f"{indent}    {call}")
             elif field.nested is not None:
                 cls_name = _bind(names, field.nested.cls)
@@ -306,18 +308,18 @@ def _scalar(ftype: FieldType, value: str, path: str) -> tuple[str, str]:
     return f"type({value}) is not str or len({value}) > {bound}", f"_str({value}, {path!r}, {bound})"
 
 
-def _float_list_test(ftype: FieldType, value: str) -> str:
-    """The test that a float array's value is a list of floats of the right size and range."""
-    test = f"type({value}) is list"
+def _array_test(ftype: FieldType, value: str) -> str:
+    """The test that a numeric array's value is an ``array.array`` of its typecode and size.
+
+    Such an array needs no look at its items: an ``array('f')`` cannot hold a
+    float beyond float32's range, nor an ``array('i')`` an int beyond int32's.
+    """
+    test = f"type({value}) is array and {value}.typecode == {TYPECODES[ftype.base]!r}"
     if ftype.array == "fixed":
-        test += f" and len({value}) == {ftype.size}"
-    elif ftype.array == "bounded":
-        test += f" and len({value}) <= {ftype.size}"
-    # _all, inlined.
-    floats = f"list(map(type, {value})).count(float) == len({value})"
-    if ftype.base == "float32":
-        return test + f" and (not {value} or {floats} and _fits_float32({value}))"
-    return test + f" and {floats}"
+        return test + f" and len({value}) == {ftype.size}"
+    if ftype.array == "bounded":
+        return test + f" and len({value}) <= {ftype.size}"
+    return test
 
 
 def _array_call(
@@ -326,9 +328,9 @@ def _array_call(
     value: str,
     path: str,
     names: dict[str, Any],
-    floats: str = "_floats",
+    numbers: str = "_numbers",
 ) -> str:
-    # ``floats``: the helper a float array goes through (``_check_floats`` for a bare check).
+    # ``numbers``: the helper a numeric array goes through (``_check_numbers`` for a bare check).
     shape = (ftype.array, ftype.size, _spelled(ftype))
     if ftype.base in OCTETS:
         return f"_octets({value}, {path!r}, {shape!r})"
@@ -339,10 +341,8 @@ def _array_call(
     base = ftype.base
     if base == "bool":
         return f"_bools({value}, {path!r}, {shape!r})"
-    if base in INTEGER_RANGES:
-        return f"_ints({value}, {path!r}, {shape!r}, {base!r})"
-    if base in FLOATS:
-        return f"{floats}({value}, {path!r}, {shape!r}, {base == 'float32'})"
+    if base in TYPECODES:
+        return f"{numbers}({value}, {path!r}, {shape!r}, {base!r})"
     return f"_strs({value}, {path!r}, {shape!r}, {ftype.string_bound})"
 
 
@@ -464,13 +464,23 @@ def _floats(value: Any, path: str, shape: Shape, single: bool) -> list[float]:
     return items
 
 
-def _check_floats(value: Any, path: str, shape: Shape, single: bool) -> None:
-    """What :func:`_floats` checks, without the list: a float numpy vector is checked where it is."""
-    if _float_vector(value):
+def _numbers(value: Any, path: str, shape: Shape, base: str) -> array[Any]:
+    """``value`` as a new, checked ``array.array`` of ``base``'s typecode: from an array, a list, a numpy vector..."""
+    code = TYPECODES[base]
+    if type(value) is array and value.typecode == code:
         _sized(value, path, shape)
-        if not single or value.dtype.char == "f" or _vector_fits_float32(value):
+        return value[:]
+    items = _floats(value, path, shape, base == "float32") if base in FLOATS else _ints(value, path, shape, base)
+    return array(code, items)
+
+
+def _check_numbers(value: Any, path: str, shape: Shape, base: str) -> None:
+    """What :func:`_numbers` checks, without the array: a float numpy vector is checked where it is."""
+    if base in FLOATS and _float_vector(value):
+        _sized(value, path, shape)
+        if base == "float64" or value.dtype.char == "f" or _vector_fits_float32(value):
             return
-    _floats(value, path, shape, single)  # anything else, and to name the value that does not fit
+    _numbers(value, path, shape, base)  # anything else, and to name the value that does not fit
 
 
 def _vector_fits_float32(vector: Any) -> bool:
@@ -551,7 +561,7 @@ def _structs(value: Any, path: str, shape: Shape, cls: type, body: Snapshot, exp
 
 _HELPERS: Mapping[str, Any] = {
     "FLOAT32_MAX": FLOAT32_MAX,
-    "_fits_float32": _fits_float32,
+    "array": array,
     "_Invalid": _Invalid,
     "_invalid": _invalid,
     "_wrong": _wrong,
@@ -559,9 +569,8 @@ _HELPERS: Mapping[str, Any] = {
     "_int": _int,
     "_float": _float,
     "_str": _str,
-    "_floats": _floats,
-    "_check_floats": _check_floats,
-    "_ints": _ints,
+    "_numbers": _numbers,
+    "_check_numbers": _check_numbers,
     "_bools": _bools,
     "_strs": _strs,
     "_octets": _octets,

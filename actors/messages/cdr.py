@@ -45,6 +45,7 @@ from typing import Any, TypeVar
 
 from actors.errors import CdrError
 from actors.messages._fields import MessageLayout, layout
+from actors.messages.arrays import typecode
 from actors.messages.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType
 
 __all__ = ["HEADER", "encode", "decode", "min_size"]
@@ -265,8 +266,20 @@ def _scalar_item(type_: FieldType, argument: str, path: str) -> tuple[str, int, 
         assert type_.size is not None  # a fixed array has its size
         if type_.base in OCTETS:
             return f"{type_.size}s", type_.size, 1, argument, path
+        if typecode(type_):  # an array.array: its bytes in the run, not a Python number per item
+            return f"{size * type_.size}s", size * type_.size, size, f"RAW({argument}, {code!r}, {type_.size})", path
         return f"{type_.size}{code}", size * type_.size, size, f"*{argument}", path
     return code, size, size, argument, path
+
+
+def _raw(value: Any, code: str, count: int) -> bytes:
+    """The little-endian bytes of a fixed-size numeric array: an array's own, or packed from any sequence.
+
+    struct refuses a sequence of another length or a value out of range, as it would in the run.
+    """
+    if _LITTLE_HOST and type(value) is array and value.typecode == code and len(value) == count:
+        return value.tobytes()
+    return _sequence_struct(f"<{count}{code}").pack(*value)
 
 
 def _fixed_size(type_: FieldType) -> bool:
@@ -281,6 +294,7 @@ def _compile_encoder(lay: MessageLayout, padding: int, *, top: bool) -> Callable
     src = _Source(lay, top, "buf += PAD[{}]", "buf += PAD[(4 - len(buf)) & {}]")
     src.namespace.update(
         PAD=tuple(bytes([padding]) * n for n in range(8)),
+        RAW=_raw,
         U32=struct.Struct("<I").pack,
         ST=_sequence_struct,
         padding=padding,
@@ -390,7 +404,11 @@ def _encode_array(src: _Source, type_: FieldType, value: str, nested: MessageLay
         src.emit("if v:")
         src.phase = None
         src.align(size, 2)
-        src.emit(f"a = ST(f'<{{len(v)}}{code}').pack(*v)", 2)
+        if _LITTLE_HOST:  # an array of the field's own typecode is its CDR bytes already
+            src.emit(f"if type(v) is array and v.typecode == {code!r}: a = v.tobytes()", 2)
+            src.emit(f"else: a = ST(f'<{{len(v)}}{code}').pack(*v)", 2)
+        else:
+            src.emit(f"a = ST(f'<{{len(v)}}{code}').pack(*v)", 2)
         src.emit(f"if len(a) > {_SPILL}: buf.spill(a)", 2)
         src.emit("else: buf += a", 2)
     src.phase = None
@@ -406,6 +424,7 @@ def _compile_decoder(lay: MessageLayout, endian: str, *, top: bool) -> Callable[
         ST=_sequence_struct,
         endian=endian,
         swap=(endian == "<") != _LITTLE_HOST,
+        SWAPPED=_swapped,
     )
     constructor = _decode_fields(src, lay, "$")
     _flush_decode(src)
@@ -475,7 +494,12 @@ def _flush_decode(src: _Source) -> None:
         start = starts[item]
         if type_.array == "fixed" and type_.base not in OCTETS:
             assert type_.size is not None  # a fixed array has its size
-            src.values[token] = f"list({values}[{start}:{start + type_.size}])"
+            held = typecode(type_)
+            if held is None:  # bool[N]: a list, each bool unpacked by the run
+                src.values[token] = f"list({values}[{start}:{start + type_.size}])"
+            else:  # the run unpacked the array's bytes: one copy into the array
+                made = f"array({held!r}, {values}[{start}])"
+                src.values[token] = f"SWAPPED({made})" if src.namespace["swap"] else made
         else:
             src.values[token] = f"{values}[{start}]"
 
@@ -541,10 +565,19 @@ def _decode_array(src: _Source, type_: FieldType, target: str, nested: MessageLa
     elif type_.base == "bool":
         src.emit(f"{target} = list(map(bool, d[pos:end])); pos = end", 2)
     else:
-        src.emit(f"{target} = list(ST(f'{src.namespace['endian']}{{n}}{code}').unpack_from(d, pos)); pos = end", 2)
+        src.emit(f"{target} = array({code!r}); {target}.frombytes(d[pos:end]); pos = end", 2)
+        if src.namespace["swap"]:
+            src.emit(f"{target}.byteswap()", 2)
     src.emit("else:")
-    src.emit(f"{target} = {'b' + chr(34) * 2 if type_.base in OCTETS else '[]'}", 2)
+    empty = {"bool": "[]", **dict.fromkeys(OCTETS, 'b""')}.get(type_.base, f"array({code!r})")
+    src.emit(f"{target} = {empty}", 2)
     src.phase = None
+
+
+def _swapped(numbers: array[Any]) -> array[Any]:
+    """``numbers`` with each item's bytes reversed (read in the other byte order)."""
+    numbers.byteswap()
+    return numbers
 
 
 # --------------------------------------------------------------------------- errors

@@ -28,11 +28,13 @@ from __future__ import annotations
 import json
 import keyword
 import math
+from array import array
 from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any, TypeGuard, TypeVar, cast
 
 from actors.errors import IdlError, InterfaceError
+from actors.messages.arrays import typecode
 from actors.messages.idl import (
     FLOATS,
     INTEGER_RANGES,
@@ -147,6 +149,7 @@ class _Writer:
         self.local_names: dict[str, str] = {}  # ROS type -> Python name in this module
         self.aliases: set[str] = set()
         self.annotated = False
+        self.numeric = False  # a field holds an array.array: the module imports array and held
 
     def struct(self, spec: MessageSpec) -> None:
         name = self._declare(spec.ros_type, spec.name)
@@ -161,6 +164,7 @@ class _Writer:
         if spec.fields:
             body.append("")
         body += [f"    {f.name}: {self._annotation(f.type)} = {self._default(f.type, f.default)}" for f in spec.fields]
+        body += _held(spec)
         self.classes.append("\n".join(body))
 
     def service(self, spec: ServiceSpec) -> None:
@@ -229,13 +233,18 @@ class _Writer:
             if alias in self.aliases
         ]
         typing_names = "Annotated, ClassVar" if self.annotated or aliases else "ClassVar"
+        if self.numeric:
+            self.imports.setdefault("actors.messages.arrays", {})["held"] = "held"
         imports = [
             _import(module, sorted(n if n == a else f"{n} as {a}" for n, a in names.items()))
             for module, names in sorted(self.imports.items())
         ]
+        standard = f"from typing import {typing_names}"
+        if self.numeric:
+            standard = "from array import array\nfrom collections.abc import MutableSequence\n" + standard
         sections = [
             f'"""Generated from {sources} by `python -m actors interface generate`; do not edit."""',
-            f"from typing import {typing_names}\n\nimport msgspec",
+            f"{standard}\n\nimport msgspec",
             "\n".join(imports),
             "\n".join(["__all__ = [", *(f"    {_literal(n)}," for n in sorted(self.exports)), "]"]),
             "\n".join(aliases),
@@ -275,7 +284,10 @@ class _Writer:
             element = f"Annotated[str, msgspec.Meta(max_length={type_.string_bound})]"
         else:
             element = _PYTHON_TYPE[type_.base]
-        return self._sized(f"list[{element}]", type_) if type_.array else element
+        if not type_.array:
+            return element
+        # An array.array (see actors.messages.arrays) is a mutable sequence, not a list.
+        return self._sized(f"{'MutableSequence' if typecode(type_) else 'list'}[{element}]", type_)
 
     def _sized(self, annotation: str, type_: FieldType) -> str:
         if type_.array == "unbounded":
@@ -288,6 +300,13 @@ class _Writer:
         fixed = type_.array == "fixed"
         if type_.array and type_.base in OCTETS:
             return _literal(value) if value is not None else f"bytes({type_.size})" if fixed else 'b""'
+        code = typecode(type_)
+        if code is not None:
+            self.numeric = True
+            if value is not None:
+                return f"msgspec.field(default_factory=lambda: array({_literal(code)}, {_literal(value)}))"
+            zeros = f", bytes({(type_.size or 0) * array(code).itemsize})" if fixed else ""
+            return f"msgspec.field(default_factory=lambda: array({_literal(code)}{zeros}))"
         if type_.array:
             if value is not None:
                 factory = f"lambda: {_literal(value)}"
@@ -301,6 +320,18 @@ class _Writer:
         if type_.is_nested:
             return f"msgspec.field(default_factory={self._type_name(type_)})"
         return _literal(_ZERO[type_.base] if value is None else value)
+
+
+def _held(spec: MessageSpec) -> list[str]:
+    """A ``__post_init__`` that makes the numeric arrays given to the constructor ``array.array``s, as rclpy does."""
+    lines = []
+    for field in spec.fields:
+        code = typecode(field.type)
+        if code is not None:
+            value = f"self.{field.name}"
+            lines.append(f"        if type({value}) is not array or {value}.typecode != {_literal(code)}:")
+            lines.append(f"            {value} = held({value}, {_literal(code)})")
+    return ["", "    def __post_init__(self) -> None:", *lines] if lines else []
 
 
 def _bounds(low: int, high: int) -> str:

@@ -1,9 +1,12 @@
 """Generated from geometry_msgs/msg/*.msg by `python -m actors interface generate`; do not edit."""
 
+from array import array
+from collections.abc import MutableSequence
 from typing import Annotated, ClassVar
 
 import msgspec
 
+from actors.messages.arrays import held
 from interfaces.std_msgs.msg import Header
 
 __all__ = [
@@ -110,7 +113,11 @@ class AccelWithCovariance(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tr
     )
 
     accel: Accel = msgspec.field(default_factory=Accel)
-    covariance: Annotated[list[float], msgspec.Meta(min_length=36, max_length=36)] = msgspec.field(default_factory=lambda: [0.0] * 36)
+    covariance: Annotated[MutableSequence[float], msgspec.Meta(min_length=36, max_length=36)] = msgspec.field(default_factory=lambda: array("d", bytes(288)))
+
+    def __post_init__(self) -> None:
+        if type(self.covariance) is not array or self.covariance.typecode != "d":
+            self.covariance = held(self.covariance, "d")
 
 
 class AccelWithCovarianceStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -393,7 +400,11 @@ class PoseWithCovariance(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tru
     )
 
     pose: Pose = msgspec.field(default_factory=Pose)
-    covariance: Annotated[list[float], msgspec.Meta(min_length=36, max_length=36)] = msgspec.field(default_factory=lambda: [0.0] * 36)
+    covariance: Annotated[MutableSequence[float], msgspec.Meta(min_length=36, max_length=36)] = msgspec.field(default_factory=lambda: array("d", bytes(288)))
+
+    def __post_init__(self) -> None:
+        if type(self.covariance) is not array or self.covariance.typecode != "d":
+            self.covariance = held(self.covariance, "d")
 
 
 class PoseWithCovarianceStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -519,7 +530,11 @@ class TwistWithCovariance(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tr
     )
 
     twist: Twist = msgspec.field(default_factory=Twist)
-    covariance: Annotated[list[float], msgspec.Meta(min_length=36, max_length=36)] = msgspec.field(default_factory=lambda: [0.0] * 36)
+    covariance: Annotated[MutableSequence[float], msgspec.Meta(min_length=36, max_length=36)] = msgspec.field(default_factory=lambda: array("d", bytes(288)))
+
+    def __post_init__(self) -> None:
+        if type(self.covariance) is not array or self.covariance.typecode != "d":
+            self.covariance = held(self.covariance, "d")
 
 
 class TwistWithCovarianceStamped(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

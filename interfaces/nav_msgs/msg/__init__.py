@@ -1,9 +1,12 @@
 """Generated from nav_msgs/msg/*.msg by `python -m actors interface generate`; do not edit."""
 
+from array import array
+from collections.abc import MutableSequence
 from typing import Annotated, ClassVar
 
 import msgspec
 
+from actors.messages.arrays import held
 from interfaces.builtin_interfaces.msg import Time
 from interfaces.geometry_msgs.msg import (
     Point,
@@ -128,7 +131,11 @@ class OccupancyGrid(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     header: Header = msgspec.field(default_factory=Header)
     info: MapMetaData = msgspec.field(default_factory=MapMetaData)
-    data: list[_int8] = msgspec.field(default_factory=list)
+    data: MutableSequence[_int8] = msgspec.field(default_factory=lambda: array("b"))
+
+    def __post_init__(self) -> None:
+        if type(self.data) is not array or self.data.typecode != "b":
+            self.data = held(self.data, "b")
 
 
 class Odometry(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

@@ -1,9 +1,12 @@
 """Generated from rcl_interfaces/msg/*.msg by `python -m actors interface generate`; do not edit."""
 
+from array import array
+from collections.abc import MutableSequence
 from typing import Annotated, ClassVar
 
 import msgspec
 
+from actors.messages.arrays import held
 from interfaces.builtin_interfaces.msg import Time
 
 __all__ = [
@@ -279,9 +282,15 @@ class ParameterValue(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     string_value: str = ""
     byte_array_value: bytes = b""
     bool_array_value: list[bool] = msgspec.field(default_factory=list)
-    integer_array_value: list[_int64] = msgspec.field(default_factory=list)
-    double_array_value: list[float] = msgspec.field(default_factory=list)
+    integer_array_value: MutableSequence[_int64] = msgspec.field(default_factory=lambda: array("q"))
+    double_array_value: MutableSequence[float] = msgspec.field(default_factory=lambda: array("d"))
     string_array_value: list[str] = msgspec.field(default_factory=list)
+
+    def __post_init__(self) -> None:
+        if type(self.integer_array_value) is not array or self.integer_array_value.typecode != "q":
+            self.integer_array_value = held(self.integer_array_value, "q")
+        if type(self.double_array_value) is not array or self.double_array_value.typecode != "d":
+            self.double_array_value = held(self.double_array_value, "d")
 
 
 class Parameter(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

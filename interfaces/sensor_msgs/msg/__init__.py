@@ -1,9 +1,12 @@
 """Generated from sensor_msgs/msg/*.msg by `python -m actors interface generate`; do not edit."""
 
+from array import array
+from collections.abc import MutableSequence
 from typing import Annotated, ClassVar
 
 import msgspec
 
+from actors.messages.arrays import held
 from interfaces.builtin_interfaces.msg import Time
 from interfaces.geometry_msgs.msg import Point32, Quaternion, Transform, Twist, Vector3, Wrench
 from interfaces.std_msgs.msg import Header
@@ -141,10 +144,16 @@ class BatteryState(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     power_supply_health: _uint8 = 0
     power_supply_technology: _uint8 = 0
     present: bool = False
-    cell_voltage: list[float] = msgspec.field(default_factory=list)
-    cell_temperature: list[float] = msgspec.field(default_factory=list)
+    cell_voltage: MutableSequence[float] = msgspec.field(default_factory=lambda: array("f"))
+    cell_temperature: MutableSequence[float] = msgspec.field(default_factory=lambda: array("f"))
     location: str = ""
     serial_number: str = ""
+
+    def __post_init__(self) -> None:
+        if type(self.cell_voltage) is not array or self.cell_voltage.typecode != "f":
+            self.cell_voltage = held(self.cell_voltage, "f")
+        if type(self.cell_temperature) is not array or self.cell_temperature.typecode != "f":
+            self.cell_temperature = held(self.cell_temperature, "f")
 
 
 class RegionOfInterest(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -322,13 +331,23 @@ class CameraInfo(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     height: _uint32 = 0
     width: _uint32 = 0
     distortion_model: str = ""
-    d: list[float] = msgspec.field(default_factory=list)
-    k: Annotated[list[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: [0.0] * 9)
-    r: Annotated[list[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: [0.0] * 9)
-    p: Annotated[list[float], msgspec.Meta(min_length=12, max_length=12)] = msgspec.field(default_factory=lambda: [0.0] * 12)
+    d: MutableSequence[float] = msgspec.field(default_factory=lambda: array("d"))
+    k: Annotated[MutableSequence[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: array("d", bytes(72)))
+    r: Annotated[MutableSequence[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: array("d", bytes(72)))
+    p: Annotated[MutableSequence[float], msgspec.Meta(min_length=12, max_length=12)] = msgspec.field(default_factory=lambda: array("d", bytes(96)))
     binning_x: _uint32 = 0
     binning_y: _uint32 = 0
     roi: RegionOfInterest = msgspec.field(default_factory=RegionOfInterest)
+
+    def __post_init__(self) -> None:
+        if type(self.d) is not array or self.d.typecode != "d":
+            self.d = held(self.d, "d")
+        if type(self.k) is not array or self.k.typecode != "d":
+            self.k = held(self.k, "d")
+        if type(self.r) is not array or self.r.typecode != "d":
+            self.r = held(self.r, "d")
+        if type(self.p) is not array or self.p.typecode != "d":
+            self.p = held(self.p, "d")
 
 
 class ChannelFloat32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -363,7 +382,11 @@ class ChannelFloat32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     )
 
     name: str = ""
-    values: list[float] = msgspec.field(default_factory=list)
+    values: MutableSequence[float] = msgspec.field(default_factory=lambda: array("f"))
+
+    def __post_init__(self) -> None:
+        if type(self.values) is not array or self.values.typecode != "f":
+            self.values = held(self.values, "f")
 
 
 class CompressedImage(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -550,11 +573,19 @@ class Imu(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     header: Header = msgspec.field(default_factory=Header)
     orientation: Quaternion = msgspec.field(default_factory=Quaternion)
-    orientation_covariance: Annotated[list[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: [0.0] * 9)
+    orientation_covariance: Annotated[MutableSequence[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: array("d", bytes(72)))
     angular_velocity: Vector3 = msgspec.field(default_factory=Vector3)
-    angular_velocity_covariance: Annotated[list[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: [0.0] * 9)
+    angular_velocity_covariance: Annotated[MutableSequence[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: array("d", bytes(72)))
     linear_acceleration: Vector3 = msgspec.field(default_factory=Vector3)
-    linear_acceleration_covariance: Annotated[list[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: [0.0] * 9)
+    linear_acceleration_covariance: Annotated[MutableSequence[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: array("d", bytes(72)))
+
+    def __post_init__(self) -> None:
+        if type(self.orientation_covariance) is not array or self.orientation_covariance.typecode != "d":
+            self.orientation_covariance = held(self.orientation_covariance, "d")
+        if type(self.angular_velocity_covariance) is not array or self.angular_velocity_covariance.typecode != "d":
+            self.angular_velocity_covariance = held(self.angular_velocity_covariance, "d")
+        if type(self.linear_acceleration_covariance) is not array or self.linear_acceleration_covariance.typecode != "d":
+            self.linear_acceleration_covariance = held(self.linear_acceleration_covariance, "d")
 
 
 class JointState(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -591,9 +622,17 @@ class JointState(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     header: Header = msgspec.field(default_factory=Header)
     name: list[str] = msgspec.field(default_factory=list)
-    position: list[float] = msgspec.field(default_factory=list)
-    velocity: list[float] = msgspec.field(default_factory=list)
-    effort: list[float] = msgspec.field(default_factory=list)
+    position: MutableSequence[float] = msgspec.field(default_factory=lambda: array("d"))
+    velocity: MutableSequence[float] = msgspec.field(default_factory=lambda: array("d"))
+    effort: MutableSequence[float] = msgspec.field(default_factory=lambda: array("d"))
+
+    def __post_init__(self) -> None:
+        if type(self.position) is not array or self.position.typecode != "d":
+            self.position = held(self.position, "d")
+        if type(self.velocity) is not array or self.velocity.typecode != "d":
+            self.velocity = held(self.velocity, "d")
+        if type(self.effort) is not array or self.effort.typecode != "d":
+            self.effort = held(self.effort, "d")
 
 
 class Joy(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -614,8 +653,14 @@ class Joy(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     )
 
     header: Header = msgspec.field(default_factory=Header)
-    axes: list[float] = msgspec.field(default_factory=list)
-    buttons: list[_int32] = msgspec.field(default_factory=list)
+    axes: MutableSequence[float] = msgspec.field(default_factory=lambda: array("f"))
+    buttons: MutableSequence[_int32] = msgspec.field(default_factory=lambda: array("i"))
+
+    def __post_init__(self) -> None:
+        if type(self.axes) is not array or self.axes.typecode != "f":
+            self.axes = held(self.axes, "f")
+        if type(self.buttons) is not array or self.buttons.typecode != "i":
+            self.buttons = held(self.buttons, "i")
 
 
 class JoyFeedback(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -671,7 +716,11 @@ class LaserEcho(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
         "                  # Each array represents data from the same angle increment.\n"
     )
 
-    echoes: list[float] = msgspec.field(default_factory=list)
+    echoes: MutableSequence[float] = msgspec.field(default_factory=lambda: array("f"))
+
+    def __post_init__(self) -> None:
+        if type(self.echoes) is not array or self.echoes.typecode != "f":
+            self.echoes = held(self.echoes, "f")
 
 
 class LaserScan(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -719,8 +768,14 @@ class LaserScan(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     scan_time: float = 0.0
     range_min: float = 0.0
     range_max: float = 0.0
-    ranges: list[float] = msgspec.field(default_factory=list)
-    intensities: list[float] = msgspec.field(default_factory=list)
+    ranges: MutableSequence[float] = msgspec.field(default_factory=lambda: array("f"))
+    intensities: MutableSequence[float] = msgspec.field(default_factory=lambda: array("f"))
+
+    def __post_init__(self) -> None:
+        if type(self.ranges) is not array or self.ranges.typecode != "f":
+            self.ranges = held(self.ranges, "f")
+        if type(self.intensities) is not array or self.intensities.typecode != "f":
+            self.intensities = held(self.intensities, "f")
 
 
 class MagneticField(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -753,7 +808,11 @@ class MagneticField(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     header: Header = msgspec.field(default_factory=Header)
     magnetic_field: Vector3 = msgspec.field(default_factory=Vector3)
-    magnetic_field_covariance: Annotated[list[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: [0.0] * 9)
+    magnetic_field_covariance: Annotated[MutableSequence[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: array("d", bytes(72)))
+
+    def __post_init__(self) -> None:
+        if type(self.magnetic_field_covariance) is not array or self.magnetic_field_covariance.typecode != "d":
+            self.magnetic_field_covariance = held(self.magnetic_field_covariance, "d")
 
 
 class MultiDOFJointState(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -953,8 +1012,12 @@ class NavSatFix(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     latitude: float = 0.0
     longitude: float = 0.0
     altitude: float = 0.0
-    position_covariance: Annotated[list[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: [0.0] * 9)
+    position_covariance: Annotated[MutableSequence[float], msgspec.Meta(min_length=9, max_length=9)] = msgspec.field(default_factory=lambda: array("d", bytes(72)))
     position_covariance_type: _uint8 = 0
+
+    def __post_init__(self) -> None:
+        if type(self.position_covariance) is not array or self.position_covariance.typecode != "d":
+            self.position_covariance = held(self.position_covariance, "d")
 
 
 class PointCloud(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

@@ -1,9 +1,12 @@
 """Generated from service_msgs/msg/*.msg by `python -m actors interface generate`; do not edit."""
 
+from array import array
+from collections.abc import MutableSequence
 from typing import Annotated, ClassVar
 
 import msgspec
 
+from actors.messages.arrays import held
 from interfaces.builtin_interfaces.msg import Time
 
 __all__ = [
@@ -48,5 +51,9 @@ class ServiceEventInfo(msgspec.Struct, kw_only=True, forbid_unknown_fields=True)
 
     event_type: _uint8 = 0
     stamp: Time = msgspec.field(default_factory=Time)
-    client_gid: Annotated[list[_uint8], msgspec.Meta(min_length=16, max_length=16)] = msgspec.field(default_factory=lambda: [0] * 16)
+    client_gid: Annotated[MutableSequence[_uint8], msgspec.Meta(min_length=16, max_length=16)] = msgspec.field(default_factory=lambda: array("B", bytes(16)))
     sequence_number: _int64 = 0
+
+    def __post_init__(self) -> None:
+        if type(self.client_gid) is not array or self.client_gid.typecode != "B":
+            self.client_gid = held(self.client_gid, "B")

@@ -1,9 +1,12 @@
 """Generated from shape_msgs/msg/*.msg by `python -m actors interface generate`; do not edit."""
 
+from array import array
+from collections.abc import MutableSequence
 from typing import Annotated, ClassVar
 
 import msgspec
 
+from actors.messages.arrays import held
 from interfaces.geometry_msgs.msg import Point, Polygon
 
 __all__ = [
@@ -27,7 +30,11 @@ class MeshTriangle(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
         "uint32[3] vertex_indices\n"
     )
 
-    vertex_indices: Annotated[list[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    vertex_indices: Annotated[MutableSequence[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("I", bytes(12)))
+
+    def __post_init__(self) -> None:
+        if type(self.vertex_indices) is not array or self.vertex_indices.typecode != "I":
+            self.vertex_indices = held(self.vertex_indices, "I")
 
 
 class Mesh(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -62,7 +69,11 @@ class Plane(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
         "float64[4] coef\n"
     )
 
-    coef: Annotated[list[float], msgspec.Meta(min_length=4, max_length=4)] = msgspec.field(default_factory=lambda: [0.0] * 4)
+    coef: Annotated[MutableSequence[float], msgspec.Meta(min_length=4, max_length=4)] = msgspec.field(default_factory=lambda: array("d", bytes(32)))
+
+    def __post_init__(self) -> None:
+        if type(self.coef) is not array or self.coef.typecode != "d":
+            self.coef = held(self.coef, "d")
 
 
 class SolidPrimitive(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -137,5 +148,9 @@ class SolidPrimitive(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     PRISM_HEIGHT: ClassVar[int] = 0
 
     type: _uint8 = 0
-    dimensions: Annotated[list[float], msgspec.Meta(max_length=3)] = msgspec.field(default_factory=list)
+    dimensions: Annotated[MutableSequence[float], msgspec.Meta(max_length=3)] = msgspec.field(default_factory=lambda: array("d"))
     polygon: Polygon = msgspec.field(default_factory=Polygon)
+
+    def __post_init__(self) -> None:
+        if type(self.dimensions) is not array or self.dimensions.typecode != "d":
+            self.dimensions = held(self.dimensions, "d")

@@ -1,9 +1,12 @@
 """Generated from std_msgs/msg/*.msg by `python -m actors interface generate`; do not edit."""
 
+from array import array
+from collections.abc import MutableSequence
 from typing import Annotated, ClassVar
 
 import msgspec
 
+from actors.messages.arrays import held
 from interfaces.builtin_interfaces.msg import Time
 
 __all__ = [
@@ -238,7 +241,11 @@ class Float32MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True
     )
 
     layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
-    data: list[float] = msgspec.field(default_factory=list)
+    data: MutableSequence[float] = msgspec.field(default_factory=lambda: array("f"))
+
+    def __post_init__(self) -> None:
+        if type(self.data) is not array or self.data.typecode != "f":
+            self.data = held(self.data, "f")
 
 
 class Float64(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -275,7 +282,11 @@ class Float64MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True
     )
 
     layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
-    data: list[float] = msgspec.field(default_factory=list)
+    data: MutableSequence[float] = msgspec.field(default_factory=lambda: array("d"))
+
+    def __post_init__(self) -> None:
+        if type(self.data) is not array or self.data.typecode != "d":
+            self.data = held(self.data, "d")
 
 
 class Header(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -332,7 +343,11 @@ class Int16MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     )
 
     layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
-    data: list[_int16] = msgspec.field(default_factory=list)
+    data: MutableSequence[_int16] = msgspec.field(default_factory=lambda: array("h"))
+
+    def __post_init__(self) -> None:
+        if type(self.data) is not array or self.data.typecode != "h":
+            self.data = held(self.data, "h")
 
 
 class Int32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -369,7 +384,11 @@ class Int32MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     )
 
     layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
-    data: list[_int32] = msgspec.field(default_factory=list)
+    data: MutableSequence[_int32] = msgspec.field(default_factory=lambda: array("i"))
+
+    def __post_init__(self) -> None:
+        if type(self.data) is not array or self.data.typecode != "i":
+            self.data = held(self.data, "i")
 
 
 class Int64(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -406,7 +425,11 @@ class Int64MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     )
 
     layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
-    data: list[_int64] = msgspec.field(default_factory=list)
+    data: MutableSequence[_int64] = msgspec.field(default_factory=lambda: array("q"))
+
+    def __post_init__(self) -> None:
+        if type(self.data) is not array or self.data.typecode != "q":
+            self.data = held(self.data, "q")
 
 
 class Int8(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -443,7 +466,11 @@ class Int8MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
     )
 
     layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
-    data: list[_int8] = msgspec.field(default_factory=list)
+    data: MutableSequence[_int8] = msgspec.field(default_factory=lambda: array("b"))
+
+    def __post_init__(self) -> None:
+        if type(self.data) is not array or self.data.typecode != "b":
+            self.data = held(self.data, "b")
 
 
 class String(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -496,7 +523,11 @@ class UInt16MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True)
     )
 
     layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
-    data: list[_uint16] = msgspec.field(default_factory=list)
+    data: MutableSequence[_uint16] = msgspec.field(default_factory=lambda: array("H"))
+
+    def __post_init__(self) -> None:
+        if type(self.data) is not array or self.data.typecode != "H":
+            self.data = held(self.data, "H")
 
 
 class UInt32(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -533,7 +564,11 @@ class UInt32MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True)
     )
 
     layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
-    data: list[_uint32] = msgspec.field(default_factory=list)
+    data: MutableSequence[_uint32] = msgspec.field(default_factory=lambda: array("I"))
+
+    def __post_init__(self) -> None:
+        if type(self.data) is not array or self.data.typecode != "I":
+            self.data = held(self.data, "I")
 
 
 class UInt64(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -570,7 +605,11 @@ class UInt64MultiArray(msgspec.Struct, kw_only=True, forbid_unknown_fields=True)
     )
 
     layout: MultiArrayLayout = msgspec.field(default_factory=MultiArrayLayout)
-    data: list[_uint64] = msgspec.field(default_factory=list)
+    data: MutableSequence[_uint64] = msgspec.field(default_factory=lambda: array("Q"))
+
+    def __post_init__(self) -> None:
+        if type(self.data) is not array or self.data.typecode != "Q":
+            self.data = held(self.data, "Q")
 
 
 class UInt8(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

@@ -1,9 +1,12 @@
 """Generated from test_msgs/action/*.action by `python -m actors interface generate`; do not edit."""
 
+from array import array
+from collections.abc import MutableSequence
 from typing import Annotated, ClassVar
 
 import msgspec
 
+from actors.messages.arrays import held
 from interfaces.action_msgs.msg import GoalStatusArray
 from interfaces.action_msgs.srv import CancelGoal
 from interfaces.builtin_interfaces.msg import Time
@@ -65,7 +68,11 @@ class Fibonacci_Result(msgspec.Struct, kw_only=True, forbid_unknown_fields=True)
         "int32[] sequence\n"
     )
 
-    sequence: list[_int32] = msgspec.field(default_factory=list)
+    sequence: MutableSequence[_int32] = msgspec.field(default_factory=lambda: array("i"))
+
+    def __post_init__(self) -> None:
+        if type(self.sequence) is not array or self.sequence.typecode != "i":
+            self.sequence = held(self.sequence, "i")
 
 
 class Fibonacci_Feedback(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -77,7 +84,11 @@ class Fibonacci_Feedback(msgspec.Struct, kw_only=True, forbid_unknown_fields=Tru
         "int32[] sequence\n"
     )
 
-    sequence: list[_int32] = msgspec.field(default_factory=list)
+    sequence: MutableSequence[_int32] = msgspec.field(default_factory=lambda: array("i"))
+
+    def __post_init__(self) -> None:
+        if type(self.sequence) is not array or self.sequence.typecode != "i":
+            self.sequence = held(self.sequence, "i")
 
 
 class Fibonacci_SendGoal_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

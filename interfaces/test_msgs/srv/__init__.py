@@ -1,9 +1,12 @@
 """Generated from test_msgs/srv/*.srv by `python -m actors interface generate`; do not edit."""
 
+from array import array
+from collections.abc import MutableSequence
 from typing import Annotated, ClassVar
 
 import msgspec
 
+from actors.messages.arrays import held
 from interfaces.service_msgs.msg import ServiceEventInfo
 from interfaces.test_msgs.msg import BasicTypes as test_msgs_BasicTypes, Constants, Defaults
 
@@ -72,35 +75,77 @@ class Arrays_Request(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     bool_values: Annotated[list[bool], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [False] * 3)
     byte_values: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = bytes(3)
-    char_values: Annotated[list[_uint8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
-    float32_values: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0.0] * 3)
-    float64_values: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0.0] * 3)
-    int8_values: Annotated[list[_int8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    char_values: Annotated[MutableSequence[_uint8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("B", bytes(3)))
+    float32_values: Annotated[MutableSequence[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("f", bytes(12)))
+    float64_values: Annotated[MutableSequence[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("d", bytes(24)))
+    int8_values: Annotated[MutableSequence[_int8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("b", bytes(3)))
     uint8_values: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = bytes(3)
-    int16_values: Annotated[list[_int16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
-    uint16_values: Annotated[list[_uint16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
-    int32_values: Annotated[list[_int32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
-    uint32_values: Annotated[list[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
-    int64_values: Annotated[list[_int64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
-    uint64_values: Annotated[list[_uint64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    int16_values: Annotated[MutableSequence[_int16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("h", bytes(6)))
+    uint16_values: Annotated[MutableSequence[_uint16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("H", bytes(6)))
+    int32_values: Annotated[MutableSequence[_int32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("i", bytes(12)))
+    uint32_values: Annotated[MutableSequence[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("I", bytes(12)))
+    int64_values: Annotated[MutableSequence[_int64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("q", bytes(24)))
+    uint64_values: Annotated[MutableSequence[_uint64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("Q", bytes(24)))
     string_values: Annotated[list[str], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [""] * 3)
     basic_types_values: Annotated[list[test_msgs_BasicTypes], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [test_msgs_BasicTypes() for _ in range(3)])
     constants_values: Annotated[list[Constants], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [Constants() for _ in range(3)])
     defaults_values: Annotated[list[Defaults], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [Defaults() for _ in range(3)])
     bool_values_default: Annotated[list[bool], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [False, True, False])
     byte_values_default: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = b'\x00\x01\xff'
-    char_values_default: Annotated[list[_uint8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 127])
-    float32_values_default: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [1.125, 0.0, -1.125])
-    float64_values_default: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [3.1415, 0.0, -3.1415])
-    int8_values_default: Annotated[list[_int8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 127, -128])
+    char_values_default: Annotated[MutableSequence[_uint8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("B", [0, 1, 127]))
+    float32_values_default: Annotated[MutableSequence[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("f", [1.125, 0.0, -1.125]))
+    float64_values_default: Annotated[MutableSequence[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("d", [3.1415, 0.0, -3.1415]))
+    int8_values_default: Annotated[MutableSequence[_int8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("b", [0, 127, -128]))
     uint8_values_default: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = b'\x00\x01\xff'
-    int16_values_default: Annotated[list[_int16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 32767, -32768])
-    uint16_values_default: Annotated[list[_uint16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 65535])
-    int32_values_default: Annotated[list[_int32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 2147483647, -2147483648])
-    uint32_values_default: Annotated[list[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 4294967295])
-    int64_values_default: Annotated[list[_int64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 9223372036854775807, -9223372036854775808])
-    uint64_values_default: Annotated[list[_uint64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 18446744073709551615])
+    int16_values_default: Annotated[MutableSequence[_int16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("h", [0, 32767, -32768]))
+    uint16_values_default: Annotated[MutableSequence[_uint16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("H", [0, 1, 65535]))
+    int32_values_default: Annotated[MutableSequence[_int32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("i", [0, 2147483647, -2147483648]))
+    uint32_values_default: Annotated[MutableSequence[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("I", [0, 1, 4294967295]))
+    int64_values_default: Annotated[MutableSequence[_int64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("q", [0, 9223372036854775807, -9223372036854775808]))
+    uint64_values_default: Annotated[MutableSequence[_uint64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("Q", [0, 1, 18446744073709551615]))
     string_values_default: Annotated[list[str], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: ["", "max value", "min value"])
+
+    def __post_init__(self) -> None:
+        if type(self.char_values) is not array or self.char_values.typecode != "B":
+            self.char_values = held(self.char_values, "B")
+        if type(self.float32_values) is not array or self.float32_values.typecode != "f":
+            self.float32_values = held(self.float32_values, "f")
+        if type(self.float64_values) is not array or self.float64_values.typecode != "d":
+            self.float64_values = held(self.float64_values, "d")
+        if type(self.int8_values) is not array or self.int8_values.typecode != "b":
+            self.int8_values = held(self.int8_values, "b")
+        if type(self.int16_values) is not array or self.int16_values.typecode != "h":
+            self.int16_values = held(self.int16_values, "h")
+        if type(self.uint16_values) is not array or self.uint16_values.typecode != "H":
+            self.uint16_values = held(self.uint16_values, "H")
+        if type(self.int32_values) is not array or self.int32_values.typecode != "i":
+            self.int32_values = held(self.int32_values, "i")
+        if type(self.uint32_values) is not array or self.uint32_values.typecode != "I":
+            self.uint32_values = held(self.uint32_values, "I")
+        if type(self.int64_values) is not array or self.int64_values.typecode != "q":
+            self.int64_values = held(self.int64_values, "q")
+        if type(self.uint64_values) is not array or self.uint64_values.typecode != "Q":
+            self.uint64_values = held(self.uint64_values, "Q")
+        if type(self.char_values_default) is not array or self.char_values_default.typecode != "B":
+            self.char_values_default = held(self.char_values_default, "B")
+        if type(self.float32_values_default) is not array or self.float32_values_default.typecode != "f":
+            self.float32_values_default = held(self.float32_values_default, "f")
+        if type(self.float64_values_default) is not array or self.float64_values_default.typecode != "d":
+            self.float64_values_default = held(self.float64_values_default, "d")
+        if type(self.int8_values_default) is not array or self.int8_values_default.typecode != "b":
+            self.int8_values_default = held(self.int8_values_default, "b")
+        if type(self.int16_values_default) is not array or self.int16_values_default.typecode != "h":
+            self.int16_values_default = held(self.int16_values_default, "h")
+        if type(self.uint16_values_default) is not array or self.uint16_values_default.typecode != "H":
+            self.uint16_values_default = held(self.uint16_values_default, "H")
+        if type(self.int32_values_default) is not array or self.int32_values_default.typecode != "i":
+            self.int32_values_default = held(self.int32_values_default, "i")
+        if type(self.uint32_values_default) is not array or self.uint32_values_default.typecode != "I":
+            self.uint32_values_default = held(self.uint32_values_default, "I")
+        if type(self.int64_values_default) is not array or self.int64_values_default.typecode != "q":
+            self.int64_values_default = held(self.int64_values_default, "q")
+        if type(self.uint64_values_default) is not array or self.uint64_values_default.typecode != "Q":
+            self.uint64_values_default = held(self.uint64_values_default, "Q")
 
 
 class Arrays_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
@@ -143,35 +188,77 @@ class Arrays_Response(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
 
     bool_values: Annotated[list[bool], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [False] * 3)
     byte_values: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = bytes(3)
-    char_values: Annotated[list[_uint8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
-    float32_values: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0.0] * 3)
-    float64_values: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0.0] * 3)
-    int8_values: Annotated[list[_int8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    char_values: Annotated[MutableSequence[_uint8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("B", bytes(3)))
+    float32_values: Annotated[MutableSequence[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("f", bytes(12)))
+    float64_values: Annotated[MutableSequence[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("d", bytes(24)))
+    int8_values: Annotated[MutableSequence[_int8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("b", bytes(3)))
     uint8_values: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = bytes(3)
-    int16_values: Annotated[list[_int16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
-    uint16_values: Annotated[list[_uint16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
-    int32_values: Annotated[list[_int32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
-    uint32_values: Annotated[list[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
-    int64_values: Annotated[list[_int64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
-    uint64_values: Annotated[list[_uint64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0] * 3)
+    int16_values: Annotated[MutableSequence[_int16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("h", bytes(6)))
+    uint16_values: Annotated[MutableSequence[_uint16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("H", bytes(6)))
+    int32_values: Annotated[MutableSequence[_int32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("i", bytes(12)))
+    uint32_values: Annotated[MutableSequence[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("I", bytes(12)))
+    int64_values: Annotated[MutableSequence[_int64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("q", bytes(24)))
+    uint64_values: Annotated[MutableSequence[_uint64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("Q", bytes(24)))
     string_values: Annotated[list[str], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [""] * 3)
     basic_types_values: Annotated[list[test_msgs_BasicTypes], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [test_msgs_BasicTypes() for _ in range(3)])
     constants_values: Annotated[list[Constants], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [Constants() for _ in range(3)])
     defaults_values: Annotated[list[Defaults], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [Defaults() for _ in range(3)])
     bool_values_default: Annotated[list[bool], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [False, True, False])
     byte_values_default: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = b'\x00\x01\xff'
-    char_values_default: Annotated[list[_uint8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 127])
-    float32_values_default: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [1.125, 0.0, -1.125])
-    float64_values_default: Annotated[list[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [3.1415, 0.0, -3.1415])
-    int8_values_default: Annotated[list[_int8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 127, -128])
+    char_values_default: Annotated[MutableSequence[_uint8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("B", [0, 1, 127]))
+    float32_values_default: Annotated[MutableSequence[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("f", [1.125, 0.0, -1.125]))
+    float64_values_default: Annotated[MutableSequence[float], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("d", [3.1415, 0.0, -3.1415]))
+    int8_values_default: Annotated[MutableSequence[_int8], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("b", [0, 127, -128]))
     uint8_values_default: Annotated[bytes, msgspec.Meta(min_length=3, max_length=3)] = b'\x00\x01\xff'
-    int16_values_default: Annotated[list[_int16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 32767, -32768])
-    uint16_values_default: Annotated[list[_uint16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 65535])
-    int32_values_default: Annotated[list[_int32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 2147483647, -2147483648])
-    uint32_values_default: Annotated[list[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 4294967295])
-    int64_values_default: Annotated[list[_int64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 9223372036854775807, -9223372036854775808])
-    uint64_values_default: Annotated[list[_uint64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: [0, 1, 18446744073709551615])
+    int16_values_default: Annotated[MutableSequence[_int16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("h", [0, 32767, -32768]))
+    uint16_values_default: Annotated[MutableSequence[_uint16], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("H", [0, 1, 65535]))
+    int32_values_default: Annotated[MutableSequence[_int32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("i", [0, 2147483647, -2147483648]))
+    uint32_values_default: Annotated[MutableSequence[_uint32], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("I", [0, 1, 4294967295]))
+    int64_values_default: Annotated[MutableSequence[_int64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("q", [0, 9223372036854775807, -9223372036854775808]))
+    uint64_values_default: Annotated[MutableSequence[_uint64], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: array("Q", [0, 1, 18446744073709551615]))
     string_values_default: Annotated[list[str], msgspec.Meta(min_length=3, max_length=3)] = msgspec.field(default_factory=lambda: ["", "max value", "min value"])
+
+    def __post_init__(self) -> None:
+        if type(self.char_values) is not array or self.char_values.typecode != "B":
+            self.char_values = held(self.char_values, "B")
+        if type(self.float32_values) is not array or self.float32_values.typecode != "f":
+            self.float32_values = held(self.float32_values, "f")
+        if type(self.float64_values) is not array or self.float64_values.typecode != "d":
+            self.float64_values = held(self.float64_values, "d")
+        if type(self.int8_values) is not array or self.int8_values.typecode != "b":
+            self.int8_values = held(self.int8_values, "b")
+        if type(self.int16_values) is not array or self.int16_values.typecode != "h":
+            self.int16_values = held(self.int16_values, "h")
+        if type(self.uint16_values) is not array or self.uint16_values.typecode != "H":
+            self.uint16_values = held(self.uint16_values, "H")
+        if type(self.int32_values) is not array or self.int32_values.typecode != "i":
+            self.int32_values = held(self.int32_values, "i")
+        if type(self.uint32_values) is not array or self.uint32_values.typecode != "I":
+            self.uint32_values = held(self.uint32_values, "I")
+        if type(self.int64_values) is not array or self.int64_values.typecode != "q":
+            self.int64_values = held(self.int64_values, "q")
+        if type(self.uint64_values) is not array or self.uint64_values.typecode != "Q":
+            self.uint64_values = held(self.uint64_values, "Q")
+        if type(self.char_values_default) is not array or self.char_values_default.typecode != "B":
+            self.char_values_default = held(self.char_values_default, "B")
+        if type(self.float32_values_default) is not array or self.float32_values_default.typecode != "f":
+            self.float32_values_default = held(self.float32_values_default, "f")
+        if type(self.float64_values_default) is not array or self.float64_values_default.typecode != "d":
+            self.float64_values_default = held(self.float64_values_default, "d")
+        if type(self.int8_values_default) is not array or self.int8_values_default.typecode != "b":
+            self.int8_values_default = held(self.int8_values_default, "b")
+        if type(self.int16_values_default) is not array or self.int16_values_default.typecode != "h":
+            self.int16_values_default = held(self.int16_values_default, "h")
+        if type(self.uint16_values_default) is not array or self.uint16_values_default.typecode != "H":
+            self.uint16_values_default = held(self.uint16_values_default, "H")
+        if type(self.int32_values_default) is not array or self.int32_values_default.typecode != "i":
+            self.int32_values_default = held(self.int32_values_default, "i")
+        if type(self.uint32_values_default) is not array or self.uint32_values_default.typecode != "I":
+            self.uint32_values_default = held(self.uint32_values_default, "I")
+        if type(self.int64_values_default) is not array or self.int64_values_default.typecode != "q":
+            self.int64_values_default = held(self.int64_values_default, "q")
+        if type(self.uint64_values_default) is not array or self.uint64_values_default.typecode != "Q":
+            self.uint64_values_default = held(self.uint64_values_default, "Q")
 
 
 class Arrays_Event(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):

@@ -1,9 +1,12 @@
 """Generated from trajectory_msgs/msg/*.msg by `python -m actors interface generate`; do not edit."""
 
+from array import array
+from collections.abc import MutableSequence
 from typing import ClassVar
 
 import msgspec
 
+from actors.messages.arrays import held
 from interfaces.builtin_interfaces.msg import Duration
 from interfaces.geometry_msgs.msg import Transform, Twist
 from interfaces.std_msgs.msg import Header
@@ -49,11 +52,21 @@ class JointTrajectoryPoint(msgspec.Struct, kw_only=True, forbid_unknown_fields=T
         "builtin_interfaces/Duration time_from_start\n"
     )
 
-    positions: list[float] = msgspec.field(default_factory=list)
-    velocities: list[float] = msgspec.field(default_factory=list)
-    accelerations: list[float] = msgspec.field(default_factory=list)
-    effort: list[float] = msgspec.field(default_factory=list)
+    positions: MutableSequence[float] = msgspec.field(default_factory=lambda: array("d"))
+    velocities: MutableSequence[float] = msgspec.field(default_factory=lambda: array("d"))
+    accelerations: MutableSequence[float] = msgspec.field(default_factory=lambda: array("d"))
+    effort: MutableSequence[float] = msgspec.field(default_factory=lambda: array("d"))
     time_from_start: Duration = msgspec.field(default_factory=Duration)
+
+    def __post_init__(self) -> None:
+        if type(self.positions) is not array or self.positions.typecode != "d":
+            self.positions = held(self.positions, "d")
+        if type(self.velocities) is not array or self.velocities.typecode != "d":
+            self.velocities = held(self.velocities, "d")
+        if type(self.accelerations) is not array or self.accelerations.typecode != "d":
+            self.accelerations = held(self.accelerations, "d")
+        if type(self.effort) is not array or self.effort.typecode != "d":
+            self.effort = held(self.effort, "d")
 
 
 class JointTrajectory(msgspec.Struct, kw_only=True, forbid_unknown_fields=True):
