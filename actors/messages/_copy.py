@@ -13,20 +13,22 @@ function for its type, which
   type and the value ("field 'data' of std_msgs/msg/String: expected a str,
   got the int 42");
 - returns a copy: a new struct for the message and each nested message, a new
-  list for each array; immutable leaves (str, int, float, bytes) are shared,
-  not copied;
+  list or ``array.array`` for each array; immutable leaves (str, int, float,
+  bytes) are shared, not copied;
 - canonicalises what it accepts beyond the exact type: an int (or numpy
   number) for a float field becomes a float, a bool for an int field an int
-  (rclpy accepts both: it sends 1), a tuple or numpy array a list, a
-  bytearray ``bytes``.
+  (rclpy accepts both: it sends 1), a numeric array given as a list, a tuple
+  or a numpy array the ``array.array`` of its typecode (see
+  :mod:`actors.messages.arrays`), any other array given as a tuple a list,
+  a bytearray ``bytes``.
 
 A message without fields is its own snapshot: nothing in it can change.
 A publisher may name fields that its own code fills with values of the
 field's canonical type that fit (a simulated scan, a stamp from the clock, a
 covariance it never changes): the function made for those *trusted* fields
 does not look at them, and the snapshot copies what of them is mutable all
-the same (a nested message, a float array's list, a numpy array's
-``tolist()``); arrays of anything but floats are checked even there.
+the same (a nested message, a float array as an ``array.array``); arrays of
+anything but floats are checked even there.
 :func:`adopter` gives the variant for a message nobody else holds (a service
 response the handler did not keep): the same checks and canonical values,
 written into the message itself, with only its mutable parts copied.
@@ -35,7 +37,9 @@ The function is Python source generated from the type's field layout
 (:func:`actors.messages._fields.layout`) and compiled once per type at first use:
 nested messages are inlined, so a ``Twist`` is two attribute reads and an
 identity test per field plus three struct copies, with no loop over a field
-list and no call per field.  Arrays take a C-speed fast path (the set of
+list and no call per field.  A numeric array that is already an ``array.array``
+of its typecode is copied with one slice (such an array cannot hold a value out
+of the field's range); other arrays take a C-speed fast path (the counted
 element types, ``min``/``max`` for ranges) and fall back to a per-element
 check only when that fails, to name the culprit or convert it.
 """
@@ -90,8 +94,9 @@ def snapshotter(cls: type, trusted: Trusted = frozenset()) -> Snapshot:
     gets the identity: actors cannot know its fields.  ``trusted``: dotted
     paths of fields (``"pose.covariance"``, ``"header"`` for all of it, ``""``
     for the whole message) whose values the caller's own code makes in their
-    canonical type, fitting the field (a float array: a list of floats or a
-    1-D float numpy array): they are copied where mutable, not looked at.
+    canonical type, fitting the field (a float array: an ``array.array``, a
+    list of floats or a 1-D float numpy array): they are copied where mutable
+    (a float array as the ``array.array`` of its typecode), not looked at.
     ValueError for a path that names no field outside arrays of messages.
     """
     return _made(_cache, cls, "copy", _identity, trusted)

@@ -20,9 +20,10 @@ empty ``float64[]``, one character too many per wstring) and leaves padding
 and that tail as its allocator found them.  Readers ignore both.
 
 Speed comes from generating Python source per type once, at first use: runs
-of fixed-size fields (nested ones inlined, ``float64[9]`` included) become
-one precompiled ``struct`` call, numeric sequences one ``array`` conversion,
-``uint8[]`` a bytes slice.  Where a run starts at an offset known only at run
+of fixed-size fields (nested ones inlined, ``float64[9]`` included, as its raw
+bytes) become one precompiled ``struct`` call; a numeric sequence, held as an
+``array.array`` (see :mod:`actors.messages.arrays`), is one ``tobytes`` or one
+``frombytes``; ``uint8[]`` a bytes slice.  Where a run starts at an offset known only at run
 time (after a string), a table holds one ``Struct`` per possible alignment.
 
 Decoding refuses anything malformed with :class:`CdrError` naming the type

@@ -450,7 +450,7 @@ class Publisher:
 
         Not in rclpy.  For a node whose own code fills them, always with
         values of the field's canonical type that fit it (a float, a str, a
-        float array as a list of floats or a 1-D float numpy array, a stamp
+        float array as an array.array, a list of floats or a 1-D float numpy array, a stamp
         from the clock): checking each on every publish costs as much as the
         rest of a tick.  Subscribers still receive a copy of what was
         published, and arrays of anything but floats are still checked.
