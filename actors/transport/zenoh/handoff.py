@@ -7,17 +7,38 @@ a batch schedules one drain on the loop (``call_soon_threadsafe``, one write
 to the loop's wake-up pipe).  Items that arrive while that drain is pending
 ride along with it: a burst of samples costs one thread hop, not one each.
 The drain runs every item in arrival order, on the loop, where the graph lives.
+
+Zenoh's own threads are not Python's: a callback run there (``indirect=False``)
+made a Python thread state and deleted it again on return, most of that
+thread's time in a profile of the service round trip.  :func:`keep_thread_state`
+keeps the thread state of such a thread from its first callback on, as a
+thread Python started keeps its own: one per zenoh thread, never freed.
 """
 
 from __future__ import annotations
 
 import asyncio
+import ctypes
 import threading
 from collections import deque
 from collections.abc import Callable
 from typing import Any
 
-__all__ = ["Handoff"]
+__all__ = ["Handoff", "keep_thread_state"]
+
+_kept = threading.local()
+
+
+def keep_thread_state() -> None:
+    """Keep the calling thread's Python thread state until the thread ends (cheap once done).
+
+    A thread Python did not start gets a thread state for each call into
+    Python and loses it on return, unless one ``PyGILState_Ensure`` is left
+    unmatched: that one is, once per thread.
+    """
+    if not getattr(_kept, "held", False):
+        ctypes.pythonapi.PyGILState_Ensure()
+        _kept.held = True
 
 
 class Handoff:
@@ -38,6 +59,7 @@ class Handoff:
 
         Dropped silently once the handoff is closed (the transport is stopping).
         """
+        keep_thread_state()
         self._items.append((function, argument))
         with self._lock:
             if self._pending or self._closed:

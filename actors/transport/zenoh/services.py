@@ -4,7 +4,9 @@ Serving.  Each local server declares a *complete* queryable on its data key
 (and an ``SS`` token).  A query crosses to the loop, its request is decoded
 and queued for the server as a local call would be; the reply carries the
 response (CDR) and an attachment with the request's sequence number and the
-client's GID, as rmw_zenoh's clients match replies by them.  A handler that
+client's GID, as rmw_zenoh's clients match replies by them; it leaves as the
+server settles the call's future (:class:`_Answer`), with no loop round
+between the handler and the wire.  A handler that
 raises answers with a Zenoh error reply; a query that cannot be read is
 answered with one too (and logged within the bounds of :mod:`.peer_warnings`).
 
@@ -13,7 +15,8 @@ type this process knows under the same hash) and none runs here, a
 :class:`~actors.transport.seam.RemoteService` stands in the service table:
 local clients wait for it, find it and call it as usual.  A call becomes a
 Zenoh query (every complete queryable, no consolidation, our attachment);
-the first reply settles the caller's future.  The caller never hangs on a
+the first reply settles the caller's future (the end of a query that was
+answered is not handed to the loop: one wake-up less per call).  The caller never hangs on a
 server that went away: Zenoh ends a query whose queryable's process stopped,
 and when the last server's token is withdrawn the calls still waiting fail
 with ServiceError at once.  Each local client holds an ``SC`` token.
@@ -49,6 +52,54 @@ class _Served:
         self.service = service
         self.endpoint = endpoint
         self.queryable: Any = None
+
+
+class _Call:
+    """A call of ours on the wire: whether a reply came decides whether its end is news to the loop."""
+
+    __slots__ = ("standin", "future", "replied")
+
+    def __init__(self, standin: RemoteService, future: asyncio.Future[Any]) -> None:
+        self.standin = standin
+        self.future = future
+        self.replied = False  # set on zenoh's thread
+
+
+class _Answer(asyncio.Future[Any]):
+    """The future of a query from elsewhere: settling it answers the query there and then.
+
+    A done callback would answer one loop round after the handler, a hop
+    that every service round trip across processes paid.
+    """
+
+    def __init__(self, link: Link, key: str, query: Any, sequence: int, gid: bytes) -> None:
+        super().__init__(loop=link.loop)
+        self._link = link
+        self._key = key
+        self._query = query
+        self._sequence = sequence
+        self._gid = gid
+
+    def set_result(self, result: Any, /) -> None:
+        super().set_result(result)
+        try:
+            payload = codec.encode_cdr(result)
+        except Exception as exc:  # a response CDR cannot carry: the caller hears why, the server goes on
+            self._link.logger.error(f"cannot send a response on {self._key}: {exc}")
+            _finish(self._query, error=f"cannot encode the response: {exc}")
+            return
+        attachment = pack(self._sequence, self._link.now_ns(), self._gid)
+        _finish(self._query, key=self._key, payload=payload, attachment=attachment)
+
+    def set_exception(self, exception: type | BaseException, /) -> None:
+        super().set_exception(exception)
+        _finish(self._query, error=str(self.exception()))  # retrieved: the caller elsewhere hears it
+
+    def cancel(self, msg: Any = None) -> bool:
+        if not super().cancel(msg):
+            return False
+        _finish(self._query, error="the call was cancelled")
+        return True
 
 
 class ServiceBridge:
@@ -109,20 +160,7 @@ class ServiceBridge:
             )
             _finish(query, error=f"malformed request: {exc}")
             return
-        future: asyncio.Future[Any] = link.loop.create_future()
-        future.add_done_callback(lambda f: self._reply(served, query, sequence, gid, f))
-        submit(served.service, request, future)
-
-    def _reply(self, served: _Served, query: Any, sequence: int, gid: bytes, future: asyncio.Future[Any]) -> None:
-        if future.cancelled():
-            _finish(query, error="the call was cancelled")
-        elif future.exception() is not None:
-            _finish(query, error=str(future.exception()))
-        else:
-            payload = codec.encode_cdr(future.result())
-            _finish(
-                query, key=served.endpoint.key, payload=payload, attachment=pack(sequence, self._link.now_ns(), gid)
-            )
+        submit(served.service, request, _Answer(link, served.endpoint.key, query, sequence, gid))
 
     def remove_service(self, service: Service) -> None:
         """Stop serving ``service`` elsewhere; a server elsewhere may stand in for it again."""
@@ -196,14 +234,19 @@ class ServiceBridge:
         calls.add(future)
         future.add_done_callback(calls.discard)
         zenoh, handoff = link.zenoh, link.handoff
-        item = (standin, future)
+        call = _Call(standin, future)
+
+        def replied(reply: Any) -> None:  # on zenoh's thread
+            call.replied = True
+            handoff.put(self._settle, (call, reply))
+
+        def ended() -> None:  # on zenoh's thread, after the last reply: a call answered needs no more
+            if not call.replied:
+                handoff.put(self._ended, call)
+
         link.session.get(
             key,
-            zenoh.handlers.Callback(
-                lambda reply: handoff.put(self._settle, (item, reply)),
-                lambda: handoff.put(self._ended, item),
-                indirect=False,
-            ),
+            zenoh.handlers.Callback(replied, ended, indirect=False),
             payload=payload,
             attachment=pack(self._sequence, link.now_ns(), self._gid),
             target=zenoh.QueryTarget.ALL_COMPLETE,
@@ -212,8 +255,9 @@ class ServiceBridge:
             allowed_destination=zenoh.Locality.REMOTE,
         )
 
-    def _settle(self, item: tuple[tuple[RemoteService, asyncio.Future[Any]], Any]) -> None:
-        (standin, future), reply = item
+    def _settle(self, item: tuple[_Call, Any]) -> None:
+        call, reply = item
+        standin, future = call.standin, call.future
         if future.done():
             return  # answered already (several servers), timed out or cancelled
         name, provider = standin.service_name, standin.provider
@@ -226,8 +270,8 @@ class ServiceBridge:
         except Exception as exc:
             future.set_exception(ServiceError(f"service {name} on {provider} sent a malformed response: {exc}"))
 
-    def _ended(self, item: tuple[RemoteService, asyncio.Future[Any]]) -> None:
-        standin, future = item
+    def _ended(self, call: _Call) -> None:
+        standin, future = call.standin, call.future
         if not future.done():
             future.set_exception(
                 ServiceError(
