@@ -371,3 +371,36 @@ async def test_messages_with_a_lifespan_are_recorded_as_published(tmp_path):
         await anyio.sleep(3.5)
     got = [codec.decode_cdr(m.data, String).data for _, _, m in read_bag(path).iter_messages()]
     assert got == ["s0", "s1", "s2"]
+
+
+def test_the_summary_kept_in_memory_costs_a_few_hundred_bytes_per_chunk(tmp_path):
+    import tracemalloc
+
+    # A recording flushed every second writes 60 chunks a minute, for as long as it runs: what the
+    # writer keeps per chunk (the summary must index each one) is its memory's growth per minute.
+    path = tmp_path / "chunks.mcap"
+    writer = McapWriter(path.open("wb", buffering=0), compression="")
+    schema = writer.add_schema("std_msgs/msg/String", "ros2msg", b"string data")
+    channels = [writer.add_channel(f"/t{i}", schema, "cdr", {}) for i in range(12)]
+    tracemalloc.start()
+    try:
+        before = tracemalloc.get_traced_memory()[0]
+        for chunk in range(1_000):
+            writer.add_messages([(channel, chunk, chunk, b"x") for channel in channels])
+            writer.flush()
+        per_chunk = (tracemalloc.get_traced_memory()[0] - before) / 1_000
+    finally:
+        tracemalloc.stop()
+    writer.close()
+    assert per_chunk < 300, f"{per_chunk:.0f} bytes kept per chunk"
+    with path.open("rb") as stream:
+        summary = mcap_reader.make_reader(stream).get_summary()
+    assert summary is not None and summary.statistics is not None
+    assert summary.statistics.chunk_count == len(summary.chunk_indexes) == 1_000
+    assert summary.statistics.message_count == 12_000
+    last = summary.chunk_indexes[-1]
+    assert (last.message_start_time, last.message_end_time) == (999, 999)
+    assert sorted(last.message_index_offsets) == channels
+    with path.open("rb") as stream:
+        messages = list(mcap_reader.make_reader(stream).iter_messages(starting_at=999))
+    assert [(channel.id, message.log_time) for _, channel, message in messages] == [(c, 999) for c in channels]

@@ -104,7 +104,11 @@ class McapWriter:
         self._schemas: dict[int, Any] = {}
         self._channels: dict[int, Any] = {}
         self._metadata: list[tuple[str, dict[str, str]]] = []
-        self._chunk_indexes: list[Any] = []
+        # The summary's chunk indexes, one per chunk written, kept as the bytes they end up as: a
+        # recording flushed every second adds 60 a minute, and as mcap's ChunkIndex objects they
+        # cost ~1.4 KB each (a dict of offsets per channel) where the record is ~190 bytes.
+        self._chunk_index_records = bytearray()
+        self._chunk_count = 0
         self._counts: dict[int, int] = {}  # messages per channel, in the file
         self._start = self._end = 0  # log times of the messages in the file
         self._messages = 0
@@ -224,19 +228,19 @@ class McapWriter:
             self.lost += self._chunk_messages
             self._new_chunk()
             return
-        self._chunk_indexes.append(
-            r.ChunkIndex(
-                message_start_time=self._chunk_start,
-                message_end_time=self._chunk_end,
-                chunk_start_offset=start,
-                chunk_length=len(chunk_record),
-                message_index_offsets=offsets,
-                message_index_length=len(out) - len(chunk_record),
-                compression=self._compression,
-                compressed_size=len(compressed),
-                uncompressed_size=len(data),
-            )
-        )
+        r.ChunkIndex(
+            message_start_time=self._chunk_start,
+            message_end_time=self._chunk_end,
+            chunk_start_offset=start,
+            chunk_length=len(chunk_record),
+            message_index_offsets=offsets,
+            message_index_length=len(out) - len(chunk_record),
+            compression=self._compression,
+            compressed_size=len(compressed),
+            uncompressed_size=len(data),
+        ).write(builder)
+        self._chunk_index_records += builder.end()
+        self._chunk_count += 1
         if not self._messages:
             self._start = self._chunk_start
         self._end = self._chunk_end
@@ -342,11 +346,14 @@ class McapWriter:
         summary = self._builder_class()
         offsets: list[Any] = []
 
-        def group(opcode: int, records: list[Any]) -> None:
+        def group(opcode: int, records: list[Any] | bytearray) -> None:
             if records:
                 begin = summary.count
-                for record in records:
-                    record.write(summary)
+                if isinstance(records, bytearray):  # records already written out
+                    summary.write(records)
+                else:
+                    for record in records:
+                        record.write(summary)
                 offsets.append(
                     r.SummaryOffset(
                         group_opcode=opcode,
@@ -369,14 +376,14 @@ class McapWriter:
                         channel_count=len(self._channels),
                         attachment_count=0,
                         metadata_count=len(self._metadata),
-                        chunk_count=len(self._chunk_indexes),
+                        chunk_count=self._chunk_count,
                         message_start_time=self._start,
                         message_end_time=self._end,
                         channel_message_counts={k: v for k, v in self._counts.items() if v},
                     )
                 ],
             )
-            group(Opcode.CHUNK_INDEX, self._chunk_indexes)
+            group(Opcode.CHUNK_INDEX, self._chunk_index_records)
             group(Opcode.METADATA_INDEX, metadata_indexes)
         offset_start = summary_start + summary.count
         for offset in offsets:
