@@ -5,7 +5,8 @@ Three codecs side by side, in one run: actors' generated CDR
 (``codec.encode_cdr``/``decode_cdr``), rosbags' serializer
 (``Typestore.serialize_cdr``/``deserialize_cdr``, ``pip install rosbags``)
 and rclpy's ``serialize_message``/``deserialize_message`` (its C typesupport
-called from Python; measured in a child process, see :mod:`bench.ros`).
+called from Python; measured in a child process that imports nothing of
+actors, see :mod:`bench.cdr_rclpy`).
 Each side's message is built by decoding actors' bytes, so all three handle
 the same values.  Each sample times a loop; the table shows the median µs
 per message and the ratios to rclpy and rosbags (higher is better).
@@ -13,17 +14,16 @@ per message and the ratios to rclpy and rosbags (higher is better).
 
 from __future__ import annotations
 
-import importlib
 import json
-import sys
-import time
+import tempfile
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 from actors import codec
 from bench import codec as codec_bench
 from bench import ros
-from bench.harness import Result, repeat, run_child, standalone
+from bench.harness import Result, micros_per_call, repeat, run_child, standalone
 from interfaces.geometry_msgs.msg import Point, Pose, PoseWithCovariance, Quaternion, TwistWithCovariance
 from interfaces.nav_msgs.msg import Odometry
 from interfaces.sensor_msgs.msg import Image, PointCloud2, PointField
@@ -78,17 +78,12 @@ def loops_for(name: str, quick: bool) -> int:
     return max(1, loops // 20) if quick else loops
 
 
-def _micros(fn: Callable[[], object], loops: int) -> float:
-    start = time.perf_counter()
-    for _ in range(loops):
-        fn()
-    return (time.perf_counter() - start) / loops * 1e6
-
-
 def _measure(
     encode: Callable[[], bytes], decode: Callable[[], object], loops: int, reps: int
 ) -> dict[str, list[float]]:
-    return {verb: repeat(lambda: _micros(fn, loops), reps) for verb, fn in (("encode", encode), ("decode", decode))}
+    return {
+        verb: repeat(lambda: micros_per_call(fn, loops), reps) for verb, fn in (("encode", encode), ("decode", decode))
+    }
 
 
 def _same(data: bytes, msg: Any) -> bool:
@@ -124,28 +119,24 @@ def measure_rclpy(quick: bool, reps: int) -> dict[str, dict[str, list[float]]] |
     why = ros.unavailable()
     if why is not None:
         return why
-    try:
-        return run_child(["-m", "bench.cdr", "--rclpy", json.dumps({"quick": quick, "reps": reps})], ros.ros_env())
-    except Exception as exc:
-        return f"rclpy: failed — {exc}"
-
-
-def _rclpy_child(args: dict[str, Any]) -> None:
-    """In the child: rclpy's rows, printed as one JSON line."""
-    from rclpy.serialization import deserialize_message, serialize_message
-
-    out = {}
-    for name, msg in samples().items():
-        pkg, kind, type_name = msg.__ros_type__.split("/")
-        cls = getattr(importlib.import_module(f"{pkg}.{kind}"), type_name)
-        theirs = deserialize_message(codec.encode_cdr(msg), cls)
-        data = serialize_message(theirs)
-        assert _same(data, msg)
-        loops = loops_for(name, args["quick"])
-        out[name] = _measure(
-            lambda: serialize_message(theirs), lambda: deserialize_message(data, cls), loops, args["reps"]
-        )
-    print(json.dumps(out))
+    messages = samples()
+    spec = {
+        "reps": reps,
+        "samples": {
+            name: {"type": msg.__ros_type__, "cdr": codec.encode_cdr(msg).hex(), "loops": loops_for(name, quick)}
+            for name, msg in messages.items()
+        },
+    }
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "samples.json"
+        path.write_text(json.dumps(spec), encoding="utf-8")
+        try:
+            rows = run_child(["-m", "bench.cdr_rclpy", str(path)], ros.ros_env())
+        except Exception as exc:
+            return f"rclpy: failed — {exc}"
+    for name, msg in messages.items():
+        assert _same(bytes.fromhex(rows[name].pop("cdr")), msg)
+    return rows
 
 
 def run(quick: bool) -> list[Result]:
@@ -188,7 +179,4 @@ def worst_ratio(get: Callable[[str, str], Result | None], baseline: str) -> tupl
 
 
 if __name__ == "__main__":
-    if len(sys.argv) == 3 and sys.argv[1] == "--rclpy":
-        _rclpy_child(json.loads(sys.argv[2]))
-    else:
-        standalone(run, __doc__, "fewer loops, for a smoke run")
+    standalone(run, __doc__, "fewer loops, for a smoke run")

@@ -11,12 +11,11 @@ from __future__ import annotations
 import argparse
 import math
 import pickle
-import time
 from collections.abc import Callable
 from typing import Any
 
 from actors import codec
-from bench.harness import Result, repeat, table
+from bench.harness import Result, micros_per_call, repeat, table
 from interfaces.geometry_msgs.msg import Twist, Vector3
 from interfaces.sensor_msgs.msg import LaserScan
 from interfaces.std_msgs.msg import Header
@@ -42,14 +41,6 @@ def samples() -> dict[str, Any]:
         intensities=[100.0 + i for i in range(beams)],
     )
     return {"Twist": Twist(linear=Vector3(x=0.2), angular=Vector3(z=0.5)), "LaserScan[360]": scan}
-
-
-def micros_per_call(fn: Callable[[], object], loops: int) -> float:
-    """Mean µs per call of ``fn`` over ``loops`` calls."""
-    start = time.perf_counter()
-    for _ in range(loops):
-        fn()
-    return (time.perf_counter() - start) / loops * 1e6
 
 
 def measure(loops: int, repetitions: int) -> list[Result]:

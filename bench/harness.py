@@ -96,6 +96,14 @@ def repeat(fn: Callable[[], T], times: int, *, warmup: bool = True) -> list[T]:
     return [fn() for _ in range(times)]
 
 
+def micros_per_call(fn: Callable[[], object], loops: int) -> float:
+    """Mean µs per call of ``fn`` over ``loops`` calls."""
+    start = time.perf_counter()
+    for _ in range(loops):
+        fn()
+    return (time.perf_counter() - start) / loops * 1e6
+
+
 def side_by_side(fns: Mapping[str, Callable[[], T]], times: int, *, warmup: bool = True) -> dict[str, list[T]]:
     """Call each of ``fns`` ``times`` times, taking turns, and return each one's results by name.
 

@@ -3,6 +3,10 @@
 from __future__ import annotations
 
 import itertools
+import subprocess
+import sys
+
+from conftest import ROOT
 
 from bench.harness import side_by_side
 
@@ -27,3 +31,10 @@ def test_side_by_side_takes_turns_after_warming_each_once() -> None:
 def test_side_by_side_without_warm_up_measures_from_the_first_call() -> None:
     clock = itertools.count()
     assert side_by_side({"one": lambda: next(clock)}, 2, warmup=False) == {"one": [0, 1]}
+
+
+def test_the_rclpy_side_of_the_cdr_bench_imports_neither_actors_nor_msgspec() -> None:
+    # With msgspec imported, rclpy decoded a 0.9 MB Image 10-25x slower in the same process.
+    code = "import sys, bench.cdr_rclpy; print(sorted({m.split('.')[0] for m in sys.modules} & {'actors', 'msgspec'}))"
+    found = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, check=True)
+    assert found.stdout.strip() == "[]"
