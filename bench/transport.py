@@ -20,10 +20,11 @@ two here); its source and client spin one too.  The actors children run the
 Zenoh transport on the default wall-clock loop, meeting on a private port.
 
 The floor: a bare eclipse-zenoh pair of Python processes doing the same on
-the same port, with no graph around it: a subscriber callback (zenoh's own
-thread per callback, its default) counting the String's CDR bytes that a
-publisher puts; a queryable answering ``get`` calls one after another; a
-callback echoing the Int64's bytes back.  What actors adds is its own work
+the same port, with no graph around it: a subscriber callback (zenoh's
+default, ``indirect=True``: one long-lived Python thread per subscriber)
+counting the String's CDR bytes that a publisher puts; a queryable answering
+``get`` calls one after another (a caller blocked on zenoh's FIFO channel of
+replies); a callback echoing the Int64's bytes back.  What actors adds is its own work
 above that (keys, attachments, CDR, the hand-off into the loop).
 """
 
