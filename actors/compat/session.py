@@ -243,11 +243,7 @@ class Session:
             task = self.loop.create_task(_as_coroutine(async_fn, *args))
             task.add_done_callback(lambda _: waiter.wake())
             try:
-                while not task.done() and not self.turn.over:
-                    waiter.clear()
-                    if task.done():
-                        break
-                    self.turn.wait(waiter)
+                self.wait_until(task.done, None, waiter)
             except BaseException:
                 task.cancel()
                 raise
@@ -298,10 +294,8 @@ class Session:
                 real.sleep(seconds)
 
         def start(thread: threading.Thread) -> None:
-            if turn.mine() and not turn.stopped and not _pool_worker(thread) and not hasattr(thread, "_actors_end"):
-                waiter = turn.enlist(self.waiter())
-                end = thread._actors_end = self.waiter()  # type: ignore[attr-defined]  # see join below
-                thread.run = functools.partial(self._run_enlisted, waiter, end, thread.run)  # type: ignore[method-assign]  # wrapped for this thread
+            if turn.mine() and not _pool_worker(thread) and not hasattr(thread, "_actors_end"):
+                self._enlist(thread)
             # start() waits for the new thread to say it runs, which it does without the turn.
             _plain.waits = True
             try:
@@ -361,6 +355,15 @@ class Session:
         finally:
             real.install()
 
+    def _enlist(self, thread: threading.Thread) -> None:
+        # On the virtual clock, a thread about to start queues for the baton from now; joining it
+        # is a wait that its end wakes (see timekeeping's join).
+        turn = self.turn
+        if isinstance(turn, VirtualTurn) and not turn.stopped:
+            waiter = turn.enlist(self.waiter())
+            end = thread._actors_end = self.waiter()  # type: ignore[attr-defined]  # read by join
+            thread.run = functools.partial(self._run_enlisted, waiter, end, thread.run)  # type: ignore[method-assign]  # wrapped for this thread
+
     def _run_enlisted(self, waiter: Waiter, end: Waiter, run: Callable[[], object]) -> None:
         # A thread's whole life under the baton: it waits for its turn, runs, and hands the baton on.
         turn = self.turn
@@ -381,12 +384,7 @@ class Session:
     def start_thread(self, target: Callable[[], Any], name: str) -> threading.Thread:
         """Start a daemon thread running ``target()`` with the turn, queued for it from now."""
         thread = threading.Thread(target=target, name=name, daemon=True)
-        turn = self.turn
-        if isinstance(turn, VirtualTurn) and not turn.stopped:
-            waiter = turn.enlist(self.waiter())
-            end = self.waiter()
-            thread._actors_end = end  # type: ignore[attr-defined]  # as timekeeping's start
-            thread.run = functools.partial(self._run_enlisted, waiter, end, thread.run)  # type: ignore[method-assign]  # wrapped for this thread
+        self._enlist(thread)
         thread.start()
         return thread
 
@@ -409,7 +407,7 @@ class Session:
         turn.enlist(waiter)  # after submit: a wait inside it must not hand the baton to this job
         return future
 
-    def wait_until(self, done: Callable[[], Any], timeout: float | None, waiter: Waiter | None = None) -> Any:
+    def wait_until(self, done: Callable[[], T], timeout: float | None, waiter: Waiter | None = None) -> T:
         """Wait until ``done()`` (checked with the turn held) returns something true; return it.
 
         ``waiter`` is the one whoever makes ``done()`` true wakes (made here if

@@ -372,10 +372,12 @@ class VirtualTurn(Turn):
         self.expected = 0  # threads told to come and take the baton that have not queued yet
         self._where: dict[int, tuple[str, str, int] | None] = {}  # where each holder last left a wait
 
-    def _take(self) -> None:
-        # A thread that is no script thread (a signal's helper, a pool's worker): it queues.
+    def _take(self, expected: bool = False) -> None:
+        # A thread that does not hold the baton (a signal's helper, a pool's worker, a thread that
+        # was expected): it queues, and blocks until the baton comes to it.
         waiter = Waiter(self)
         with self._lock:
+            self.expected -= expected
             self._enqueue(waiter)
         self._poke()
         waiter._sem.acquire()
@@ -509,12 +511,7 @@ class VirtualTurn(Turn):
 
     def come(self) -> None:
         """The thread that was expected queues for the baton and takes it when its turn comes."""
-        waiter = Waiter(self)
-        with self._lock:
-            self.expected -= 1
-            self._enqueue(waiter)
-        self._poke()
-        self.arrive(waiter)
+        self._take(expected=True)
 
     def unexpect(self) -> None:
         """The thread that was expected will not come."""
@@ -531,13 +528,7 @@ class VirtualTurn(Turn):
                 self.expected -= 1
             yield
             return
-        waiter = Waiter(self)
-        with self._lock:
-            self.expected -= 1
-            self._enqueue(waiter)
-        self._poke()
-        waiter._sem.acquire()
-        self._received(1)
+        self._take(expected=True)
         try:
             yield
         finally:

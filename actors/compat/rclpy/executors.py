@@ -251,9 +251,6 @@ class Executor:
         condition: Callable[[], bool] = lambda: False,
     ) -> tuple[Task[None], WorkSource | None, Node | None]:
         # wait_for_ready_callbacks for this module's executors, which run the handler themselves.
-        session = self._session
-        waiter = session.waiter()
-        timeout = _seconds(timeout_sec)
 
         def ready() -> tuple[Task[None], WorkSource | None, Node | None] | None:
             if self._is_shutdown:
@@ -264,13 +261,7 @@ class Executor:
                 raise ConditionReachedException()
             return self._next(nodes) if self._has_capacity() else None
 
-        with session.lock:
-            self._waiters.add(waiter)
-        try:
-            work = session.wait_until(ready, timeout, waiter)
-        finally:
-            with session.lock:
-                self._waiters.discard(waiter)
+        work = self._wait_until(ready, _seconds(timeout_sec))
         if work is None:
             raise TimeoutException()
         return work
@@ -327,14 +318,15 @@ class Executor:
         self._tasks.append((task, entity, node))
         return task, entity, node
 
-    def _wait_until(self, done: Callable[[], bool], timeout: float | None) -> bool:
-        """Wait (woken by :meth:`wake`) until ``done()``; False after ``timeout`` seconds."""
+    def _wait_until(self, done: Callable[[], T], timeout: float | None) -> T:
+        """Wait (woken by :meth:`wake`) until ``done()`` is true; what it returns then, or after
+        ``timeout`` seconds."""
         session = self._session
         waiter = session.waiter()
         with session.lock:
             self._waiters.add(waiter)
         try:
-            return bool(session.wait_until(done, timeout, waiter))
+            return session.wait_until(done, timeout, waiter)
         finally:
             with session.lock:
                 self._waiters.discard(waiter)
