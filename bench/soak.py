@@ -18,7 +18,7 @@
     graph's descriptors before, at their peak and after.  Every 50th probe
     also times a real ``actors node list`` process (Python's start included).
 
-``python -m bench.soak --round2 [--minutes 30] [--fresh-names]``
+``python -m bench.soak --round2 [--minutes 30] [--fresh-names] [--without PART ...]``
     Issue 34's acceptance 6: the TurtleBot graph with the Zenoh transport, a
     recorder and the live view; beside it a plain Zenoh peer declaring 500
     liveliness tokens and taking them back every 10 s, a Foxglove viewer
@@ -30,7 +30,12 @@
     graph's and the bare peer's) and the descriptors' range.  The tokens'
     names come from three sets in turn; with ``--fresh-names`` every round
     has new ones, and Zenoh itself (upstream, the bare peer as much as the
-    graph) keeps about 1.3 KB per name it ever heard of.
+    graph) keeps about 1.3 KB per name it ever heard of.  ``--without`` leaves
+    parts out, to find what grows: ``churn`` (the token-churning peer),
+    ``recorder``, ``viewer`` (the live view and its viewer), ``cli`` (the
+    control rounds and ``topic echo``), ``zenoh`` (the transport, and with it
+    the churner and the bare peer).  Runs shorter than 23 minutes take the
+    slope after their first 3.
 
 ``python -m bench.soak --stalled``
     Acceptance 3: five ``actors topic echo /scan`` processes whose output
@@ -383,7 +388,8 @@ _BARE = """
 import json, sys, threading
 import zenoh
 config = zenoh.Config()
-config.insert_json5("connect/endpoints", json.dumps([f"tcp/127.0.0.1:{sys.argv[1]}"]))
+where = "listen" if sys.argv[2:] == ["--listen"] else "connect"
+config.insert_json5(f"{where}/endpoints", json.dumps([f"tcp/127.0.0.1:{sys.argv[1]}"]))
 config.insert_json5("scouting/multicast/enabled", "false")
 session = zenoh.open(config)
 heard = zenoh.handlers.Callback(lambda sample: None)
@@ -431,26 +437,37 @@ def _free_port() -> int:
         return int(sock.getsockname()[1])
 
 
-def round2(minutes: float, fresh_names: bool = False) -> None:
+WITHOUT = ("churn", "recorder", "viewer", "cli", "zenoh")
+"""What ``--round2 --without`` may leave out."""
+
+
+def round2(minutes: float, fresh_names: bool = False, without: frozenset[str] = frozenset()) -> None:
     """Issue 34's soak: TurtleBot with recorder, live view, Zenoh, a churning peer, a viewer, CLI loops."""
     with tempfile.TemporaryDirectory() as tmp:
         runtime_dir = Path(tmp) / "run"
         runtime_dir.mkdir(mode=0o700)
         zenoh_port, view_port = _free_port(), _free_port()
         graph_file = Path(tmp) / "soak_turtlebot.toml"
-        graph_file.write_text(
-            (ROOT / "graphs/turtlebot.toml").read_text()
-            + f'\n[transport]\nkind = "zenoh"\nconnect = ["tcp/127.0.0.1:{zenoh_port}"]\n'
+        transport = (
+            f'\n[transport]\nkind = "zenoh"\nconnect = ["tcp/127.0.0.1:{zenoh_port}"]\n'
             f'listen = ["tcp/127.0.0.1:{zenoh_port}"]\n'
         )
+        graph_file.write_text((ROOT / "graphs/turtlebot.toml").read_text() + ("" if "zenoh" in without else transport))
         bag = Path(tmp) / "soak.mcap"
-        graph = GraphProcess(graph_file, runtime_dir, "--record", str(bag), "--foxglove", str(view_port))
+        options = [] if "recorder" in without else ["--record", str(bag)]
+        options += [] if "viewer" in without else ["--foxglove", str(view_port)]
+        graph = GraphProcess(graph_file, runtime_dir, *options)
         name_sets = "0" if fresh_names else "3"
-        helpers = [
-            subprocess.Popen([sys.executable, "-c", _CHURN, str(zenoh_port), "500", name_sets], cwd=ROOT),
-            bare := subprocess.Popen([sys.executable, "-c", _BARE, str(zenoh_port)], cwd=ROOT),
-            subprocess.Popen([sys.executable, "-c", _VIEWER, f"ws://127.0.0.1:{view_port}"], cwd=ROOT),
-        ]
+        helpers = []
+        if "zenoh" not in without and "churn" not in without:
+            helpers.append(
+                subprocess.Popen([sys.executable, "-c", _CHURN, str(zenoh_port), "500", name_sets], cwd=ROOT)
+            )
+        # Without the transport the bare peer listens alone: the floor of a Zenoh session that hears nothing.
+        bare_config = [str(zenoh_port)] if "zenoh" not in without else [str(_free_port()), "--listen"]
+        helpers.append(bare := subprocess.Popen([sys.executable, "-c", _BARE, *bare_config], cwd=ROOT))
+        if "viewer" not in without:
+            helpers.append(subprocess.Popen([sys.executable, "-c", _VIEWER, f"ws://127.0.0.1:{view_port}"], cwd=ROOT))
         try:
             start = time.monotonic()
             fds_before = fds(graph.pid)
@@ -462,22 +479,25 @@ def round2(minutes: float, fresh_names: bool = False) -> None:
                 samples.append((now, rss_kb(graph.pid)))
                 baseline.append((now, rss_kb(bare.pid)))
                 descriptors.append(fds(graph.pid))
-                outcome = hammer_round(graph.path, connections=50)
-                with graph.connect() as conn:
-                    conn.graph()
-                subprocess.run(
-                    [sys.executable, "-m", "actors", "topic", "echo", "/odom", "--once", "--graph", graph.name],
-                    cwd=ROOT,
-                    env=graph.env,
-                    capture_output=True,
-                    timeout=60,
-                )
+                outcome: Counter[str] = Counter()
+                if "cli" not in without:
+                    outcome = hammer_round(graph.path, connections=50)
+                    with graph.connect() as conn:
+                        conn.graph()
+                    subprocess.run(
+                        [sys.executable, "-m", "actors", "topic", "echo", "/odom", "--once", "--graph", graph.name],
+                        cwd=ROOT,
+                        env=graph.env,
+                        capture_output=True,
+                        timeout=60,
+                    )
                 print(
                     f"{now:7.0f} {samples[-1][1]:9d} {descriptors[-1]:4d} {baseline[-1][1]:9d}  {dict(outcome)}",
                     flush=True,
                 )
                 time.sleep(max(0.0, SAMPLE_EVERY - (time.monotonic() - start - now)))
-            last = [(t, k) for t, k in samples if t >= samples[-1][0] - 20 * 60] or samples
+            window = 20 if minutes >= 23 else max(minutes - 3, 1)
+            last = [(t, k) for t, k in samples if t >= samples[-1][0] - window * 60] or samples
             bare_last = [(t, k) for t, k in baseline if t >= last[0][0]]
             print(f"RSS: {samples[0][1]} KB at start, {samples[-1][1]} KB at the end")
             print(
@@ -493,7 +513,8 @@ def round2(minutes: float, fresh_names: bool = False) -> None:
                 helper.terminate()
                 helper.wait(timeout=30)
             code = graph.stop()
-            print(f"graph exit code {code}, tracebacks in its log: {graph.tracebacks()}, bag {bag.stat().st_size} B")
+            size = f"{bag.stat().st_size} B" if bag.exists() else "none"
+            print(f"graph exit code {code}, tracebacks in its log: {graph.tracebacks()}, bag {size}")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -509,6 +530,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--fresh-names", action="store_true", help="with --round2: new token names every round (upstream keeps each)"
     )
+    parser.add_argument(
+        "--without",
+        nargs="+",
+        choices=WITHOUT,
+        default=[],
+        metavar="PART",
+        help=f"with --round2: leave parts out ({', '.join(WITHOUT)})",
+    )
     args = parser.parse_args(argv)
     if not Path("/proc/self/status").exists():
         print("bench.soak reads /proc: Linux only", file=sys.stderr)
@@ -518,7 +547,7 @@ def main(argv: list[str] | None = None) -> int:
     elif args.stalled:
         stalled()
     elif args.round2:
-        round2(args.minutes, args.fresh_names)
+        round2(args.minutes, args.fresh_names, frozenset(args.without))
     else:
         soak(args.minutes)
     return 0

@@ -33,10 +33,13 @@ Sessions.  One connection is one session.  The publishers, subscriptions and
 clients its requests create belong to a hidden owner ``/_actors_cli_<n>``
 (hidden as ROS hides names starting with ``_``: ``node list`` and ``doctor``
 leave them out, ``topic info`` shows them) and are removed when the connection
-closes.  After a :class:`Subscribe` reply the server streams :class:`Sample`
-frames until the client disconnects.  Samples are encoded as they arrive and
-wait in the connection's bounded outbox, so a slow reader never holds up the
-graph nor makes it hold more than the outbox.
+closes.  ``n`` is the lowest number no open session has: with a transport, the
+names a graph announces come back rather than being new each time, and Zenoh
+keeps state for every name it ever heard of (in this process and in its peers).
+After a :class:`Subscribe` reply the server streams :class:`Sample` frames
+until the client disconnects.  Samples are encoded as they arrive and wait in
+the connection's bounded outbox, so a slow reader never holds up the graph nor
+makes it hold more than the outbox.
 
 The server runs in the runtime's task group; sockets are non-blocking, so it
 never blocks the loop.  With it, on a wall-clock runtime, runs doctor's
@@ -45,6 +48,7 @@ never blocks the loop.  With it, on a wall-clock runtime, runs doctor's
 
 from __future__ import annotations
 
+import itertools
 import os
 import socket
 import stat
@@ -419,6 +423,7 @@ class ControlServer:
         self.path = path
         self.monitor: LagMonitor | None = None
         self.pool = ConnectionPool(limits or ConnectionLimits(), self.serve, _refusal, runtime.logger.warning)
+        self._session_numbers: set[int] = set()  # of the open sessions (see the module docstring)
 
     def snapshot(self) -> GraphSnapshot:
         """The graph now."""
@@ -444,7 +449,9 @@ class ControlServer:
 
     async def serve(self, connection: Connection) -> None:
         """Serve one connection until it closes or sends a bad frame."""
-        session = _Session(self, connection)
+        number = next(n for n in itertools.count(1) if n not in self._session_numbers)
+        self._session_numbers.add(number)
+        session = _Session(self, connection, number)
         try:
             async with anyio.create_task_group() as tg:
                 tg.start_soon(session.run_actor, tg.cancel_scope)
@@ -453,6 +460,7 @@ class ControlServer:
                 tg.cancel_scope.cancel()
         finally:
             session.close()
+            self._session_numbers.discard(number)
 
 
 def _refusal(why: str) -> bytes:
@@ -471,12 +479,12 @@ class _Session:
     made), with no ``destroy_*``, as the session removes its entities itself.
     """
 
-    def __init__(self, server: ControlServer, connection: Connection) -> None:
+    def __init__(self, server: ControlServer, connection: Connection, number: int) -> None:
         rt = server.runtime
         self.server = server
         self.runtime = rt
         self.connection = connection
-        self.fqn = f"/_actors_cli_{connection.number}"
+        self.fqn = f"/_actors_cli_{number}"
         self.loop = rt.loop
         self.actor = Actor(rt.loop)
         self._publishers: dict[str, Publisher] = {}

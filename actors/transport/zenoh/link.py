@@ -1,7 +1,11 @@
 """What the topic and service bridges share: the session, the handoff, names and tokens, warnings.
 
 One :class:`Link` per running transport.  It numbers entities as rmw_zenoh
-does (one counter per session for nodes and endpoints alike), holds the node
+does (one counter per session for nodes and endpoints alike), except that
+the number of a withdrawn entity is given again (the lowest first): a graph
+whose command-line sessions come and go then announces the same token names
+again, where new ones would grow every Zenoh process that hears them (Zenoh
+keeps state per name it ever heard of, upstream).  It holds the node
 tokens (a node's ``NN`` token lives while the node has an endpoint on the
 wire), and turns a local class into what the wire names it by.  Warnings
 about what other processes send go through its :class:`~.peer_warnings.PeerWarnings`;
@@ -12,6 +16,7 @@ from __future__ import annotations
 
 import asyncio
 import functools
+import heapq
 from typing import Any
 
 from actors import codec
@@ -42,10 +47,11 @@ def wire_type(cls: type) -> tuple[str, str] | None:
 class Endpoint:
     """An endpoint on the wire: its token, GID and data key, and the node it belongs to."""
 
-    __slots__ = ("fqn", "token", "gid", "key")
+    __slots__ = ("fqn", "entity", "token", "gid", "key")
 
-    def __init__(self, fqn: str, token: Any, gid: bytes, key: str) -> None:
+    def __init__(self, fqn: str, entity: int, token: Any, gid: bytes, key: str) -> None:
         self.fqn = fqn
+        self.entity = entity
         self.token = token
         self.gid = gid
         self.key = key
@@ -74,12 +80,15 @@ class Link:
         self.logger = logger
         self.loop: asyncio.AbstractEventLoop = hub.loop
         self._next_id = 0
+        self._free_ids: list[int] = []  # a heap of withdrawn entities' ids
         self._nodes: dict[str, tuple[int, Any, int]] = {}  # fqn -> (node id, token, endpoints)
         self._warned: set[tuple[str, str]] = set()  # our own failures: bounded by our endpoints
         self.warnings = PeerWarnings(logger.warning, self.loop.call_later)
 
     def next_id(self) -> int:
-        """The next entity id of this session."""
+        """The next entity id of this session: the lowest withdrawn one, else a new one."""
+        if self._free_ids:
+            return heapq.heappop(self._free_ids)
         entity = self._next_id
         self._next_id += 1
         return entity
@@ -91,13 +100,15 @@ class Link:
             return None
         ros_type, hash_ = wire
         node_id = self._node_up(fqn)
-        key = endpoint_token(self.domain, self.zid, node_id, self.next_id(), kind, fqn, name, ros_type, hash_, qos)
+        entity = self.next_id()
+        key = endpoint_token(self.domain, self.zid, node_id, entity, kind, fqn, name, ros_type, hash_, qos)
         token = self.session.liveliness().declare_token(key)
-        return Endpoint(fqn, token, gid_of(key), data_key(self.domain, name, ros_type, hash_))
+        return Endpoint(fqn, entity, token, gid_of(key), data_key(self.domain, name, ros_type, hash_))
 
     def withdraw(self, endpoint: Endpoint) -> None:
         """Undeclare an endpoint's token (and its node's, with the node's last endpoint)."""
         self.undeclare(endpoint.token)
+        heapq.heappush(self._free_ids, endpoint.entity)
         self._node_down(endpoint.fqn)
 
     def _node_up(self, fqn: str) -> int:
@@ -116,6 +127,7 @@ class Link:
         else:
             del self._nodes[fqn]
             self.undeclare(token)
+            heapq.heappush(self._free_ids, node_id)
 
     def undeclare(self, entity: Any) -> None:
         """Undeclare a Zenoh entity; one that is already gone (a closed session) is fine."""
