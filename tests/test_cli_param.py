@@ -34,6 +34,8 @@ class Tuned(Node):
         self.declare_parameter("laps", 3, laps)
         self.declare_parameter("pid.kp", 1.0)
         self.declare_parameter("scratch", 7, ParameterDescriptor(dynamic_typing=True))
+        self.declare_parameter("gains", [0.5, 1.5])
+        self.declare_parameter("ids", [1, 2])
 
 
 @pytest.fixture
@@ -151,3 +153,15 @@ async def test_a_file_that_is_not_a_parameters_file_is_one_line_and_exit_2(endpo
         missing = Path(tmp_path / "missing.yaml")
         code, _, err = await actors(capsys, "param", "load", "/tuned", str(missing))
         assert code == 2 and err.startswith(f"actors: {missing}")
+
+
+async def test_array_parameters_are_set_and_dumped_as_lists(endpoints, capsys):
+    # The request and the reply carry a ParameterValue, whose array fields hold array.array.
+    async with tuned():
+        for name, value in (("gains", "[1.0, 2.5]"), ("ids", "[3, 4]")):
+            code, out, err = await actors(capsys, "param", "set", "/tuned", name, value)
+            assert (code, out.strip(), err) == (0, "Set parameter successful", "")
+        code, out, err = await actors(capsys, "param", "dump", "/tuned")
+    assert code == 0 and err == ""
+    parameters = yaml.safe_load(out)["/tuned"]["ros__parameters"]
+    assert (parameters["gains"], parameters["ids"]) == ([1.0, 2.5], [3, 4])

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from array import array
 from enum import IntEnum
 from typing import Any
 
@@ -57,7 +58,7 @@ class ParameterType(IntEnum):
             return cls.STRING
         if isinstance(value, (bytes, bytearray)):
             return cls.BYTE_ARRAY
-        if isinstance(value, (list, tuple)):
+        if isinstance(value, (list, tuple, array)):  # a message's array field holds an array.array
             kinds = {type(v) for v in value}
             if kinds <= {bytes}:
                 return cls.BYTE_ARRAY
@@ -82,7 +83,7 @@ class ParameterType(IntEnum):
             or (actual, self) in WIDENED
             or (
                 # An empty list fits every array type.
-                self >= ParameterType.BYTE_ARRAY and isinstance(value, (list, tuple)) and not value
+                self >= ParameterType.BYTE_ARRAY and isinstance(value, (list, tuple, array)) and not value
             )
         )
 
