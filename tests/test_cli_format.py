@@ -6,14 +6,14 @@ import re
 
 import pytest
 
-from actors.cli._format import field, ros_repr, yaml_text
+from actors.cli._format import csv_text, field, ros_repr, yaml_text
 from actors.cli.graph import to_dot
 from actors.errors import ControlError
 from actors.ops.control import GraphSnapshot
 from actors.ros.qos import QoSSnapshot
 from actors.system.introspection import EndpointInfo, TopicInfo
 from interfaces.geometry_msgs.msg import Twist
-from interfaces.std_msgs.msg import String
+from interfaces.std_msgs.msg import Float32MultiArray, String
 
 
 def test_ros_repr_is_rclpys_nested_repr():
@@ -124,3 +124,12 @@ def test_no_arr_and_no_str_print_ros2s_summaries_at_every_depth():
 def test_long_strings_stay_on_one_line_as_ros2_prints_them():
     text = "word " * 40
     assert yaml_text(String(data=text)) == f"data: '{text}'\n"
+
+
+def test_array_fields_print_as_ros2_prints_them():
+    msg = Float32MultiArray(data=[1.0, 2.5])  # held as array('f'), as rclpy holds it
+    assert ros_repr(msg).endswith("data_offset=0), data=[1.0, 2.5])")  # rclpy's repr strips array(...)
+    assert ros_repr(Float32MultiArray()).endswith("data=[])")
+    ranges = field(msg, "data")
+    assert yaml_text(ranges) == "- 1.0\n- 2.5\n"  # topic echo --field data
+    assert csv_text(ranges) == "1.0,2.5"

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+from array import array
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
@@ -20,7 +21,7 @@ def ros_repr(value: Any) -> str:
     if name is not None:
         fields = ", ".join(f"{f}={ros_repr(getattr(value, f))}" for f in value.__struct_fields__)
         return f"{name.replace('/', '.')}({fields})"
-    if isinstance(value, list):
+    if isinstance(value, (list, array)):  # a message's repr shows its array fields as lists
         return "[" + ", ".join(ros_repr(item) for item in value) + "]"
     return repr(value)
 
@@ -140,7 +141,7 @@ def _plain(value: Any) -> Any:
 
     if hasattr(type(value), "__ros_type__"):
         return codec.to_builtins(value)
-    if isinstance(value, (list, tuple)):
+    if isinstance(value, (list, tuple, array)):
         return [_plain(item) for item in value]
     if isinstance(value, dict):
         return {key: _plain(item) for key, item in value.items()}
