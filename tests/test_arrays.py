@@ -92,6 +92,9 @@ def test_held_converts_only_what_fits_exactly():
     assert held([True, 2], "i") == array("i", [1, 2])  # rclpy takes a bool for an int
     for value, code in ([1e39], "f"), ([1.0], "i"), (b"\x00\x00\x80?", "f"), (np.array([True]), "d"), ([256], "B"):
         assert held(value, code) is value
+    for code in "fi":  # an iterator is read once, whole; what is no sequence stays for publish() to name
+        assert held((x for x in [1, 2]), code) == array(code, [1, 2]) and held(range(2), code) == array(code, [0, 1])
+        assert held(None, code) is None and held(5.0, code) == 5.0
 
 
 def test_a_field_prints_as_rclpys_does_and_compares_as_its_arrays_do():

@@ -60,6 +60,11 @@ def held(value: Any, code: str) -> Any:
         return value
     if isinstance(value, (str, bytes, bytearray, memoryview)):
         return value  # array() would read the bytes as machine numbers
+    if not isinstance(value, (list, tuple, array)) and not hasattr(value, "dtype"):
+        try:
+            value = list(value)  # an iterator is read once: by the checks below, then lost to array()
+        except TypeError:
+            return value  # not a sequence at all: publish() names it
     if code in "fd" and (getattr(getattr(value, "dtype", None), "kind", "") == "b" or bool in map(type, value)):
         return value  # array('f') takes True as 1.0 (a numpy bool too); publish() refuses a bool for a float
     try:
