@@ -9,9 +9,9 @@ call of each (``encode``, ``decode``) and the bytes rclpy serialised
 (``cdr``, hex), for the parent to check they hold the same values.
 
 Why a module of its own: with msgspec imported first (any actors module),
-rclpy's ``deserialize_message`` of a 0.9 MB Image took 1–3 ms instead of
-80 µs in the same process (the allocator's state, not rclpy's work), so
-rclpy is measured as a program that uses only rclpy runs.
+rclpy's ``deserialize_message`` of a large Image was many times slower in
+the same process (the allocator's state, not rclpy's work), so rclpy is
+measured as a program that uses only rclpy runs.
 """
 
 from __future__ import annotations

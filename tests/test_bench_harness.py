@@ -34,7 +34,7 @@ def test_side_by_side_without_warm_up_measures_from_the_first_call() -> None:
 
 
 def test_the_rclpy_side_of_the_cdr_bench_imports_neither_actors_nor_msgspec() -> None:
-    # With msgspec imported, rclpy decoded a 0.9 MB Image 10-25x slower in the same process.
+    # With msgspec imported, rclpy's decode of a large Image was many times slower in the same process.
     code = "import sys, bench.cdr_rclpy; print(sorted({m.split('.')[0] for m in sys.modules} & {'actors', 'msgspec'}))"
     found = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, check=True)
     assert found.stdout.strip() == "[]"

@@ -149,10 +149,9 @@ def test_a_zenoh_thread_keeps_its_python_thread_state_from_one_callback_to_the_n
     try:
         sub = receiver.declare_subscriber("hops", zenoh.handlers.Callback(callback, indirect=False))
         pub = sender.declare_publisher("hops")
-        for _ in range(200):  # until the two sessions found each other
-            if pub.matching_status.matching:
-                break
-            arrived.wait(0.05)
+        found = threading.Event()  # the two sessions found each other
+        pub.declare_matching_listener(lambda status: status.matching and found.set())  # before the look
+        assert pub.matching_status.matching or found.wait(10)
         for _ in range(20):
             pub.put(b"x")
         assert arrived.wait(10)

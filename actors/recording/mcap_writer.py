@@ -105,8 +105,8 @@ class McapWriter:
         self._channels: dict[int, Any] = {}
         self._metadata: list[tuple[str, dict[str, str]]] = []
         # The summary's chunk indexes, one per chunk written, kept as the bytes they end up as: a
-        # recording flushed every second adds 60 a minute, and as mcap's ChunkIndex objects they
-        # cost ~1.4 KB each (a dict of offsets per channel) where the record is ~190 bytes.
+        # long recording flushed every second adds one a second for as long as it runs, and
+        # mcap's ChunkIndex objects (a dict of offsets per channel) cost several times their record.
         self._chunk_index_records = bytearray()
         self._chunk_count = 0
         self._counts: dict[int, int] = {}  # messages per channel, in the file
