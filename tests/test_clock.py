@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import asyncio
+import concurrent.futures
 import os
 import signal
 import socket
@@ -60,6 +61,20 @@ async def test_no_jump_while_executor_work_runs():
     far_timer = asyncio.ensure_future(asyncio.sleep(100))
     await loop.run_in_executor(None, threading.Event().wait, 0.05)
     assert loop.time() < 100, "virtual time jumped while a thread was working"
+    far_timer.cancel()
+
+
+@pytest.mark.virtual_time
+async def test_no_jump_while_the_default_executor_is_joined():
+    # asyncio.Runner joins the default executor at its end, with a timeout (Python >= 3.12) that
+    # a jump would reach at once, leaving the threads behind with a warning.
+    loop = asyncio.get_running_loop()
+    executor = concurrent.futures.ThreadPoolExecutor(max_workers=1)
+    loop.set_default_executor(executor)
+    executor.submit(threading.Event().wait, 0.05)
+    far_timer = asyncio.ensure_future(asyncio.sleep(100))
+    await loop.shutdown_default_executor()
+    assert loop.time() < 100, "virtual time jumped while the executor's threads were joined"
     far_timer.cancel()
 
 

@@ -389,6 +389,15 @@ class VirtualTimeLoop(_SelectorLoop):
     def _executor_job_done(self, _future: asyncio.Future[Any]) -> None:
         self._threads.jobs -= 1
 
+    async def shutdown_default_executor(self, *timeout: float | None) -> None:
+        # Joining the executor's threads is thread work: a jump meanwhile would reach the join's
+        # timeout (asyncio.Runner gives one from Python 3.12) before the threads end.
+        self._threads.jobs += 1
+        try:
+            await super().shutdown_default_executor(*timeout)
+        finally:
+            self._threads.jobs -= 1
+
     def threads_busy(self) -> bool:
         """Whether executor jobs or anyio worker-thread calls are still running."""
         threads = self._threads
