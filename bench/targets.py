@@ -1,4 +1,4 @@
-"""The performance targets of issues 7, 16, 29 and 31, checked against the results of one run."""
+"""The performance targets of issues 7, 13, 16, 29, 31 and 33, checked against the results of one run."""
 
 from __future__ import annotations
 
@@ -103,6 +103,8 @@ SEQ, CONC = "c. service sequential", "c. service 100 callers"
 TIMEOUT = "actors, timeout=5"
 SCALE = "10,000 nodes"
 ZENOH = "k. zenoh (2 processes)"
+RECORDING = "l. recording: one-way"
+WRITING = "l. recording: writing"
 TARGETS = (
     # Issue 16: against our own limits (the bare asyncio floor, the physics core, a direct call).
     Target(
@@ -179,6 +181,32 @@ TARGETS = (
         "cross-process round trip ≤ rclpy's (Fast DDS)",
         _ratio(ZENOH, "round trip: actors (Zenoh)", ZENOH, "round trip: rclpy (Fast DDS)", 1),
     ),
+    # Issue 33's: across processes against rclpy and the bare-zenoh floor, and recording.
+    Target(
+        "k",
+        "cross-process latency p50 ≤ rclpy's (Fast DDS)",
+        _ratio(ZENOH, "latency p50: actors (Zenoh)", ZENOH, "latency p50: rclpy (Fast DDS)", 1),
+    ),
+    Target(
+        "k",
+        "cross-process one-way, round trip and latency p50 ≥ 0.8× the bare-zenoh floor",
+        _all(
+            *(
+                _ratio(ZENOH, f"{measure}: actors (Zenoh)", ZENOH, f"{measure}: bare zenoh (floor)", 0.8)
+                for measure in ("one-way", "round trip", "latency p50")
+            )
+        ),
+    ),
+    Target(
+        "l",
+        "one-way with a recorder on ≥ 0.5× off",
+        _ratio(RECORDING, "recording on", RECORDING, "recording off", 0.5),
+    ),
+    Target(
+        "l",
+        "LaserScan writing ≥ 0.5× the mcap library alone",
+        _ratio(WRITING, "LaserScan bag", WRITING, "mcap library Writer", 0.5),
+    ),
     # Issue 7's, kept.
     Target("a", "one-way ≥ 1.5× the bare queue", _ratio("a. one-way", "actors", "a. one-way", "asyncio.Queue", 1.5)),
     Target(
@@ -225,11 +253,12 @@ TARGETS = (
         "CDR encode and decode ≥ rclpy's serialize/deserialize (Twist, LaserScan, Odometry, Image, PointCloud2)",
         _cdr("rclpy", 1),
     ),
+    Target("i", "CDR encode and decode ≥ rosbags' serializer (the same five; issue 33)", _cdr("rosbags", 1)),
     Target("i", "CDR encode and decode ≥ 2× rosbags' serializer (the same five)", _cdr("rosbags", 2)),
 )
 
 
-def check(results: Sequence[Result], scenarios: str = "abcdefghijk") -> str:
+def check(results: Sequence[Result], scenarios: str = "abcdefghijklmn") -> str:
     """A Markdown table of the targets of ``scenarios`` (letters): what was measured, whether it is met."""
     by_case = {(r.scenario, r.case): r for r in results}
     lines = ["| scenario | target | measured | met |", "|---|---|---|---|"]

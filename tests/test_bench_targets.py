@@ -38,3 +38,28 @@ def test_a_round_trip_dearer_than_its_limit_is_not_met() -> None:
 
 def test_a_target_whose_rows_are_missing_is_not_measured() -> None:
     assert _row(check([], "g"), "real-time factor").endswith("| not measured | — |")
+
+
+def test_the_table_of_a_full_run_has_every_scenarios_targets() -> None:
+    scenarios = {line.split(" | ")[0].lstrip("| ") for line in check([]).splitlines()[2:]}
+    assert scenarios == set("abcdefghijklmn")
+
+
+def test_recording_and_cross_process_targets_read_their_rows() -> None:
+    zenoh, recording = "k. zenoh (2 processes)", "l. recording: one-way"
+    results = [
+        Result(zenoh, "latency p50: actors (Zenoh)", "µs", [300.0], higher_better=False),
+        Result(zenoh, "latency p50: rclpy (Fast DDS)", "µs", [200.0], higher_better=False),
+        Result(zenoh, "latency p50: bare zenoh (floor)", "µs", [150.0], higher_better=False),
+        Result(zenoh, "round trip: actors (Zenoh)", "µs/call", [250.0], higher_better=False),
+        Result(zenoh, "round trip: bare zenoh (floor)", "µs/call", [200.0], higher_better=False),
+        Result(zenoh, "one-way: actors (Zenoh)", "deliveries/s", [90.0]),
+        Result(zenoh, "one-way: bare zenoh (floor)", "deliveries/s", [100.0]),
+        Result(recording, "recording on", "deliveries/s", [60.0]),
+        Result(recording, "recording off", "deliveries/s", [100.0]),
+    ]
+    table = check(results, "kl")
+    assert _row(table, "latency p50 ≤ rclpy's").endswith("| 0.67× | **not met** |")
+    assert _row(table, "≥ 0.8× the bare-zenoh floor").endswith("| 0.90×, 0.80×, 0.50× | **not met** |")
+    assert _row(table, "recorder on ≥ 0.5× off").endswith("| 0.60× | met |")
+    assert _row(table, "LaserScan writing").endswith("| not measured | — |")
