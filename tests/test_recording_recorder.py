@@ -404,3 +404,64 @@ def test_the_summary_kept_in_memory_costs_a_few_hundred_bytes_per_chunk(tmp_path
     with path.open("rb") as stream:
         messages = list(mcap_reader.make_reader(stream).iter_messages(starting_at=999))
     assert [(channel.id, message.log_time) for _, channel, message in messages] == [(c, 999) for c in channels]
+
+
+def test_messages_given_as_a_generator_make_the_bytes_that_one_at_a_time_make(tmp_path):
+    # The recorder hands its batch as a generator that encodes each message as it is taken.
+    def bag(name: str, batches: bool) -> bytes:
+        path = tmp_path / name
+        writer = McapWriter(path.open("wb", buffering=0), chunk_size=700)
+        schema = writer.add_schema("std_msgs/msg/String", "ros2msg", b"string data")
+        channels = [writer.add_channel(f"/t{i}", schema, "cdr", {}) for i in range(3)]
+        messages = [(channels[i % 3], i, i + 7, codec.encode_cdr(String(data="m" * (i % 40)))) for i in range(500)]
+        if batches:
+            for start in range(0, 500, 37):  # batches that end mid-chunk and span chunks
+                writer.add_messages(m for m in messages[start : start + 37])
+        else:
+            for message in messages:
+                writer.add_message(*message)
+        writer.close()
+        return path.read_bytes()
+
+    one_at_a_time = bag("single.mcap", batches=False)
+    assert bag("batched.mcap", batches=True) == one_at_a_time
+    with open(tmp_path / "batched.mcap", "rb") as f:
+        summary = mcap_reader.make_reader(f).get_summary()
+    assert summary is not None and summary.statistics is not None
+    assert summary.statistics.message_count == 500 and summary.statistics.chunk_count > 10
+
+
+def test_a_generator_that_fills_the_disk_counts_what_it_still_held_as_lost():
+    writer = McapWriter(_FillingDisk(room=3_000), chunk_size=1_000, compression="")
+    channel = writer.add_channel("/t", writer.add_schema("std_msgs/msg/String", "ros2msg", b"string data"), "cdr", {})
+    writer.add_messages((channel, i, i, bytes(100)) for i in range(50))
+    assert writer.error is not None and 0 < writer.message_count < 50
+    assert writer.message_count + writer.lost == 50
+
+
+class Careless(Node):
+    """Publishes, with every field trusted, one message that CDR cannot carry between two that it can."""
+
+    def __init__(self) -> None:
+        super().__init__("careless")
+        self.pub = self.create_publisher(String, "careless", 10)
+        self.pub.trust()
+        self.create_timer(1.0, self.fire)
+
+    def fire(self) -> None:
+        for data in ("before", 5, "after"):
+            self.pub.publish(String(data=data))  # type: ignore[arg-type]  # the 5 is the point
+
+
+@pytest.mark.virtual_time
+async def test_a_message_cdr_cannot_carry_is_counted_and_named_and_the_rest_recorded(tmp_path, caplog):
+    path = tmp_path / "careless.mcap"
+    recorder = Recorder(path, topics=["/careless"])
+    async with Runtime(attach=[recorder]) as rt:
+        rt.spawn(Careless)
+        await anyio.sleep(1.5)
+        info = rt.graph.topic("/careless")
+    assert [e.dropped for e in info.subscriptions if e.node == "/_actors_recorder"] == [1]
+    assert _recorded(path, "/careless") == ["before", "after"]
+    warnings = [r.getMessage() for r in caplog.records if "cannot be written" in r.getMessage()]
+    assert len(warnings) == 1 and "/careless" in warnings[0] and "data" in warnings[0], warnings

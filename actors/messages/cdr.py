@@ -49,7 +49,7 @@ from actors.messages._fields import MessageLayout, layout
 from actors.messages.arrays import typecode
 from actors.messages.idl import FLOATS, INTEGER_RANGES, OCTETS, STRINGS, FieldType
 
-__all__ = ["HEADER", "encode", "decode", "min_size"]
+__all__ = ["HEADER", "Buffer", "encode", "encoder", "decode", "min_size"]
 
 T = TypeVar("T")
 
@@ -90,15 +90,28 @@ def encode(msg: Any, *, padding: int = 0) -> bytes:
     ``int8`` of 300, a ``float64[9]`` of 8 items, a bounded sequence too long).
     """
     cls = type(msg)
-    encoder = _encoders.get((cls, padding))
-    if encoder is None:
-        encoder = _encoders[cls, padding] = _compile_encoder(layout(cls), padding, top=True)
-    buf = _Buffer(HEADER)
+    fill = _encoders.get((cls, padding)) or encoder(cls, padding)
+    buf = Buffer(HEADER)
     try:
-        encoder(buf, msg)
+        fill(buf, msg)
     except Exception as exc:  # anything a bad value makes struct, array or str raise
         raise _encode_error(layout(cls), msg, exc) from None
     return buf.result()
+
+
+def encoder(cls: type, padding: int = 0) -> Callable[[bytearray, Any], None]:
+    """``cls``'s compiled encoder: ``fill(buf, msg)`` appends ``msg``'s CDR to ``buf``, a ``Buffer(HEADER)``.
+
+    For a writer of many messages (a recorder's batch), which saves :func:`encode`'s
+    per-call work and keeps the buffer as it is (``buf.result()`` only when
+    ``buf.chunks``).  A bad value raises whatever struct, array or str raised:
+    :func:`encode` of the same message names the field.  TypeError for a class
+    that is not a generated message.
+    """
+    fill = _encoders.get((cls, padding))
+    if fill is None:
+        fill = _encoders[cls, padding] = _compile_encoder(layout(cls), padding, top=True)
+    return fill
 
 
 def decode(data: bytes | bytearray | memoryview, cls: type[T]) -> T:
@@ -142,7 +155,7 @@ def min_size(lay: MessageLayout) -> int:
     return total
 
 
-class _Buffer(bytearray):
+class Buffer(bytearray):
     """The bytes being encoded; large arrays are kept aside as chunks instead of copied in.
 
     Growing a bytearray by a megabyte and copying it into ``bytes`` costs
@@ -151,7 +164,7 @@ class _Buffer(bytearray):
     that its length stays congruent to the true offset modulo 8, which is all
     alignment reads from it.
 
-    Made as a plain bytearray is (``_Buffer(HEADER)``, no ``__init__`` of its
+    Made as a plain bytearray is (``Buffer(HEADER)``, no ``__init__`` of its
     own): until a first spill, which most messages never make, ``chunks`` and
     ``skip`` are the class's.  A Python ``__init__`` cost a third of encoding
     a small message.

@@ -9,7 +9,7 @@ end rosbag2's ``rosbag2`` metadata record and, for a bag directory,
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -73,8 +73,8 @@ class BagWriter:
         """Add one serialized message (log time in ns, as publish time too)."""
         self.mcap.add_message(channel, log_time, log_time, data)
 
-    def write_many(self, messages: Sequence[tuple[int, int, int, bytes]]) -> None:
-        """Add serialized messages in order: ``(channel, log time, publish time, data)``, times in ns."""
+    def write_many(self, messages: Iterable[tuple[int, int, int, bytes | bytearray]]) -> None:
+        """Add serialized messages in order (a generator will do): ``(channel, log time, publish time, data)``."""
         self.mcap.add_messages(messages)
 
     @property

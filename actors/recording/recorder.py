@@ -27,8 +27,9 @@ from __future__ import annotations
 import asyncio
 import re
 import threading
+import time
 from collections import deque
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -36,6 +37,7 @@ import anyio
 import anyio.abc
 
 from actors import codec
+from actors.messages.cdr import HEADER, Buffer, encoder
 from actors.recording.bag_writer import BagWriter
 from actors.recording.tap import Tap, TapSet
 from actors.ros.names import expand, is_hidden_name
@@ -105,6 +107,7 @@ class Recorder:
         self._waiter: asyncio.Future[None] | None = None
         self._now_ns: Any = None  # the runtime clock, once running
         self._loop_time: Any = None  # the loop's clock: a message's stamp, made ROS time when written
+        self._targets: dict[Tap, tuple[int, Any]] = {}  # a tap's channel and its type's CDR encoder
         self._ns_at: Any = None
         self.dropped = 0
         self._dropped_reported = 0
@@ -144,7 +147,10 @@ class Recorder:
     ) -> None:
         self.open()
         self._now_ns = runtime.clock.now_ns
-        self._loop_time, self._ns_at = runtime.loop.time, runtime.clock.ns_at
+        loop = runtime.loop
+        # asyncio's own loop reads time.monotonic: read it here without the method's frame
+        monotonic = type(loop).time is asyncio.BaseEventLoop.time
+        self._loop_time, self._ns_at = time.monotonic if monotonic else loop.time, runtime.clock.ns_at
         self._runtime = runtime
         try:
             self._taps.start(runtime)
@@ -274,22 +280,30 @@ class Recorder:
         """Encode and write one batch; returns the failures."""
         writer = self._writer
         assert writer is not None
-        encode = codec.encode_cdr
-        failures = []
-        messages = []
-        for (tap, _, msg), stamp in zip(batch, self._ns_at([stamp for _, stamp, _ in batch])):
-            channel = tap.channel
-            if channel is None:
-                channel = self._register(tap)
-            try:
-                data = encode(msg)
-            except Exception as exc:  # a message its type cannot carry: counted, never fatal
-                failures.append((tap, exc))
-                continue
-            messages.append((channel, stamp, stamp, data))
-        writer.write_many(messages)
+        failures: list[tuple[Tap, Exception]] = []
+        writer.write_many(self._encoded(batch, failures))
         writer.flush_older_than(self._now_ns() - round(self.flush_interval * 1e9))
         return failures
+
+    def _encoded(
+        self, batch: list[tuple[Tap, float, Any]], failures: list[tuple[Tap, Exception]]
+    ) -> Iterator[tuple[int, int, int, bytes | bytearray]]:
+        """The batch's messages as the writer takes them, each encoded as it is taken; what
+        cannot be encoded goes into ``failures`` instead."""
+        targets = self._targets
+        for (tap, _, msg), stamp in zip(batch, self._ns_at([stamp for _, stamp, _ in batch])):
+            target = targets.get(tap)
+            if target is None:
+                channel = tap.channel if tap.channel is not None else self._register(tap)
+                target = targets[tap] = (channel, encoder(tap.msg_type))
+            channel, fill = target
+            buf = Buffer(HEADER)
+            try:
+                fill(buf, msg)
+            except Exception as exc:  # a message its type cannot carry: counted, never fatal
+                failures.append((tap, _named(msg, exc)))
+                continue
+            yield channel, stamp, stamp, buf.result() if buf.chunks else buf
 
     def _register(self, tap: Tap) -> int:
         assert self._writer is not None
@@ -297,3 +311,12 @@ class Recorder:
             tap.topic_name, tap.ros_type, definition=tap.definition, type_hash=tap.type_hash, offers=tap.offers
         )
         return tap.channel
+
+
+def _named(msg: Any, exc: Exception) -> Exception:
+    """The error :func:`codec.encode_cdr` gives for ``msg`` (naming the field), else ``exc``."""
+    try:
+        codec.encode_cdr(msg)
+    except Exception as named:
+        return named
+    return exc
