@@ -144,43 +144,39 @@ async def test_listeners_hear_servers_and_clients_come_and_go():
     ]
 
 
-async def test_an_outlet_carries_only_its_publishers_messages_in_order():
+async def test_an_outlet_sends_only_its_publishers_messages_in_order_inside_publish():
     sent: list[tuple[str, str]] = []
     async with Runtime() as rt:
         one = rt.spawn(Talker, name="one")
         two = rt.spawn(Talker, name="two")
-        hub = Hub("/_transport", rt.loop, rt.logger)
+        hub = Hub("/_transport", rt.loop, rt.logger)  # its actor never runs: the outlet does not need it
         outlet = Outlet(hub, one.pub, lambda pub, msg: sent.append((pub.node.fqn, msg.data)))
         outlet.attach()
-        async with anyio.create_task_group() as tg:
-            tg.start_soon(hub.actor.run)
-            for i in range(3):
-                one.pub.publish(String(data=f"one {i}"))
-                two.pub.publish(String(data=f"two {i}"))
-            await anyio.sleep(0.1)
-            outlet.detach()
-            one.pub.publish(String(data="after detach"))
-            await anyio.sleep(0.1)
-            hub.actor.stop()
+        for i in range(3):
+            one.pub.publish(String(data=f"one {i}"))
+            assert sent[-1] == ("/one", f"one {i}")  # sent before publish() returned
+            two.pub.publish(String(data=f"two {i}"))
+        outlet.detach()
+        one.pub.publish(String(data="after detach"))
+        await anyio.sleep(0.1)
     assert sent == [("/one", "one 0"), ("/one", "one 1"), ("/one", "one 2")]
     assert rt.graph.topic("/chatter") is None  # nothing left behind
 
 
-async def test_an_outlet_keeps_its_publishers_depth_and_counts_what_it_drops():
+async def test_an_outlet_sends_every_message_whatever_the_depth_beside_a_local_subscription():
     sent: list[str] = []
     async with Runtime() as rt:
         talker = rt.spawn(Talker)
+        listener = rt.spawn(Listener)
         hub = Hub("/_transport", rt.loop, rt.logger)
         outlet = Outlet(hub, talker.pub, lambda pub, msg: sent.append(msg.data))
         outlet.attach()
-        for i in range(15):  # depth 10, and the hub's actor does not run yet
+        for i in range(15):  # depth 10, all in one turn: nothing waits in the outlet to be dropped
             talker.pub.publish(String(data=str(i)))
-        async with anyio.create_task_group() as tg:
-            tg.start_soon(hub.actor.run)
-            await anyio.sleep(0.1)
-            hub.actor.stop()
-    assert sent == [str(i) for i in range(5, 15)]
-    assert outlet.dropped == 5
+        assert sent == [str(i) for i in range(15)] and outlet.queued == 0 and outlet.dropped == 0
+        await anyio.sleep(0.1)
+        # The local subscription is fed as before: its depth keeps the newest ten.
+        assert listener.heard == [str(i) for i in range(5, 15)]
 
 
 async def test_an_inlet_feeds_every_local_subscription_and_is_not_shown():

@@ -1,4 +1,4 @@
-"""The Zenoh path's hops: queries answered as they settle, an answered call's end unheard, thread states kept."""
+"""The Zenoh path's hops: puts inside publish(), rounds run in the drain, queries answered as they settle, ..."""
 
 from __future__ import annotations
 
@@ -10,11 +10,15 @@ from typing import Any
 import pytest
 from zenoh_procs import free_port, raw_config
 
-from actors import codec
+from actors import Node, Runtime, codec
+from actors.transport import Hub, Inlet, Outlet
 from actors.transport.zenoh.attachment import unpack
-from actors.transport.zenoh.handoff import keep_thread_state
+from actors.transport.zenoh.handoff import Handoff, keep_thread_state
+from actors.transport.zenoh.link import Endpoint
 from actors.transport.zenoh.services import ServiceBridge, _Answer
+from actors.transport.zenoh.topics import TopicBridge, _Out
 from interfaces.example_interfaces.srv import AddTwoInts
+from interfaces.std_msgs.msg import Int64
 
 zenoh = pytest.importorskip("zenoh", reason="the Zenoh transport's tests need eclipse-zenoh (the test extra has it)")
 
@@ -80,6 +84,55 @@ async def test_a_response_cdr_cannot_carry_is_an_error_reply_and_logged():
     [(kind, _, text)] = query.answers
     assert kind == "error" and "cannot encode the response" in text
     assert len(logger.errors) == 1 and "0/add_two_ints" in logger.errors[0]
+
+
+class Publisher:
+    """A zenoh publisher, as far as a put goes: what was put, in order."""
+
+    def __init__(self) -> None:
+        self.puts: list[tuple[bytes, bytes]] = []
+
+    def put(self, payload: bytes, *, attachment: bytes) -> None:
+        self.puts.append((payload, attachment))
+
+
+class Heard(Node):
+    def __init__(self) -> None:
+        super().__init__("heard", start_parameter_services=False)
+        self.heard: list[int] = []
+        self.create_subscription(Int64, "ping", lambda msg: self.heard.append(msg.data), 10)
+
+
+async def test_a_publish_puts_on_the_wire_before_it_returns_in_order_with_sequence_numbers():
+    async with Runtime() as rt:
+        node = rt.spawn(Node, "talker", start_parameter_services=False)
+        pub = node.create_publisher(Int64, "pong", 10)
+        link = SimpleNamespace(now_ns=lambda: 42)
+        bridge = TopicBridge(link, rt.topics)  # type: ignore[arg-type]
+        zpub = Publisher()
+        outlet = Outlet(Hub("/_zenoh", rt.loop, rt.logger), pub, bridge._send)
+        bridge._outs[pub] = _Out(Endpoint("/talker", 1, None, GID, "0/pong"), zpub, outlet)
+        outlet.attach()
+        for i in range(3):
+            pub.publish(Int64(data=i))
+            assert len(zpub.puts) == i + 1  # no loop round between publish() and the wire
+        sent = [(codec.decode_cdr(payload, Int64).data, unpack(attachment)) for payload, attachment in zpub.puts]
+        assert sent == [(0, (1, 42, GID)), (1, (2, 42, GID)), (2, (3, 42, GID))]
+
+
+async def test_a_drain_runs_the_rounds_its_items_woke_before_the_loops_next_callback():
+    loop = asyncio.get_running_loop()
+    async with Runtime() as rt:
+        node = rt.spawn(Heard)
+        inlet = Inlet(Hub("/_zenoh", rt.loop, rt.logger), "/ping", Int64)
+        rt.topics.add_publisher(inlet)
+        handoff = Handoff(loop, rt.scheduler, lambda exc: None)
+        for i in range(2):
+            handoff.put(inlet.publish, Int64(data=i))  # as zenoh's thread hands samples over
+        seen = loop.create_future()
+        # Queued right behind the drain: what it sees, the drain did itself, rounds included.
+        loop.call_soon(lambda: seen.set_result(list(node.heard)))
+        assert await seen == [0, 1]
 
 
 class Session:

@@ -47,7 +47,7 @@ from typing import TYPE_CHECKING, Any, Protocol
 
 from actors.core.loops import loop_clock
 
-__all__ = ["Actor", "Scheduler", "Entity", "Owner", "CallbackFailed", "Mailbox", "OneShot"]
+__all__ = ["Actor", "Scheduler", "Entity", "Owner", "CallbackFailed", "Mailbox", "OneShot", "AT_ONCE"]
 
 
 class Entity(Protocol):
@@ -320,6 +320,22 @@ class Actor:
         finally:
             self._waiter = None
             self.current = None
+
+
+class _AtOnce:
+    """Stands in for a mailbox's actor: runs it at once, where it is woken (inside ``publish()``).
+
+    For a mailbox whose callback may run anywhere on the loop, never ``async``
+    and never long: an action client's feedback router, a transport's outlet.
+    """
+
+    __slots__ = ()
+
+    def schedule(self, entity: Entity) -> None:
+        entity._run()
+
+
+AT_ONCE = _AtOnce()
 
 
 class Mailbox:

@@ -55,7 +55,7 @@ from typing import Any, Protocol
 
 import anyio
 
-from actors.core._actor import Entity, OneShot, Owner
+from actors.core._actor import AT_ONCE, OneShot, Owner
 from actors.errors import ActionError
 from actors.ros.qos import DurabilityPolicy, QoSProfile
 from actors.ros.time import Clock
@@ -627,22 +627,6 @@ class ClientGoalHandle:
         return await self._client.cancel_goals(goal_id=self.goal_id, timeout=timeout)
 
 
-class _Router:
-    """Stands in for the feedback subscription's actor: runs it at once, where the message is published.
-
-    Its callback only hands each message to its goal, so it may run anywhere;
-    user callbacks are then scheduled on the node's own actor.
-    """
-
-    __slots__ = ()
-
-    def schedule(self, subscription: Entity) -> None:
-        subscription._run()
-
-
-_ROUTER = _Router()
-
-
 class ActionClient:
     """A client of one action: create with ``Node.create_action_client``.
 
@@ -663,7 +647,7 @@ class ActionClient:
         self._cancel = node.create_client(impl.CancelGoalService, names["cancel_goal"])
         self._results = node.create_client(impl.GetResultService, names["get_result"])
         feedback = node.create_subscription(impl.FeedbackMessage, names["feedback"], self._on_feedback, 10)
-        feedback._actor = _ROUTER
+        feedback._actor = AT_ONCE  # its callback only routes: run where the feedback is published
         self._subscriptions = [
             feedback,
             node.create_subscription(impl.GoalStatusMessage, names["status"], self._on_status, STATUS_QOS),
@@ -754,7 +738,7 @@ class ActionClient:
         return await self._cancel.call(self.action_type.Impl.CancelGoalService.Request(goal_info=info), timeout=timeout)
 
     def _on_feedback(self, message: Any) -> None:
-        # Runs where the feedback is published (see _Router): routes, never raises.
+        # Runs where the feedback is published (see AT_ONCE): routes, never raises.
         handle = self.goals.get(_key(message.goal_id))
         if handle is None:
             return

@@ -9,8 +9,10 @@ three kinds of endpoints of its own, all owned by one hidden :class:`Hub`:
 - an :class:`Outlet` is subscription-like: the transport hangs one on a local
   publisher while a process elsewhere subscribes to its topic.
   ``publish()`` hands it the snapshot as it does every subscription (no new
-  branch on the hot path), and the hub's actor passes each queued message to
-  the transport, which serialises it once for all remote subscribers.  A
+  branch on the hot path), and the outlet passes it to the transport there
+  and then, inside ``publish()`` (its actor is :data:`~actors.core._actor.AT_ONCE`):
+  the transport serialises it once for all remote subscribers and sends it,
+  as rmw_zenoh's publish does, with no loop round in between.  A
   publisher nobody elsewhere listens to has no outlet and costs nothing;
 - an :class:`Inlet` is publisher-like: messages from other processes enter a
   topic through it and reach the local subscriptions as a local publisher's
@@ -36,7 +38,7 @@ from typing import Any, Protocol, runtime_checkable
 
 import msgspec
 
-from actors.core._actor import Actor
+from actors.core._actor import AT_ONCE, Actor
 from actors.errors import ServiceError
 from actors.ros.log import NodeLogger
 from actors.ros.qos import DurabilityPolicy, QoSSnapshot, ReliabilityPolicy
@@ -97,11 +99,11 @@ _OFFERS_ALL = QoSSnapshot(depth=1, reliability=ReliabilityPolicy.RELIABLE, durab
 
 
 class Outlet(Subscription):
-    """Carries one local publisher's messages to other processes: ``send(publisher, msg)`` each.
+    """Carries one local publisher's messages to other processes: ``send(publisher, msg)`` each, in ``publish()``.
 
-    Its queue is bounded as the publisher's history is (KEEP_LAST depth, or
-    unbounded for KEEP_ALL), so a transport that falls behind drops the oldest
-    messages and counts them, as a subscription does.
+    ``send`` runs where the message is published, in publish order, and must
+    not raise: what the wire cannot take is the transport's to drop or to
+    wait for (Zenoh's congestion control), as in rmw_zenoh.
     """
 
     __slots__ = ("publisher",)
@@ -117,6 +119,9 @@ class Outlet(Subscription):
         )
         self.publisher = publisher
         self._queue = deque()  # fed by attach() below, not through the topic table's matching
+        # Sent at once: a round of the hub's actor cost each message a loop round (and the
+        # latency across processes a share of its hops).
+        self._actor = AT_ONCE
 
     def attach(self) -> None:
         """Start receiving what the publisher publishes (only its messages, not its topic's)."""

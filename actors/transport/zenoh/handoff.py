@@ -6,7 +6,10 @@ appends ``(function, argument)`` to a :class:`Handoff`, and the first item of
 a batch schedules one drain on the loop (``call_soon_threadsafe``, one write
 to the loop's wake-up pipe).  Items that arrive while that drain is pending
 ride along with it: a burst of samples costs one thread hop, not one each.
-The drain runs every item in arrival order, on the loop, where the graph lives.
+The drain runs every item in arrival order, on the loop, where the graph lives,
+and then the rounds of the actors those items woke (a subscription fed by a
+sample, a server given a query), in the runtime's :class:`Scheduler` context:
+not one loop iteration later, which every hop across processes paid.
 
 Zenoh's own threads are not Python's: a callback run there (``indirect=False``)
 made a Python thread state and deleted it again on return, most of that
@@ -23,6 +26,8 @@ import threading
 from collections import deque
 from collections.abc import Callable
 from typing import Any
+
+from actors.core._actor import Scheduler
 
 __all__ = ["Handoff", "keep_thread_state"]
 
@@ -42,12 +47,15 @@ def keep_thread_state() -> None:
 
 
 class Handoff:
-    """A queue from any thread to one event loop, drained in batches on the loop."""
+    """A queue from any thread to one event loop, drained in batches on the loop, with the rounds it wakes."""
 
-    __slots__ = ("_loop", "_items", "_lock", "_pending", "_closed", "_on_error")
+    __slots__ = ("_loop", "_scheduler", "_items", "_lock", "_pending", "_closed", "_on_error")
 
-    def __init__(self, loop: asyncio.AbstractEventLoop, on_error: Callable[[BaseException], object]) -> None:
+    def __init__(
+        self, loop: asyncio.AbstractEventLoop, scheduler: Scheduler, on_error: Callable[[BaseException], object]
+    ) -> None:
         self._loop = loop
+        self._scheduler = scheduler
         self._items: deque[tuple[Callable[[Any], None], Any]] = deque()
         self._lock = threading.Lock()
         self._pending = False
@@ -66,7 +74,7 @@ class Handoff:
                 return
             self._pending = True
         try:
-            self._loop.call_soon_threadsafe(self._drain)
+            self._loop.call_soon_threadsafe(self._drain, context=self._scheduler.context)
         except RuntimeError:  # the loop is closed: nobody is left to deliver to
             self._closed = True
 
@@ -79,10 +87,14 @@ class Handoff:
     def _drain(self) -> None:
         with self._lock:
             self._pending = False  # what comes from now on schedules the next drain
-        items = self._items
-        for _ in range(len(items)):
-            function, argument = items.popleft()
-            try:
-                function(argument)
-            except Exception as exc:  # one bad item must not stop the others
-                self._on_error(exc)
+        items, scheduler = self._items, self._scheduler
+        scheduler.hold()  # the actors the items wake run below, not from a loop callback of their own
+        try:
+            for _ in range(len(items)):
+                function, argument = items.popleft()
+                try:
+                    function(argument)
+                except Exception as exc:  # one bad item must not stop the others
+                    self._on_error(exc)
+        finally:
+            scheduler.run_now()

@@ -144,7 +144,7 @@ class TopicBridge:
             out.outlet.detach()
 
     def _send(self, pub: Publisher, msg: Any) -> None:
-        # The outlet's callback, in the hub's actor: encode once, put once for every remote subscriber.
+        # The outlet's callback, inside the publisher's publish(): encode once, put once for every remote subscriber.
         out = self._outs.get(pub)
         if out is None:
             return  # the publisher went away with messages still queued

@@ -95,7 +95,9 @@ class ZenohTransport:
             raise TransportError(f"cannot open the zenoh session: {exc}") from None
         logger = runtime.make_logger("zenoh")
         hub = Hub(f"/_zenoh_{runtime.name}".replace("-", "_"), runtime.loop, logger)
-        handoff = Handoff(runtime.loop, lambda exc: logger.error(f"zenoh transport: {exc!r}", exc_info=exc))
+        handoff = Handoff(
+            runtime.loop, runtime.scheduler, lambda exc: logger.error(f"zenoh transport: {exc!r}", exc_info=exc)
+        )
         link = Link(zenoh, session, domain, hub, handoff, runtime.clock.now_ns, logger)
         self.zid = link.zid
         self.warnings = link.warnings
