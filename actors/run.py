@@ -31,7 +31,7 @@ import anyio.abc
 import msgspec
 
 from actors.core._frames import is_users
-from actors.core.loops import WALL_LOOPS, VirtualTimeLoop
+from actors.core.loops import WALL_LOOPS, VirtualTimeLoop, wall_loop
 from actors.core.signals import raise_stops, remember_stops, stop_signals, take_noted
 from actors.core.tomlfile import MAX_SECONDS
 from actors.errors import ActorsError, Escalation, GraphFileError
@@ -59,7 +59,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--loop",
         choices=sorted(WALL_LOOPS),
         help="the wall clock's event loop: select (default, microsecond timers), asyncio, "
-        "uvloop (faster, millisecond clock; pip install 'actors[fast]')",
+        "uvloop (faster, millisecond clock; pip install 'actors[fast]'; the default with a transport "
+        "when installed)",
     )
     parser.add_argument(
         "--transport",
@@ -205,7 +206,7 @@ def launch(args: argparse.Namespace) -> int:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     configure_console(LEVELS[args.log_level or settings.log_level])
-    factory = VirtualTimeLoop if clock == "virtual" else WALL_LOOPS[args.loop or "select"]
+    factory = VirtualTimeLoop if clock == "virtual" else wall_loop(args.loop, graph.transport is not None)
     options: dict[str, Any] = {"loop_factory": factory}
     # Noted, not raised, until the graph listens: asyncio's own Ctrl-C handling would cancel the
     # runtime wherever it stands in its start-up.

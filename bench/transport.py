@@ -17,7 +17,9 @@ the result as JSON.  ``python -m bench.transport ROLE JSON_ARGS`` is a child.
 
 rclpy's sink, server and echo spin an EventsExecutor (the faster of rclpy's
 two here); its source and client spin one too.  The actors children run the
-Zenoh transport on the default wall-clock loop, meeting on a private port.
+Zenoh transport on the loop ``actors run`` gives a graph with a transport
+(:func:`actors.core.loops.wall_loop`: uvloop when the ``fast`` extra is
+installed, else select), meeting on a private port.
 
 The floor: a bare eclipse-zenoh pair of Python processes doing the same on
 the same port, with no graph around it: a subscriber callback (zenoh's
@@ -156,6 +158,7 @@ def _actors(role: str, args: dict[str, Any]) -> Any:
     import anyio
 
     from actors import HistoryPolicy, Node, QoSProfile, ReliabilityPolicy, Runtime
+    from actors.core.loops import wall_loop
     from actors.launch.graph_file import TransportSection
     from actors.transport.zenoh import ZenohTransport
     from bench.services import handle
@@ -218,7 +221,7 @@ def _actors(role: str, args: dict[str, Any]) -> Any:
                 trips.append((time.perf_counter() - start) * 1e6)
             return statistics.median(trips)
 
-    return anyio.run(main)
+    return anyio.run(main, backend_options={"loop_factory": wall_loop(None, transport=True)})
 
 
 async def _until(condition: Callable[[], bool]) -> None:

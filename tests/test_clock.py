@@ -450,6 +450,21 @@ def test_uvloop_loop_without_uvloop_names_the_extra(monkeypatch):
         uvloop_loop()
 
 
+def test_a_graph_with_a_transport_runs_on_uvloop_by_default_when_it_is_installed(monkeypatch):
+    pytest.importorskip("uvloop")
+    import importlib.util
+
+    from actors.core.loops import precise_loop, uvloop_loop, wall_loop
+
+    assert wall_loop(None, transport=True) is uvloop_loop
+    assert wall_loop(None, transport=False) is precise_loop
+    assert wall_loop("select", transport=True) is precise_loop  # --loop says otherwise
+    assert wall_loop("asyncio", transport=False) is asyncio.new_event_loop
+    find_spec = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec", lambda name: None if name == "uvloop" else find_spec(name))
+    assert wall_loop(None, transport=True) is precise_loop  # uvloop not installed: no error, the usual loop
+
+
 def test_a_runtime_runs_on_uvloop():
     uvloop = pytest.importorskip("uvloop")
     from actors.core.loops import uvloop_loop

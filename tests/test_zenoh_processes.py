@@ -8,6 +8,7 @@ print rather than for time to pass, and bounds every wait with fail_after.
 from __future__ import annotations
 
 import asyncio
+import importlib.util
 import sys
 from pathlib import Path
 
@@ -59,7 +60,9 @@ async def test_a_transient_local_topic_reaches_a_subscriber_process_started_late
         async with spawned(
             "-m", "actors.run", graph_file(tmp_path, "latcher", "zenoh_nodes:Latcher"), env=env
         ) as latcher:
-            await latcher.wait_for("published")
+            [on] = await latcher.wait_for(r"published \(on (\S+)\)")
+            # A graph with a transport runs on uvloop when it is installed (the test extra has it).
+            assert on.group(1) == ("uvloop" if importlib.util.find_spec("uvloop") else "asyncio.unix_events")
             reader_graph = graph_file(tmp_path, "reader", "zenoh_nodes:LateReader")
             async with spawned("-m", "actors.run", reader_graph, env=env) as reader:
                 got = await reader.wait_for(r"got: (latched \d)", count=3)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import asyncio
+
 import anyio
 
 from actors import DurabilityPolicy, Node, QoSProfile
@@ -12,14 +14,14 @@ LATCHED = QoSProfile(depth=3, durability=DurabilityPolicy.TRANSIENT_LOCAL)
 
 
 class Latcher(Node):
-    """Publishes ``latched 0`` .. ``latched 4`` once, at start, on a transient-local topic (depth 3)."""
+    """Publishes ``latched 0`` .. ``latched 4`` once, at start, on a transient-local topic (depth 3); names its loop."""
 
     def __init__(self) -> None:
         super().__init__("latcher")
         pub = self.create_publisher(String, "latched", LATCHED)
         for i in range(5):
             pub.publish(String(data=f"latched {i}"))
-        self.get_logger().info("published")
+        self.get_logger().info(f"published (on {type(asyncio.get_running_loop()).__module__})")
 
 
 class LateReader(Node):

@@ -13,6 +13,7 @@ kept by :class:`~actors.ros.time.ROSClock`, not here.
 from __future__ import annotations
 
 import asyncio
+import importlib.util
 import selectors
 import time
 import weakref
@@ -23,7 +24,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from actors.errors import VirtualTimeDeadlock
 
-__all__ = ["VirtualTimeLoop", "loop_clock", "precise_loop", "uvloop_loop", "WALL_LOOPS"]
+__all__ = ["VirtualTimeLoop", "loop_clock", "precise_loop", "uvloop_loop", "WALL_LOOPS", "wall_loop"]
 
 if TYPE_CHECKING:
     from collections import deque
@@ -112,6 +113,21 @@ WALL_LOOPS: dict[str, Callable[[], asyncio.AbstractEventLoop]] = {
     "asyncio": asyncio.new_event_loop,
     "uvloop": uvloop_loop,
 }
+
+
+def wall_loop(name: str | None, transport: bool) -> Callable[[], asyncio.AbstractEventLoop]:
+    """The wall-clock loop a graph runs on: ``name`` (``--loop``) if given, else the default.
+
+    The default is ``select`` (:func:`precise_loop`), except for a graph with a
+    transport when uvloop is installed: every message across processes
+    crosses from a transport thread to the loop, and uvloop's wake-up takes
+    half of select's (the service round trip and the latency across
+    processes are mostly such hops).  ``--loop select`` keeps microsecond
+    timers on a graph with a transport.
+    """
+    if name is None:
+        name = "uvloop" if transport and importlib.util.find_spec("uvloop") is not None else "select"
+    return WALL_LOOPS[name]
 
 
 _new_handle = object.__new__
