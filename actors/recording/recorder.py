@@ -9,7 +9,9 @@ recorder's buffer.
 A writer task takes the buffer a batch at a time, encodes each message as CDR
 and writes it into the MCAP file (:mod:`actors.recording.mcap_writer`).  On the
 wall clock it works in a worker thread, so the disk does not hold up the loop
-while the buffer has room.  When the buffer is full (the disk cannot keep up),
+while the buffer has room; it takes a batch worth the hop to that thread (a
+quarter of the buffer, at most 1024 messages) or, in a trickle, what waits once
+the oldest is due in the file.  When the buffer is full (the disk cannot keep up),
 the publisher waits: the message that finds it full writes the whole buffer
 itself, in the loop's thread, once the worker is done with its batch.  A bag
 is never missing a message its graph published.  Only a recorder made
@@ -46,6 +48,9 @@ if TYPE_CHECKING:
     from actors.runtime import Runtime
 
 __all__ = ["Recorder", "RECORDER_NODE"]
+
+_HANDOFF = 1024
+"""On the wall clock, the most messages the buffer holds before it goes to the worker thread."""
 
 RECORDER_NODE = "/_actors_recorder"
 """The hidden owner of the recorder's subscriptions, as ``topic info`` and doctor name it."""
@@ -105,6 +110,7 @@ class Recorder:
         self._lock = threading.Lock()
         self._runtime: Runtime | None = None
         self._waiter: asyncio.Future[None] | None = None
+        self._handoff = 1  # buffered messages that wake the writer task (see __call__)
         self._now_ns: Any = None  # the runtime clock, once running
         self._loop_time: Any = None  # the loop's clock: a message's stamp, made ROS time when written
         self._targets: dict[Tap, tuple[int, Any]] = {}  # a tap's channel and its type's CDR encoder
@@ -146,6 +152,11 @@ class Recorder:
         self, runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any] = anyio.TASK_STATUS_IGNORED
     ) -> None:
         self.open()
+        if not runtime.clock.virtual:
+            # Each batch is a hop to the worker thread and back, tens of microseconds: the
+            # writer task wakes for a batch worth the hop (or when the oldest is due, see _drain),
+            # not for every turn of the loop that published something.
+            self._handoff = max(1, min(_HANDOFF, self.max_pending // 4))
         self._now_ns = runtime.clock.now_ns
         loop = runtime.loop
         # asyncio's own loop reads time.monotonic: read it here without the method's frame
@@ -166,15 +177,20 @@ class Recorder:
         assert writer is not None
         interval = round(self.flush_interval * 1e9)
         while writer.error is None:
-            if not self._items:
+            while len(self._items) < self._handoff:
                 self._waiter = loop.create_future()
-                pending = writer.pending_since
-                if pending is None:
+                oldest = writer.pending_since
+                if oldest is None and self._items:
+                    oldest = self._ns_at([self._items[0][1]])[0]
+                if oldest is None:
                     await self._waiter
-                else:
-                    # Woken by a message, or when the chunk in progress is due in the file.
-                    with anyio.move_on_after((pending + interval - self._now_ns()) / 1e9):
-                        await self._waiter
+                    continue
+                # Woken by a message (the first sets the deadline) or a batch, or when the oldest
+                # message waiting is due in the file: then what there is goes.
+                with anyio.move_on_after((oldest + interval - self._now_ns()) / 1e9) as due:
+                    await self._waiter
+                if due.cancelled_caught:
+                    break
             self._batches.append(self._items)
             self._items = []
             if inline:
@@ -246,8 +262,8 @@ class Recorder:
                 return
             self._write_now()
             items = self._items
-        if not items:
-            self._wake()
+        if not items or len(items) == self._handoff - 1:
+            self._wake()  # the first sets the writer task's deadline; a whole batch goes at once
         items.append((tap, self._loop_time(), msg))  # a quarter of now_ns()'s cost, in publish()
 
     # -- the writer side ------------------------------------------------------------
