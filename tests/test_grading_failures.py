@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import pytest
@@ -77,7 +78,12 @@ def test_a_script_that_ends_early_says_so_before_the_graders_own_error():
     ]
 
 
-def test_a_script_that_ignores_kill_fails_with_where_it_was():
+def test_a_script_that_ignores_kill_fails_with_where_it_was(monkeypatch):
+    def nobody_reads_other_threads_frames() -> None:
+        raise AssertionError("sys._current_frames() was called")
+
+    # The script's thread recorded where it parked, itself (Turn.where): grading reads no frames.
+    monkeypatch.setattr(sys, "_current_frames", nobody_reads_other_threads_frames)
     student = ROOT / "tests" / "rclpy_scripts" / "ignores_kill.py"
     with pytest.raises(AssertionError, match="it should stay put") as excinfo, run_script(student) as run:
         run.publish("/kill", Bool(data=True))

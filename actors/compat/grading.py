@@ -28,6 +28,7 @@ import logging
 import runpy
 import sys
 import threading
+import traceback
 from collections.abc import Callable
 from contextlib import ExitStack
 from pathlib import Path
@@ -41,7 +42,7 @@ from actors.compat.rclpy.executors import ExternalShutdownException
 from actors.compat.rclpy.utilities import get_default_context, try_shutdown
 from actors.compat.session import Session
 from actors.compat.turns import Waiter
-from actors.core._frames import users_stack, users_traceback
+from actors.core._frames import users_traceback
 from actors.errors import ScriptEnded
 from actors.launch.graph_file import load_graph
 from actors.ros.log import INFO, ROOT_LOGGER, RosFormatter
@@ -287,9 +288,11 @@ class ScriptRun:
             exc.add_note(f"{self._name()} was running, at:\n{where}".rstrip())
 
     def _where(self) -> str | None:
+        # Where the script's thread parked last, as it recorded it itself (see Turn.where): while
+        # the test runs on the virtual clock, the script waits there.
         thread = self._thread
-        frame = sys._current_frames().get(thread.ident) if thread is not None and thread.ident else None
-        return "".join(users_stack(frame).format()) if frame is not None else None
+        frames = self._session.turn.where(thread.ident) if thread is not None and thread.ident else []
+        return "".join(traceback.StackSummary.from_list([(*f, None) for f in reversed(frames)]).format()) or None
 
     def _name(self) -> str:
         target = self.target

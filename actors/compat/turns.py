@@ -112,6 +112,9 @@ class Turn(ABC):
         self.main_inside = 0  # sections the main thread has open
         self._main_waiter: Waiter | None = None  # the main thread's wait, while it is parked
         self._signal: BaseException | None = None
+        # Where each thread last parked, or took the turn: its script's frames, innermost first,
+        # read by the thread itself (the hold warning and grading name them).
+        self._where: dict[int, list[tuple[str, int, str]]] = {}
 
     # -- sections ---------------------------------------------------------------
 
@@ -208,9 +211,16 @@ class Turn(ABC):
             return False
         waiter.parked = True
         self._parked.add(waiter)
-        if _get_ident() == self._main:
+        me = _get_ident()
+        if me == self._main:
             self._main_waiter = waiter
+        self._where[me] = _script_frames(sys._getframe(2))
         return True
+
+    def where(self, ident: int) -> list[tuple[str, int, str]]:
+        """The script's frames (file, line, function; innermost first) where thread ``ident`` last
+        parked in a wait or took the turn, as it recorded them; empty if none."""
+        return self._where.get(ident, [])
 
     def _block(self, waiter: Waiter) -> None:
         # Park on the waiter's semaphore.  The main thread looks up now and then: the kernel may
@@ -370,12 +380,12 @@ class VirtualTurn(Turn):
         self._drives = 0  # how often the main thread has run the loop: the hold warning's clue
         self._loop_ident: int | None = None
         self.expected = 0  # threads told to come and take the baton that have not queued yet
-        self._where: dict[int, tuple[str, str, int] | None] = {}  # where each holder last left a wait
 
     def _take(self, expected: bool = False) -> None:
         # A thread that does not hold the baton (a signal's helper, a pool's worker, a thread that
         # was expected): it queues, and blocks until the baton comes to it.
         waiter = Waiter(self)
+        self._where[_get_ident()] = _script_frames(sys._getframe(2))
         with self._lock:
             self.expected -= expected
             self._enqueue(waiter)
@@ -402,10 +412,8 @@ class VirtualTurn(Turn):
         nxt._sem.release()
 
     def _received(self, depth: int) -> None:
-        me = _get_ident()
-        self.holder = me
+        self.holder = _get_ident()
         self._depth = depth
-        self._where[me] = _script_location(sys._getframe(2))
 
     def _poke(self) -> None:
         loop = self.loop
@@ -617,8 +625,9 @@ class VirtualTurn(Turn):
             return
         thread = next((t for t in threading.enumerate() if t.ident == holder), None)
         where = self._where.get(holder)
-        if where is not None:
-            place = f" (it last left the runtime in {where[1]} at {where[0]}:{where[2]})"
+        if where:
+            file, line, function = where[0]
+            place = f" (it last left the runtime in {function} at {file}:{line})"
         elif (code := getattr(getattr(thread, "_target", None), "__code__", None)) is not None:
             place = f" (started in {code.co_name} at {code.co_filename}:{code.co_firstlineno})"
         else:
@@ -639,18 +648,20 @@ class VirtualTurn(Turn):
 _internal: dict[CodeType, bool] = {}
 
 
-def _script_location(frame: FrameType | None) -> tuple[str, str, int] | None:
-    # The first frame of the script's own above the runtime and the standard library: where the
-    # thread is, as it leaves a wait (its own frames, read by itself).
+def _script_frames(frame: FrameType | None) -> list[tuple[str, int, str]]:
+    # The frames of the script's own (not the runtime's nor the standard library's) on the stack
+    # that ``frame`` tops, innermost first: where the thread is as it parks (its own frames, read
+    # by itself).
+    found = []
     while frame is not None:
         code = frame.f_code
         inside = _internal.get(code)
         if inside is None:
-            inside = _internal[code] = code.co_filename.startswith((_ACTORS, _STDLIB))
+            inside = _internal[code] = code.co_filename.startswith((_ACTORS, _STDLIB, "<frozen "))
         if not inside:
-            return code.co_filename, code.co_name, frame.f_lineno
+            found.append((code.co_filename, frame.f_lineno, code.co_name))
         frame = frame.f_back
-    return None
+    return found
 
 
 def _nothing() -> None:

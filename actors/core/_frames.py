@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-import traceback
 from types import FrameType, TracebackType
 
-__all__ = ["is_users", "users_traceback", "users_stack"]
+__all__ = ["is_users", "users_traceback"]
 
 # Frames from these top-level packages are the machinery, not the user's code: actors itself,
 # the shipped interface modules, the libraries it runs on, and the standard library's parts
@@ -41,12 +40,6 @@ def users_traceback(tb: TracebackType | None) -> TracebackType | None:
     for entry in reversed(kept):
         result = TracebackType(result, entry.tb_frame, entry.tb_lasti, entry.tb_lineno)
     return result
-
-
-def users_stack(frame: FrameType | None) -> traceback.StackSummary:
-    """The user's frames of the stack that ``frame`` is the innermost of, outermost first."""
-    users = [(f, line) for f, line in traceback.walk_stack(frame) if is_users(f)]
-    return traceback.StackSummary.extract(reversed(users))
 
 
 def _entries(tb: TracebackType | None) -> list[TracebackType]:
