@@ -6,6 +6,7 @@ import os
 import signal
 import subprocess
 import sys
+import threading
 import weakref
 
 import pytest
@@ -319,6 +320,28 @@ def test_ctrl_c_landing_in_a_finaliser_still_interrupts_the_script():
     assert done.returncode == 0, done.stderr
     assert done.stdout == "interrupted\n"
     assert "Exception ignored" not in done.stderr and "Traceback" not in done.stderr
+
+
+def test_a_signal_landing_in_a_finaliser_is_handled_at_the_first_line_after_it(monkeypatch):
+    # No real-time retry: the handler runs again at the first line outside the finaliser, so the
+    # finaliser ends undisturbed, the context stops only then, and the script's next line never runs.
+    import actors.compat.launcher
+
+    stopped = threading.Event()
+    monkeypatch.setattr(actors.compat.launcher, "_interrupt_default_context", stopped.set)
+    ran: list[str] = []
+
+    class Dropped:
+        def __del__(self) -> None:
+            signal.raise_signal(signal.SIGINT)  # Python runs the handler at its next check: in here
+            ran.append(f"the rest of the finaliser; context stopped: {stopped.is_set()}")
+
+    with actors.compat.launcher._Stop().handling_signals(), pytest.raises(KeyboardInterrupt):
+        Dropped()  # collected at once
+        ran.append("the next line")
+    assert ran == ["the rest of the finaliser; context stopped: False"]
+    assert stopped.wait(10.0)  # on a thread of its own, as rclpy's handler does it
+    assert sys.gettrace() is None
 
 
 def test_both_kinds_of_finaliser_are_recognised_where_the_signal_lands():

@@ -32,10 +32,9 @@ import os
 import signal
 import sys
 import threading
-import time
 import traceback
 import weakref
-from collections.abc import Iterator, MutableSequence, Sequence
+from collections.abc import Callable, Iterator, MutableSequence, Sequence
 from contextlib import contextmanager
 from types import FrameType
 from typing import Any
@@ -279,13 +278,7 @@ class _Stop:
     def _on_sigint(self, signum: int, frame: FrameType | None) -> None:
         # As rclpy's handler: the context stops (spins raise ExternalShutdownException), then the
         # previous handler's KeyboardInterrupt.
-        if _in_finaliser(frame):
-            # Python prints and drops what a finaliser raises ("Exception ignored in ..."): the
-            # script would never see its KeyboardInterrupt.  Ask again once the finaliser is over,
-            # and stop the context only then: a spin that found it stopped first would return as if
-            # shut down normally (and the script's own rclpy.shutdown() would fail).
-            self.requested = True
-            _thread.start_new_thread(self._interrupt_soon, ())
+        if self._after_finaliser(frame, self._on_sigint, signum):
             return
         self._shut_down()
         self._raise(KeyboardInterrupt())
@@ -296,18 +289,44 @@ class _Stop:
             raise outside or error
         self.turn.signal(error, outside)
 
-    def _interrupt_soon(self) -> None:
-        # A bare thread: it is no script thread, so it holds no virtual time and sleeps in real time.
-        time.sleep(_FINALISER_GRACE)
-        if self._handling:  # past the script, Python's own handler would raise in the launcher
-            self.interrupt()
+    def _after_finaliser(self, frame: FrameType | None, handler: _Handler, signum: int) -> bool:
+        """If the signal landed in a finaliser, handle it again at the first line or call outside
+        it, and say so.
+
+        Python prints and drops what a finaliser raises ("Exception ignored in ..."): the script
+        would never see its exception.  The context stops only then too: a spin that found it
+        stopped first would return as if shut down normally.  The main thread is traced until
+        then, as a debugger's breakpoint is, and the first trace event outside every finaliser
+        is the finaliser's end.
+        """
+        if not _in_finaliser(frame):
+            return False
+        self.requested = True
+        previous = sys.gettrace()
+        traced: list[FrameType] = []
+
+        def resume(where: FrameType, event: str, arg: object) -> None:
+            if _in_finaliser(where):
+                return None  # a call the finaliser makes
+            sys.settrace(previous)
+            for beneath in traced:
+                beneath.f_trace = None
+            if self._handling:  # past the script, Python's own handler would raise in the launcher
+                handler(signum, where)
+            return None
+
+        while frame is not None:  # the frames the finaliser returns to report their next line
+            if not _in_finaliser(frame):
+                frame.f_trace = resume
+                traced.append(frame)
+            frame = frame.f_back
+        sys.settrace(resume)  # and the calls they make
+        return True
 
     def _on_sigterm(self, signum: int, frame: FrameType | None) -> None:
         # rclpy only shuts the context down (a spin then raises ExternalShutdownException); a script
         # that never spins again would go on, so the main thread gets that exception wherever it is.
-        if _in_finaliser(frame):
-            self.requested = True
-            _thread.start_new_thread(self._interrupt_soon, ())
+        if self._after_finaliser(frame, self._on_sigterm, signum):
             return
         self._shut_down()
         # In an rclpy call, that call raises ExternalShutdownException (a spin would); in the
@@ -335,6 +354,9 @@ class _Stop:
                 signal.signal(sig, handler)
 
 
+_Handler = Callable[[int, FrameType | None], None]
+
+
 def _interrupt_default_context() -> None:
     get_default_context().interrupt()  # a bare thread sees the main script's (see script_state)
 
@@ -342,7 +364,6 @@ def _interrupt_default_context() -> None:
 # Where the signal may land while a finaliser runs: a ``__del__`` (rclpy's futures have one) or a
 # weakref.finalize callback (a task collected before it ran ends its work in one).
 _FINALISERS = frozenset({weakref.finalize.__call__.__code__})
-_FINALISER_GRACE = 0.001  # seconds; finalisers are short, and a signal landing in one again waits again
 
 
 def _in_finaliser(frame: FrameType | None) -> bool:
