@@ -8,6 +8,7 @@ import shutil
 import signal
 import subprocess
 import sys
+import threading
 
 import pytest
 
@@ -41,6 +42,32 @@ def test_a_signal_ends_a_script_blocked_in_any_form(form: str, signum: int) -> N
     assert proc.returncode == 0, err
     assert "Traceback" not in err
     assert "not stopped" not in out
+
+
+def test_a_signal_the_kernel_gives_another_thread_ends_the_main_threads_wait() -> None:
+    # The handler runs on the main thread only when it runs bytecode: its wait, parked in select on
+    # the pipe that the signal's wake-up writes to, runs it at once (no poll).  The signal goes to
+    # a bare thread here, as the kernel may send a process's signal to any thread.
+    from actors.compat.session import Session
+
+    with Session(clock="wall") as session:
+        previous = signal.signal(signal.SIGUSR1, lambda *_: session.turn.signal(KeyboardInterrupt()))
+        try:
+
+            def kill_me() -> None:
+                with session.turn:  # given up by the main thread's wait, as it parks
+                    signal.pthread_kill(threading.get_ident(), signal.SIGUSR1)
+
+            other = threading.Thread(target=kill_me)
+            waiter, bound = session.waiter(), []
+            session.wake_after(30.0, lambda: (bound.append("30 s of wall time"), waiter.wake()))
+            with pytest.raises(KeyboardInterrupt), session.turn:
+                other.start()
+                session.wait_until(lambda: bound, None, waiter)
+            assert bound == []  # the handler ran at once, not when something else woke the thread
+        finally:
+            signal.signal(signal.SIGUSR1, previous)
+            other.join()
 
 
 @pytest.mark.slow

@@ -36,14 +36,17 @@ import _thread
 import asyncio
 import logging
 import os
+import select
 import selectors
+import signal
 import sys
 import threading
+import time
 from abc import ABC, abstractmethod
 from asyncio.events import _get_running_loop, _set_running_loop
 from collections import deque
 from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from types import CodeType, FrameType
 from typing import Any
 
@@ -56,7 +59,6 @@ __all__ = ["Turn", "WallTurn", "VirtualTurn", "Waiter", "ScriptWallLoop", "Scrip
 #: Real seconds the baton may stay with one thread outside the runtime before a warning names it.
 HOLD_WARNING = 5.0
 
-_SIGNAL_LOOK = 0.05  # real seconds between the main thread's looks for a signal while it waits
 
 _ACTORS = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep  # the actors package
 _STDLIB = os.path.dirname(os.__file__) + os.sep
@@ -223,14 +225,38 @@ class Turn(ABC):
         return self._where.get(ident, [])
 
     def _block(self, waiter: Waiter) -> None:
-        # Park on the waiter's semaphore.  The main thread looks up now and then: the kernel may
-        # deliver a process's signal to another thread, and Python runs the handler only when the
-        # main thread runs bytecode again, which a plain blocking acquire would never let it do.
+        # Park on the waiter's semaphore.
+        self._acquire(waiter._sem)
+
+    def _acquire(self, sem: _thread.LockType, timeout: float | None = None) -> bool:
+        # The kernel may deliver a process's signal to any thread, and Python runs the handler only
+        # when the main thread runs bytecode, which a blocking acquire would never let it do: the
+        # main thread waits in select on a pipe that both its hand-over (_release) and the signal
+        # write to.
         if _get_ident() != self._main:
-            waiter._sem.acquire()
-            return
-        while not waiter._sem.acquire(timeout=_SIGNAL_LOOK):
-            pass
+            return sem.acquire(timeout=-1 if timeout is None else timeout)
+        if sem.acquire(False):
+            return True
+        read, write = _main_pipe()
+        previous = signal.set_wakeup_fd(write)
+        deadline = None if timeout is None else time.monotonic() + timeout
+        try:
+            while not sem.acquire(False):
+                left = None if deadline is None else deadline - time.monotonic()
+                if left is not None and left <= 0:
+                    return False
+                if select.select([read], [], [], left)[0]:
+                    os.read(read, 512)
+            return True
+        finally:
+            signal.set_wakeup_fd(previous)
+
+    def _release(self, waiter: Waiter) -> None:
+        # With _lock held: hand over to ``waiter``'s owner (see _acquire).
+        waiter._sem.release()
+        if waiter is self._main_waiter:
+            with suppress(BlockingIOError):  # full: the main thread has bytes to read
+                os.write(_main_pipe()[1], b"\0")
 
     def _unparked(self, waiter: Waiter) -> None:
         if self._main_waiter is waiter:
@@ -260,7 +286,7 @@ class Turn(ABC):
             parked, self._parked = list(self._parked), set()
             for waiter in parked:
                 waiter.parked = False
-                waiter._sem.release()
+                self._release(waiter)
         self._stopped()
 
     def _stopped(self) -> None:  # a hook: only the wall turn has a lock to let go
@@ -312,7 +338,7 @@ class WallTurn(Turn):
             if waiter.parked:
                 waiter.parked = False
                 self._parked.discard(waiter)
-                waiter._sem.release()
+                self._release(waiter)
             else:
                 waiter.woken = True
 
@@ -409,7 +435,7 @@ class VirtualTurn(Turn):
             nxt.queued = False
         else:
             nxt = self._party
-        nxt._sem.release()
+        self._release(nxt)
 
     def _received(self, depth: int) -> None:
         self.holder = _get_ident()
@@ -608,12 +634,12 @@ class VirtualTurn(Turn):
     def _park_loop(self) -> None:
         sem = self._party._sem
         drives = self._drives
-        while not sem.acquire(timeout=HOLD_WARNING):
+        while not self._acquire(sem, HOLD_WARNING):
             # The main thread running the loop (now, or since the last look) waits as often as it
             # runs: only a holder that did neither for the whole time is named.
             if sem is self._party._sem and drives == self._drives:
                 self._warn_holding()
-                sem.acquire()
+                self._acquire(sem)
                 break
             drives = self._drives
         self.holder = _get_ident()
@@ -662,6 +688,25 @@ def _script_frames(frame: FrameType | None) -> list[tuple[str, int, str]]:
             found.append((code.co_filename, frame.f_lineno, code.co_name))
         frame = frame.f_back
     return found
+
+
+_pipe: list[int] = []  # the main thread's wake-up pipe (read end, write end), made at its first wait
+
+
+def _main_pipe() -> list[int]:
+    if not _pipe:
+        read, write = os.pipe()
+        os.set_blocking(write, False)  # as signal.set_wakeup_fd requires: a handler never blocks
+        _pipe[:] = read, write
+    return _pipe
+
+
+def _forget_pipe() -> None:
+    # A forked child makes its own: a shared pipe would let one process read the other's wake-ups.
+    _pipe.clear()
+
+
+os.register_at_fork(after_in_child=_forget_pipe)
 
 
 def _nothing() -> None:
