@@ -224,10 +224,6 @@ class Turn(ABC):
         parked in a wait or took the turn, as it recorded them; empty if none."""
         return self._where.get(ident, [])
 
-    def _block(self, waiter: Waiter) -> None:
-        # Park on the waiter's semaphore.
-        self._acquire(waiter._sem)
-
     def _acquire(self, sem: _thread.LockType, timeout: float | None = None) -> bool:
         # The kernel may deliver a process's signal to any thread, and Python runs the handler only
         # when the main thread runs bytecode, which a blocking acquire would never let it do: the
@@ -242,11 +238,10 @@ class Turn(ABC):
         deadline = None if timeout is None else time.monotonic() + timeout
         try:
             while not sem.acquire(False):
-                left = None if deadline is None else deadline - time.monotonic()
-                if left is not None and left <= 0:
-                    return False
-                if select.select([read], [], [], left)[0]:
-                    os.read(read, 512)
+                left = None if deadline is None else max(0.0, deadline - time.monotonic())
+                if not select.select([read], [], [], left)[0]:
+                    return sem.acquire(False)  # the time is up
+                os.read(read, 512)
             return True
         finally:
             signal.set_wakeup_fd(previous)
@@ -287,10 +282,6 @@ class Turn(ABC):
             for waiter in parked:
                 waiter.parked = False
                 self._release(waiter)
-        self._stopped()
-
-    def _stopped(self) -> None:  # a hook: only the wall turn has a lock to let go
-        return None
 
 
 class WallTurn(Turn):
@@ -352,7 +343,7 @@ class WallTurn(Turn):
         depth = self._depth
         if mine:
             self._give()
-        self._block(waiter)
+        self._acquire(waiter._sem)
         self._unparked(waiter)
         if mine and not self.stopped:
             self._mutex.acquire()
@@ -384,8 +375,9 @@ class WallTurn(Turn):
             self.holder = _get_ident()
             self._depth = 1
 
-    def _stopped(self) -> None:
-        if self.holder == _get_ident():
+    def stop(self) -> None:
+        super().stop()
+        if self.holder == _get_ident():  # the loop's thread, as the runtime ends: its lock goes
             self.holder = None
             self._mutex.release()
 
@@ -475,7 +467,7 @@ class VirtualTurn(Turn):
             self._after_wait()
             return
         if not drive or not self._drive(waiter):
-            self._block(waiter)
+            self._acquire(waiter._sem)
         self._unparked(waiter)
         if not self.stopped:
             self._received(depth)
@@ -701,12 +693,8 @@ def _main_pipe() -> list[int]:
     return _pipe
 
 
-def _forget_pipe() -> None:
-    # A forked child makes its own: a shared pipe would let one process read the other's wake-ups.
-    _pipe.clear()
-
-
-os.register_at_fork(after_in_child=_forget_pipe)
+# A forked child makes its own: a shared pipe would let one process read the other's wake-ups.
+os.register_at_fork(after_in_child=_pipe.clear)
 
 
 def _nothing() -> None:
