@@ -47,7 +47,7 @@ from asyncio.events import _get_running_loop, _set_running_loop
 from collections import deque
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager, suppress
-from types import CodeType, FrameType
+from types import FrameType
 from typing import Any
 
 from actors.core.loops import VirtualTimeLoop
@@ -113,6 +113,7 @@ class Turn(ABC):
         self._main = threading.main_thread().ident
         self.main_inside = 0  # sections the main thread has open
         self._main_waiter: Waiter | None = None  # the main thread's wait, while it is parked
+        self._main_selects = False  # the main thread blocks in select (see _acquire)
         self._signal: BaseException | None = None
         # Where each thread last parked, or took the turn: its script's frames, innermost first,
         # read by the thread itself (the hold warning and grading name them).
@@ -236,6 +237,7 @@ class Turn(ABC):
         read, write = _main_pipe()
         previous = signal.set_wakeup_fd(write)
         deadline = None if timeout is None else time.monotonic() + timeout
+        self._main_selects = True  # before the next try: a hand-over after it writes to the pipe
         try:
             while not sem.acquire(False):
                 left = None if deadline is None else max(0.0, deadline - time.monotonic())
@@ -244,12 +246,13 @@ class Turn(ABC):
                 os.read(read, 512)
             return True
         finally:
+            self._main_selects = False
             signal.set_wakeup_fd(previous)
 
     def _release(self, waiter: Waiter) -> None:
         # With _lock held: hand over to ``waiter``'s owner (see _acquire).
         waiter._sem.release()
-        if waiter is self._main_waiter:
+        if waiter is self._main_waiter and self._main_selects:
             with suppress(BlockingIOError):  # full: the main thread has bytes to read
                 os.write(_main_pipe()[1], b"\0")
 
@@ -663,7 +666,7 @@ class VirtualTurn(Turn):
         return bool(self.queue) or self.expected > 0
 
 
-_internal: dict[CodeType, bool] = {}
+_internal: dict[str, bool] = {}  # by file name: a str keeps its hash, a code object computes it
 
 
 def _script_frames(frame: FrameType | None) -> list[tuple[str, int, str]]:
@@ -673,11 +676,12 @@ def _script_frames(frame: FrameType | None) -> list[tuple[str, int, str]]:
     found = []
     while frame is not None:
         code = frame.f_code
-        inside = _internal.get(code)
+        file = code.co_filename
+        inside = _internal.get(file)
         if inside is None:
-            inside = _internal[code] = code.co_filename.startswith((_ACTORS, _STDLIB, "<frozen "))
+            inside = _internal[file] = file.startswith((_ACTORS, _STDLIB, "<frozen "))
         if not inside:
-            found.append((code.co_filename, frame.f_lineno, code.co_name))
+            found.append((file, frame.f_lineno, code.co_name))
         frame = frame.f_back
     return found
 
