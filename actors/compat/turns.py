@@ -113,7 +113,8 @@ class Turn(ABC):
         self._main = threading.main_thread().ident
         self.main_inside = 0  # sections the main thread has open
         self._main_waiter: Waiter | None = None  # the main thread's wait, while it is parked
-        self._main_selects = False  # the main thread blocks in select (see _acquire)
+        self._main_selects = False  # the main thread blocks on its pipe (see _acquire)
+        self._wakeup: int | None = None  # the signals' wake-up fd before the main thread's first wait
         self._signal: BaseException | None = None
         # Where each thread last parked, or took the turn: its script's frames, innermost first,
         # read by the thread itself (the hold warning and grading name them).
@@ -228,26 +229,25 @@ class Turn(ABC):
     def _acquire(self, sem: _thread.LockType, timeout: float | None = None) -> bool:
         # The kernel may deliver a process's signal to any thread, and Python runs the handler only
         # when the main thread runs bytecode, which a blocking acquire would never let it do: the
-        # main thread waits in select on a pipe that both its hand-over (_release) and the signal
-        # write to.
+        # main thread waits on a pipe that both its hand-over (_release) and the signal write to,
+        # the signals' wake-up fd from its first wait until the runtime ends (stop).
         if _get_ident() != self._main:
             return sem.acquire(timeout=-1 if timeout is None else timeout)
         if sem.acquire(False):
             return True
         read, write = _main_pipe()
-        previous = signal.set_wakeup_fd(write)
+        if self._wakeup is None:
+            self._wakeup = signal.set_wakeup_fd(write)
         deadline = None if timeout is None else time.monotonic() + timeout
         self._main_selects = True  # before the next try: a hand-over after it writes to the pipe
         try:
             while not sem.acquire(False):
-                left = None if deadline is None else max(0.0, deadline - time.monotonic())
-                if not select.select([read], [], [], left)[0]:
+                if deadline is not None and not select.select([read], [], [], max(0.0, deadline - time.monotonic()))[0]:
                     return sem.acquire(False)  # the time is up
-                os.read(read, 512)
+                os.read(read, 512)  # blocks until a byte comes (select saw one, if timed)
             return True
         finally:
             self._main_selects = False
-            signal.set_wakeup_fd(previous)
 
     def _release(self, waiter: Waiter) -> None:
         # With _lock held: hand over to ``waiter``'s owner (see _acquire).
@@ -285,6 +285,9 @@ class Turn(ABC):
             for waiter in parked:
                 waiter.parked = False
                 self._release(waiter)
+        if self._wakeup is not None and _get_ident() == self._main:  # else at close(), on the main thread
+            signal.set_wakeup_fd(self._wakeup)
+            self._wakeup = None
 
 
 class WallTurn(Turn):
