@@ -105,6 +105,9 @@ async def test_topics_services_and_node_info_of_other_processes():
             await node_up(port, "minimal_service")
             code, out, err = await actors(port, "topic", "list", "-t")
             assert "/topic [std_msgs/msg/String]" in out.splitlines(), err
+            code, out, err = await actors(port, "topic", "info", "-v", "/topic")
+            gids = [line.removeprefix("GID: ").split(".") for line in out.splitlines() if line.startswith("GID:")]
+            assert code == 0 and len(gids) == 1 and len(gids[0]) == 16, out + err  # the talker's, as ros2 prints it
             code, out, err = await actors(port, "topic", "echo", "/topic", "--once")
             assert code == 0 and out.startswith("data: 'Hello World: "), err
             code, out, err = await actors(

@@ -205,3 +205,19 @@ def test_payloads_are_cdr_both_ways():
     query = SDK["queries"][0]
     assert codec.decode_cdr(bytes.fromhex(query["payload"]), AddTwoInts.Request) == AddTwoInts.Request(a=20, b=22)
     assert codec.encode_cdr(AddTwoInts.Request(a=20, b=22)).hex() == query["payload"]
+
+
+def test_an_endpoint_of_another_process_carries_the_gid_of_its_token():
+    xxhash = pytest.importorskip("xxhash")
+    from actors.transport.zenoh.discovery import Discovery
+
+    key = (
+        "@ros2_lv/0/1f2e3d4c5b6a79880123456789abcdef/3/7/MP/%/%/chatter_node/%chatter/std_msgs::msg::dds_::String_/"
+        "RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18/::,10:,:,:,,"
+    )
+    found = Discovery("0" * 32, lambda token, appeared: None, lambda kind, why: None)
+    found.put(key)
+    [node] = found.remote_nodes()
+    [publisher] = node.endpoints
+    digest = xxhash.xxh3_128(key.encode()).digest()  # big-endian; rmw_zenoh lays it out low half first
+    assert publisher.kind == "publisher" and publisher.gid == digest[8:][::-1] + digest[:8][::-1]

@@ -62,7 +62,7 @@ class EndpointInfo(msgspec.Struct, frozen=True, kw_only=True):
     process: str = ""
     type_hash: str = ""
     why: str = ""
-    gid: list[int] = []  # this process's endpoints' (a remote one's is not kept)
+    gid: list[int] = []  # a remote endpoint's as its transport gives it
 
 
 class TopicInfo(msgspec.Struct, frozen=True, kw_only=True):
@@ -280,13 +280,11 @@ _TOPIC_KINDS = ("publisher", "subscription")
 def _remote_endpoints(nodes: list[RemoteNode]) -> dict[str, tuple[list[EndpointInfo], list[EndpointInfo]]]:
     """Remote publishers and subscriptions by topic name."""
     found: dict[str, tuple[list[EndpointInfo], list[EndpointInfo]]] = {}
-    for node in nodes:
-        for e in node.endpoints:
-            if e.kind in _TOPIC_KINDS:
-                info = EndpointInfo(
-                    node=node.name, type=e.type, qos=e.qos, process=node.process, type_hash=e.type_hash, why=e.why
-                )
-                found.setdefault(e.name, ([], []))[_TOPIC_KINDS.index(e.kind)].append(info)
+    for node, e in ((n, e) for n in nodes for e in n.endpoints if e.kind in _TOPIC_KINDS):
+        info = EndpointInfo(
+            node=node.name, type=e.type, qos=e.qos, process=node.process, type_hash=e.type_hash, why=e.why, gid=[*e.gid]
+        )
+        found.setdefault(e.name, ([], []))[_TOPIC_KINDS.index(e.kind)].append(info)
     return found
 
 

@@ -212,7 +212,8 @@ class RemoteEndpoint(msgspec.Struct, frozen=True, kw_only=True):
 
     ``type`` is the ROS type name (``std_msgs/msg/String``), ``type_hash`` its
     RIHS01 hash as announced, ``known`` whether this process can decode it
-    (the type exists here with the same hash); ``why`` says why not.
+    (the type exists here with the same hash); ``why`` says why not. ``gid``
+    is the endpoint's GID as its transport gives it (b"" if it gives none).
     """
 
     kind: str  # "publisher", "subscription", "server" or "client"
@@ -222,6 +223,7 @@ class RemoteEndpoint(msgspec.Struct, frozen=True, kw_only=True):
     qos: QoSSnapshot
     known: bool = True
     why: str = ""
+    gid: bytes = b""
 
 
 class RemoteNode(msgspec.Struct, frozen=True, kw_only=True):

@@ -31,6 +31,7 @@ from typing import Any
 from actors import codec
 from actors.errors import ActorsError
 from actors.transport.seam import RemoteEndpoint, RemoteNode
+from actors.transport.zenoh.attachment import gid_of
 from actors.transport.zenoh.keys import KINDS, Token, parse_token
 
 __all__ = ["Discovery", "MAX_FOREIGN_TOKENS", "local_hash"]
@@ -93,7 +94,7 @@ class Discovery:
     def remote_nodes(self) -> list[RemoteNode]:
         """Every node of other processes, sorted by name (a node with endpoints but no token too)."""
         nodes: dict[tuple[str, str], list[RemoteEndpoint]] = {}
-        for token in self._tokens.values():
+        for key, token in self._tokens.items():
             endpoints = nodes.setdefault((token.node, token.zid), [])
             if token.kind == "NN":
                 continue
@@ -108,6 +109,7 @@ class Discovery:
                     qos=token.qos,
                     known=known,
                     why=why,
+                    gid=gid_of(key),
                 )
             )
         return [
