@@ -19,7 +19,6 @@ if __name__ == "__main__":
 
 import argparse
 import asyncio
-import importlib.util
 import sys
 import traceback
 from collections.abc import Iterator, Sequence
@@ -31,7 +30,7 @@ import anyio.abc
 import msgspec
 
 from actors.core._frames import is_users
-from actors.core.loops import WALL_LOOPS, VirtualTimeLoop, wall_loop
+from actors.core.loops import WALL_LOOPS, VirtualTimeLoop, uvloop_loop, wall_loop
 from actors.core.signals import raise_stops, remember_stops, stop_signals, take_noted
 from actors.core.tomlfile import MAX_SECONDS
 from actors.errors import ActorsError, Escalation, GraphFileError
@@ -188,9 +187,12 @@ def launch(args: argparse.Namespace) -> int:
     if args.loop and clock == "virtual":
         print(f"error: --loop {args.loop} is for the wall clock; virtual time runs on its own loop", file=sys.stderr)
         return 2
-    if args.loop == "uvloop" and importlib.util.find_spec("uvloop") is None:
-        print("error: --loop uvloop: uvloop is not installed: pip install 'actors[fast]'", file=sys.stderr)
-        return 2
+    if args.loop == "uvloop":
+        try:
+            uvloop_loop().close()
+        except ImportError as exc:
+            print(f"error: --loop uvloop: {exc}", file=sys.stderr)
+            return 2
     if clock == "virtual" and graph.transport is not None:
         print(
             f"error: {args.graph}: a graph with a transport runs on the wall clock: other processes "

@@ -452,17 +452,42 @@ def test_uvloop_loop_without_uvloop_names_the_extra(monkeypatch):
 
 def test_a_graph_with_a_transport_runs_on_uvloop_by_default_when_it_is_installed(monkeypatch):
     pytest.importorskip("uvloop")
-    import importlib.util
-
     from actors.core.loops import precise_loop, uvloop_loop, wall_loop
 
     assert wall_loop(None, transport=True) is uvloop_loop
     assert wall_loop(None, transport=False) is precise_loop
     assert wall_loop("select", transport=True) is precise_loop  # --loop says otherwise
     assert wall_loop("asyncio", transport=False) is asyncio.new_event_loop
-    find_spec = importlib.util.find_spec
-    monkeypatch.setattr(importlib.util, "find_spec", lambda name: None if name == "uvloop" else find_spec(name))
-    assert wall_loop(None, transport=True) is precise_loop  # uvloop not installed: no error, the usual loop
+    monkeypatch.setitem(sys.modules, "uvloop", None)  # as if not installed
+    assert wall_loop(None, transport=True) is precise_loop  # no error: the usual loop
+
+
+def test_a_uvloop_that_does_not_load_leaves_a_transport_graph_on_select(monkeypatch, tmp_path):
+    from test_run import broken_uvloop
+
+    from actors.core.loops import precise_loop, wall_loop
+
+    broken_uvloop(monkeypatch, tmp_path)
+    assert wall_loop(None, transport=True) is precise_loop
+
+
+def test_ros_time_on_uvloop_has_nanoseconds_within_one_callback():
+    # uvloop's loop.time() is its clock as of its last turn, in whole milliseconds: ROS time read
+    # from it would stand still within a callback and move in steps of a millisecond.
+    pytest.importorskip("uvloop")
+
+    async def main() -> tuple[int, int]:
+        clock = ROSClock(asyncio.get_running_loop())
+        first = later = clock.now_ns()
+        for _ in range(10_000_000):  # the clock moves within microseconds: no wait for time to pass
+            later = clock.now_ns()
+            if later != first:
+                break
+        return first, later
+
+    first, later = anyio.run(main, backend_options={"use_uvloop": True})
+    assert later > first
+    assert (later - first) % 1_000_000, f"ROS time moved by whole milliseconds: {later - first} ns"
 
 
 def test_a_runtime_runs_on_uvloop():

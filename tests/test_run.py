@@ -8,6 +8,7 @@ import signal
 import subprocess
 import sys
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
 from conftest import ROOT, python_env
@@ -71,6 +72,26 @@ use = "graph_nodes:Counter"
     ]
     assert result.stdout.count("dead letter") == 3
     assert_only_users_frames(result.stderr, "graph_nodes.py")
+
+
+@pytest.mark.slow
+def test_a_crash_on_uvloop_shows_only_the_users_frames(run_module, tmp_path):
+    pytest.importorskip("uvloop")
+    (tmp_path / "quitter.py").write_text(
+        "from actors import Node\n\n\n"
+        "class Quits(Node):\n"
+        "    def __init__(self):\n"
+        '        super().__init__("quits")\n'
+        "        self.create_timer(0.01, self.tick)\n\n"
+        "    def tick(self):\n"
+        "        raise SystemExit(3)\n"
+    )
+    graph = tmp_path / "quits.toml"
+    graph.write_text('[[nodes]]\nuse = "quitter:Quits"\n')
+    result = run_module("actors.run", str(graph), "--loop", "uvloop", "--duration", "5")
+    assert "[FATAL]" in result.stderr, result.stderr
+    assert_only_users_frames(result.stderr, "quitter.py")
+    assert '.pyx"' not in result.stderr  # uvloop's own frames
 
 
 def run_virtual(run_module, tmp_path, text: str) -> tuple[str, subprocess.CompletedProcess[str]]:
@@ -240,9 +261,27 @@ def test_a_loop_on_virtual_time_is_refused(run_module):
 def test_uvloop_missing_is_exit_2_with_the_install_hint(monkeypatch, capsys):
     from actors import run
 
-    monkeypatch.setattr(run.importlib.util, "find_spec", lambda name: None)
+    monkeypatch.setitem(sys.modules, "uvloop", None)  # as if not installed
     assert run.main(["graph.toml", "--loop", "uvloop"]) == 2
     assert capsys.readouterr().err == "error: --loop uvloop: uvloop is not installed: pip install 'actors[fast]'\n"
+
+
+def test_a_uvloop_that_does_not_load_is_exit_2_saying_why(monkeypatch, capsys, tmp_path):
+    from actors import run
+
+    broken_uvloop(monkeypatch, tmp_path)
+    assert run.main(["graph.toml", "--loop", "uvloop"]) == 2
+    assert capsys.readouterr().err == (
+        "error: --loop uvloop: uvloop does not load (libuv is missing here): pip install 'actors[fast]'\n"
+    )
+
+
+def broken_uvloop(monkeypatch: pytest.MonkeyPatch, folder: Path) -> None:
+    """A uvloop that is installed but does not import (built for another Python, libuv missing)."""
+    (folder / "uvloop").mkdir()
+    (folder / "uvloop" / "__init__.py").write_text('raise ImportError("libuv is missing here")\n')
+    monkeypatch.delitem(sys.modules, "uvloop", raising=False)
+    monkeypatch.syspath_prepend(str(folder))
 
 
 @pytest.mark.slow

@@ -22,6 +22,7 @@ _MACHINERY = frozenset(
         "selectors",
         "threading",
         "concurrent",
+        "uvloop",
     }
 )
 

@@ -102,8 +102,10 @@ def uvloop_loop() -> asyncio.AbstractEventLoop:
     """
     try:
         import uvloop
-    except ImportError:
-        raise ImportError("uvloop is not installed: pip install 'actors[fast]'") from None
+    except ImportError as exc:
+        found = importlib.util.find_spec("uvloop") is not None
+        reason = f"uvloop does not load ({exc})" if found else "uvloop is not installed"
+        raise ImportError(f"{reason}: pip install 'actors[fast]'") from None
     return uvloop.new_event_loop()
 
 
@@ -126,8 +128,18 @@ def wall_loop(name: str | None, transport: bool) -> Callable[[], asyncio.Abstrac
     timers on a graph with a transport.
     """
     if name is None:
-        name = "uvloop" if transport and importlib.util.find_spec("uvloop") is not None else "select"
+        name = "uvloop" if transport and _uvloop_imports() else "select"
     return WALL_LOOPS[name]
+
+
+def _uvloop_imports() -> bool:
+    # Imported, not only found: a uvloop built for another Python or missing libuv is there but
+    # does not load, and a graph that never asked for it runs on select.
+    try:
+        import uvloop  # noqa: F401
+    except ImportError:
+        return False
+    return True
 
 
 _new_handle = object.__new__

@@ -328,7 +328,7 @@ class ROSClock(Clock):
     it reads the system clock until ROS time is set active, as rclpy's does.
     """
 
-    __slots__ = ("_loop", "_epoch_ns", "_override_active", "_override_ns")
+    __slots__ = ("_loop", "_time", "_epoch_ns", "_override_active", "_override_ns")
 
     def __init__(
         self, loop: asyncio.AbstractEventLoop | None = None, *, clock_type: ClockType = ClockType.ROS_TIME
@@ -338,13 +338,18 @@ class ROSClock(Clock):
         self._loop = loop
         self._override_active = False
         self._override_ns = 0
+        # Off virtual time, the monotonic clock every wall-clock loop keeps its time by, read
+        # afresh: uvloop's loop.time() is that clock as of its last turn, to the millisecond, and
+        # would give every stamp taken in one callback the same time.
+        self._time = time.monotonic
         if loop is None:
             self._epoch_ns = 0
         elif isinstance(loop, VirtualTimeLoop):
             self._epoch_ns = int(round(loop.epoch * _NS))
+            self._time = loop.time
         else:
             # The one place actors reads the wall clock: to anchor loop time to the epoch.
-            self._epoch_ns = time.time_ns() - int(round(loop.time() * _NS))
+            self._epoch_ns = time.time_ns() - int(round(time.monotonic() * _NS))
 
     @property
     def virtual(self) -> bool:
@@ -372,7 +377,7 @@ class ROSClock(Clock):
             return self._override_ns
         if self._loop is None:
             return time.time_ns()
-        return self._epoch_ns + int(round(self._loop.time() * _NS))
+        return self._epoch_ns + int(round(self._time() * _NS))
 
     def ns_at(self, loop_times: Sequence[float]) -> list[int]:
         """What :meth:`now_ns` read when the loop's clock read each of ``loop_times`` (a time set
