@@ -700,7 +700,9 @@ def _main_pipe() -> list[int]:
     return _pipe
 
 
-# A forked child makes its own: a shared pipe would let one process read the other's wake-ups.
+# A forked child that waits makes its own: a shared pipe would let one process read the other's
+# wake-ups.  The signals' wake-up fd a child inherits stays the parent's write end, so a signal to
+# the child wakes a waiting parent once, for nothing: it looks at its semaphore and reads again.
 os.register_at_fork(after_in_child=_pipe.clear)
 
 
