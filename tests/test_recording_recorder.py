@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import errno
+import gc
 import io
 import subprocess
 import sys
+import weakref
 from pathlib import Path
 
 import anyio
@@ -509,3 +511,23 @@ async def test_on_the_wall_clock_a_trickle_under_a_batch_reaches_the_file_within
             while recorder.message_count < 3:
                 await anyio.sleep(0.01)
     assert _recorded(path, "/burst") == ["m0", "m1", "m2"]
+
+
+@pytest.mark.virtual_time
+async def test_a_topic_that_goes_and_comes_back_leaves_no_old_tap_behind(tmp_path):
+    # Each time a topic's last publisher goes, its tap is retired; a new one comes with the next
+    # publisher.  What the recorder keeps of a tap must go with it.
+    path, recorder, gone = tmp_path / "cycle.mcap", Recorder(tmp_path / "cycle.mcap"), []
+    async with Runtime(attach=[recorder]) as rt:
+        node = rt.spawn(Burst, 0)
+        node.destroy_publisher(node.pub)
+        for i in range(5):
+            pub = node.create_publisher(String, "again", 10)
+            pub.publish(String(data=f"m{i}"))
+            await anyio.sleep(2)  # past the flush interval: the batch is written
+            gone += [weakref.ref(tap) for tap in recorder._taps.all() if tap.topic_name == "/again"]
+            node.destroy_publisher(pub)
+            await anyio.sleep(0.1)
+        gc.collect()
+        assert [tap() for tap in gone[:-1]] == [None] * 4  # each one that a newer tap replaced
+    assert _recorded(path, "/again") == [f"m{i}" for i in range(5)]

@@ -113,7 +113,6 @@ class Recorder:
         self._handoff = 1  # buffered messages that wake the writer task (see __call__)
         self._now_ns: Any = None  # the runtime clock, once running
         self._loop_time: Any = None  # the loop's clock: a message's stamp, made ROS time when written
-        self._targets: dict[Tap, tuple[int, Any]] = {}  # a tap's channel and its type's CDR encoder
         self._ns_at: Any = None
         self.dropped = 0
         self._dropped_reported = 0
@@ -306,13 +305,13 @@ class Recorder:
     ) -> Iterator[tuple[int, int, int, bytes | bytearray]]:
         """The batch's messages as the writer takes them, each encoded as it is taken; what
         cannot be encoded goes into ``failures`` instead."""
-        targets = self._targets
         for (tap, _, msg), stamp in zip(batch, self._ns_at([stamp for _, stamp, _ in batch])):
-            target = targets.get(tap)
-            if target is None:
-                channel = tap.channel if tap.channel is not None else self._register(tap)
-                target = targets[tap] = (channel, encoder(tap.msg_type))
-            channel, fill = target
+            fill = tap.encode
+            if fill is None:  # kept on the tap, not here: a topic that goes and comes back has a new tap
+                if tap.channel is None:
+                    self._register(tap)
+                fill = tap.encode = encoder(tap.msg_type)
+            channel = tap.channel
             buf = Buffer(HEADER)
             try:
                 fill(buf, msg)
@@ -321,12 +320,11 @@ class Recorder:
                 continue
             yield channel, stamp, stamp, buf.result() if buf.chunks else buf
 
-    def _register(self, tap: Tap) -> int:
+    def _register(self, tap: Tap) -> None:
         assert self._writer is not None
         tap.channel = self._writer.add_topic(
             tap.topic_name, tap.ros_type, definition=tap.definition, type_hash=tap.type_hash, offers=tap.offers
         )
-        return tap.channel
 
 
 def _named(msg: Any, exc: Exception) -> Exception:

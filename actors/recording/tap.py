@@ -196,12 +196,13 @@ class Tap(Subscription):
 
     Best effort and volatile, so it matches every publisher (as rosbag2 adapts
     its subscription to what publishers offer).  ``channel`` is the sink's
-    (an MCAP channel id, a Foxglove channel); ``offers`` the publishers' QoS;
-    ``failed`` is set by a sink once it has said that a message could not be
-    taken.
+    (an MCAP channel id, a Foxglove channel), and so is ``encode`` (how it
+    encodes the tap's messages, once it has looked that up); ``offers`` the
+    publishers' QoS; ``failed`` is set by a sink once it has said that a
+    message could not be taken.
     """
 
-    __slots__ = ("channel", "offers", "ros_type", "definition", "type_hash", "failed", "_deliver")
+    __slots__ = ("channel", "encode", "offers", "ros_type", "definition", "type_hash", "failed", "_deliver")
 
     def __init__(self, owner: TapOwner, topic: Topic, deliver: Deliver, depth: int) -> None:
         self.ros_type = type_name(topic.msg_type)
@@ -211,6 +212,7 @@ class Tap(Subscription):
         # A partial owner: a tap is destroyed through destroy_subscription only.
         super().__init__(cast(Owner, owner), topic.name, topic.msg_type, _no_callback, qos)
         self.channel: Any = None
+        self.encode: Any = None
         self.offers: tuple[QoSSnapshot, ...] = tuple(p.qos for p in topic.publishers)
         self.failed = False
         self._deliver = deliver
