@@ -304,7 +304,7 @@ def test_a_client_of_neither_name_is_still_refused():
                 async with _open(port, ["foxglove.websocket.v2"]):
                     pass
 
-        with pytest.raises(websockets.exceptions.InvalidStatus, match="HTTP 400"):
+        with pytest.raises(websockets.InvalidStatus, match="HTTP 400"):
             anyio.run(knock)
 
 
