@@ -531,3 +531,19 @@ async def test_a_topic_that_goes_and_comes_back_leaves_no_old_tap_behind(tmp_pat
         gc.collect()
         assert [tap() for tap in gone[:-1]] == [None] * 4  # each one that a newer tap replaced
     assert _recorded(path, "/again") == [f"m{i}" for i in range(5)]
+
+
+def test_on_uvloop_each_message_of_a_burst_gets_its_own_receive_time(tmp_path):
+    # uvloop's loop.time() is the millisecond of its last turn: a burst published in one turn
+    # would share one log time.  rosbag2 stamps each message when it is received.
+    pytest.importorskip("uvloop")
+    path = tmp_path / "uv.mcap"
+
+    async def main() -> None:
+        async with Runtime(attach=[Recorder(path, topics=["/burst"])]) as rt:
+            await _published(rt, 300, every=300)
+
+    anyio.run(main, backend_options={"use_uvloop": True})
+    times = [m.log_time for _, _, m in read_bag(path).iter_messages(topics=["/burst"])]
+    assert len(times) == 300 and times == sorted(times)
+    assert len(set(times)) > 1

@@ -157,10 +157,11 @@ class Recorder:
             # not for every turn of the loop that published something.
             self._handoff = max(1, min(_HANDOFF, self.max_pending // 4))
         self._now_ns = runtime.clock.now_ns
-        loop = runtime.loop
-        # asyncio's own loop reads time.monotonic: read it here without the method's frame
-        monotonic = type(loop).time is asyncio.BaseEventLoop.time
-        self._loop_time, self._ns_at = time.monotonic if monotonic else loop.time, runtime.clock.ns_at
+        # Off virtual time the loop's clock is the monotonic clock: asyncio's loop reads it (read
+        # here, a frame less), uvloop's keeps it to the millisecond as of its last turn, which
+        # would give a whole burst one log time.  Each message gets its own receive time.
+        loop_time = runtime.loop.time if runtime.clock.virtual else time.monotonic
+        self._loop_time, self._ns_at = loop_time, runtime.clock.ns_at
         self._runtime = runtime
         try:
             self._taps.start(runtime)
