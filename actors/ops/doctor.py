@@ -17,7 +17,8 @@ check passes or fails with one reason per problem found:
 - QoS incompatibility: a best-effort publisher to a reliable subscription, a
   volatile publisher to a transient-local one (such pairs are not connected);
 - nodes that crashed or keep restarting;
-- subscriptions that dropped messages (a full KEEP_LAST mailbox; not on
+- subscriptions that dropped messages (a full KEEP_LAST mailbox, or a
+  transport's full backlog of samples from other processes; not on
   hidden topics: an action's status subscription keeps only the latest);
 - messages a node refused at its input boundary (``MessageRefused``), with
   their counts per reason and the last sender;

@@ -565,13 +565,20 @@ class Subscription(Mailbox):
 
     @property
     def dropped(self) -> int:
-        """Messages dropped unread because the queue was full (KEEP_LAST), counted as they are published."""
+        """Messages dropped unread because the queue was full (KEEP_LAST), counted as they are published.
+
+        A transport adds those it dropped on their way here (:meth:`lost`).
+        """
         waiting, batch = self._waiting()
         return self._dropped + max(0, waiting + batch - self._depth)
 
     @dropped.setter
     def dropped(self, count: int) -> None:
         self._dropped = count
+
+    def lost(self, count: int) -> None:
+        """Count ``count`` messages for this subscription that were dropped before they reached its queue."""
+        self._dropped += count
 
     @property
     def queued(self) -> int:

@@ -14,9 +14,14 @@ loop waits, as an rclcpp publish would), anything else drops.
 In.  Each topic with local subscriptions gets one Zenoh subscriber (and an
 ``MS`` token per subscription); samples cross to the loop through the
 handoff, in a backlog of the topic's largest subscription depth (KEEP_ALL:
-:data:`KEEP_ALL_BACKLOG`): a peer that sends faster than the loop decodes
-pushes out the oldest, which a subscription of that depth would not have
-kept anyway, and never grows the graph.  They are decoded once and published to the local subscriptions by the
+:data:`KEEP_ALL_BACKLOG`), so that a peer that sends faster than the loop
+decodes never grows the graph: a sample that finds the backlog full pushes
+out the oldest.  For KEEP_LAST that is the sample the subscription's own
+queue would have dropped; a KEEP_ALL queue drops nothing (nor does
+rmw_zenoh's), so there it is a loss.  Either way the loss is counted in the
+``dropped`` of the topic's local subscriptions (``topic info -v``,
+``doctor``) and logged, the topic, the count and the bound named, within
+the bounds of :mod:`.peer_warnings`.  Samples are decoded once and published to the local subscriptions by the
 topic's :class:`~actors.transport.seam.Inlet`.  Where a local subscription
 is transient-local, the subscriber is an advanced subscriber that fetches
 the history of late-joining publishers' caches.  A sample whose payload or
@@ -63,11 +68,17 @@ class _Out:
 class _Backlog:
     """The samples of one subscriber waiting for the loop, the newest ``maxlen`` (Zenoh's thread appends)."""
 
-    __slots__ = ("samples", "scheduled")
+    __slots__ = ("samples", "scheduled", "arrived", "taken", "lost")
 
     def __init__(self, maxlen: int) -> None:
         self.samples: deque[Any] = deque(maxlen=maxlen)
         self.scheduled = False  # a drain is on its way to the loop
+        # Each counter has one writer: arrived Zenoh's thread, taken and lost the loop.  What
+        # the deque pushed out is arrived - taken - waiting; the loop works it out, since a
+        # length check on Zenoh's thread would count a sample popped between check and append.
+        self.arrived = 0
+        self.taken = 0
+        self.lost = 0  # pushed out, as counted so far
 
 
 class _In:
@@ -221,8 +232,9 @@ class TopicBridge:
 
     def _arrived(self, backlog: _Backlog, incoming: _In, sample: Any) -> None:
         # On zenoh's thread.  The loop may lag behind a peer that sends faster than it decodes:
-        # only the newest ``depth`` samples wait, which is all a subscription of that depth keeps.
+        # only the newest ``depth`` samples wait; the drain counts what was pushed out.
         backlog.samples.append(sample)
+        backlog.arrived += 1  # after the append: the drain's count may fall short until the next drain, never over
         if not backlog.scheduled:
             backlog.scheduled = True
             self._link.handoff.put(self._drain, (incoming, backlog))
@@ -231,8 +243,31 @@ class TopicBridge:
         incoming, backlog = item
         backlog.scheduled = False  # before taking: a sample appended from now on schedules another drain
         samples = backlog.samples
-        for _ in range(len(samples)):
+        taken = len(samples)
+        backlog.taken += taken
+        for _ in range(taken):
             self._deliver(incoming, samples.popleft())
+        arrived = backlog.arrived  # read before the length: a sample appended in between makes the count short
+        lost = arrived - backlog.taken - len(samples)
+        if lost > backlog.lost:
+            self._lost(incoming, lost - backlog.lost, samples.maxlen)
+            backlog.lost = lost
+
+    def _lost(self, incoming: _In, count: int, bound: int | None) -> None:
+        # The loop fell behind: count the loss where ROS users look, and say it (a line per topic per window).
+        name = incoming.inlet.topic_name
+        if self._ins.get(name) is not incoming:
+            return  # the topic stopped listening: nobody was waiting for them
+        topic = self._table.topics.get(name)
+        for sub in topic.subscriptions if topic is not None else ():
+            sub.lost(count)
+        why = "KEEP_ALL_BACKLOG" if bound == KEEP_ALL_BACKLOG else "the deepest subscription's depth"
+        self._link.warnings.warn(
+            incoming.key,
+            "backlog",  # not a peer's doing: its own line, apart from malformed samples' lines
+            f"dropped {count} sample(s) on {name}: they came faster than the graph could take them, "
+            f"and at most {bound} may wait ({why}); counted in its subscriptions' dropped",
+        )
 
     def _deliver(self, incoming: _In, sample: Any) -> None:
         if self._ins.get(incoming.inlet.topic_name) is not incoming:
