@@ -220,6 +220,11 @@ class Tap(Subscription):
         self._limit = sys.maxsize
         self._scheduled = True  # never on the actor's ready queue
 
+    def lost(self, count: int) -> None:
+        """Nothing: a tap's ``dropped`` is its sink's own count (the bag's metadata, doctor's "the
+        disk could not keep up"); what a transport lost before the topic, it reports itself."""
+        return None
+
     def _push(self, msg: Any) -> None:
         # publish() feeding several subscriptions: straight to the sink.  Subscription._push
         # has nothing to do for a tap (its queue never fills, it is never woken, and no batch is
