@@ -78,8 +78,9 @@ _types: dict[str, type[Any]] = {}  # every name already resolved, in the form it
 
 
 def _listed(value: Any) -> Any:
-    # msgspec knows no array.array (a numeric sequence, see actors.messages.arrays): it goes as a list.
-    if isinstance(value, array):
+    # msgspec knows no array.array (a numeric sequence, see actors.messages.arrays) and no numpy
+    # array (decode_cdr's views): each goes as a list.
+    if isinstance(value, array) or hasattr(value, "dtype"):
         return value.tolist()
     raise TypeError(f"Encoding objects of type {type(value).__name__} is unsupported")
 
@@ -303,13 +304,16 @@ def encode_cdr(msg: Any) -> bytes:
     return cdr.encode(msg)
 
 
-def decode_cdr(data: bytes | bytearray | memoryview, type_: type[T] | str) -> T:
+def decode_cdr(data: bytes | bytearray | memoryview, type_: type[T] | str, *, views: bool = False) -> T:
     """A ``type_`` message (a class or a ROS name) from CDR ``data``, either endianness.
 
-    Raises CdrError naming the type and field path for truncated or malformed
-    data, UnknownInterfaceError for an unknown name.
+    ``views=True`` makes every numeric array field (``uint8[]`` included,
+    ``bool[]`` aside) a read-only numpy view of ``data``, no copy: see
+    :func:`actors.messages.cdr.decode`.  Raises CdrError naming the type and
+    field path for truncated or malformed data, UnknownInterfaceError for an
+    unknown name.
     """
-    return cdr.decode(data, _resolve(type_))
+    return cdr.decode(data, _resolve(type_), views=views)
 
 
 def type_hash(type_: type[Any] | str) -> str:
@@ -430,6 +434,8 @@ def _info(cls: type) -> mi.Type:
 def _plain(value: Any, info: mi.Type) -> Any:
     if isinstance(info, mi.StructType):
         return {field.name: _plain(getattr(value, field.name), field.type) for field in info.fields}
+    if isinstance(info, (mi.ListType, mi.BytesType)) and hasattr(value, "dtype"):
+        value = value.tolist()  # a numpy view (decode_cdr's views=True): Python numbers, as YAML takes
     if isinstance(info, mi.ListType):
         return [_plain(item, info.item_type) for item in value]
     if isinstance(info, mi.BytesType):

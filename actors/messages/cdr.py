@@ -26,6 +26,13 @@ bytes) become one precompiled ``struct`` call; a numeric sequence, held as an
 ``frombytes``; ``uint8[]`` a bytes slice.  Where a run starts at an offset known only at run
 time (after a string), a table holds one ``Struct`` per possible alignment.
 
+``decode(..., views=True)`` has its own generated decoders: there a numeric
+array (``uint8[]`` included) is a ``numpy.frombuffer`` view of the input, in
+its byte order, made after the same length check; fixed-size ones leave the
+runs, and fields the class's ``__post_init__`` would copy into an
+``array.array`` are set after construction.  The encoders take such views
+(and any 1-D numpy vector of the field's type) in C.
+
 Decoding refuses anything malformed with :class:`CdrError` naming the type
 and the field path: lengths are checked against the bytes left *before*
 anything is allocated, so a forged length cannot make it allocate more than
@@ -73,6 +80,8 @@ _PRIMITIVES: dict[str, tuple[str, int]] = {
     "float64": ("d", 8),
 }
 assert all(array(code).itemsize == size for code, size in _PRIMITIVES.values() if code != "?")
+# Array typecode -> numpy's name of the same type, byte order aside.
+_NUMPY = {"b": "i1", "B": "u1", "h": "i2", "H": "u2", "i": "i4", "I": "u4", "q": "i8", "Q": "u8", "f": "f4", "d": "f8"}
 _FLOAT32_MAX = 3.4028234663852886e38
 _LITTLE_HOST = sys.byteorder == "little"
 
@@ -114,18 +123,33 @@ def encoder(cls: type, padding: int = 0) -> Callable[[bytearray, Any], None]:
     return fill
 
 
-def decode(data: bytes | bytearray | memoryview, cls: type[T]) -> T:
+def decode(data: bytes | bytearray | memoryview, cls: type[T], *, views: bool = False) -> T:
     """A ``cls`` message from CDR ``data`` (little- or big-endian, header included).
 
     Bytes after the message are ignored (rmw_fastrtps leaves a few).  Raises
     CdrError naming the type and the field path for truncated or malformed
     data, an unknown encapsulation, an invalid string or an over-long bounded
     field; TypeError when ``cls`` is not a generated message.
+
+    ``views=True``: every numeric sequence and fixed-size numeric array
+    (``uint8[]``, ``byte[]`` and ``char[]`` included; ``bool`` aside) is a
+    read-only ``numpy.frombuffer`` view of ``data`` instead of a copy, in
+    the data's byte order (a big-endian message gives big-endian dtypes).
+    The views keep ``data`` alive; a ``bytearray`` or writable
+    ``memoryview`` given as ``data`` is aliased, not copied: its later
+    changes show in the message (and a bytearray cannot be resized while
+    the message lives).
     """
-    decoders = _decoders.get(cls)
+    cache = _view_decoders if views else _decoders
+    decoders = cache.get(cls)
     if decoders is None:
         lay = layout(cls)
-        decoders = _decoders[cls] = (_compile_decoder(lay, ">", top=True), _compile_decoder(lay, "<", top=True))
+        decoders = cache[cls] = (
+            _compile_decoder(lay, ">", top=True, views=views),
+            _compile_decoder(lay, "<", top=True, views=views),
+        )
+    if views and type(data) is not bytes:
+        data = memoryview(data).toreadonly()  # numpy would make writable views of a bytearray
     if len(data) < 4 or data[0] != 0 or data[1] > 1:
         head = bytes(data[:4]).hex(" ") or "nothing"
         raise CdrError(f"{layout(cls).ros_type}: not plain CDR (the header is {head}, expected 00 01 00 00)")
@@ -191,8 +215,9 @@ _sequence_struct = functools.lru_cache(maxsize=256)(struct.Struct)
 _SPILL = 1 << 16  # arrays longer than this many bytes are spilled rather than copied into the buffer
 _encoders: dict[tuple[type, int], Callable[[bytearray, Any], None]] = {}
 _decoders: dict[type, tuple[Callable[..., Any], Callable[..., Any]]] = {}
+_view_decoders: dict[type, tuple[Callable[..., Any], Callable[..., Any]]] = {}
 _element_encoders: dict[tuple[type, int], Callable[[bytearray, Any], None]] = {}
-_element_decoders: dict[tuple[type, str], Callable[..., Any]] = {}
+_element_decoders: dict[tuple[type, str, bool], Callable[..., Any]] = {}
 
 
 # --------------------------------------------------------------------------- code generation
@@ -287,13 +312,30 @@ def _scalar_item(type_: FieldType, argument: str, path: str) -> tuple[str, int, 
 
 
 def _raw(value: Any, code: str, count: int) -> bytes:
-    """The little-endian bytes of a fixed-size numeric array: an array's own, or packed from any sequence.
+    """The little-endian bytes of ``count`` numbers: an array's own, a numpy vector's, or packed from any sequence.
 
-    struct refuses a sequence of another length or a value out of range, as it would in the run.
+    A numpy vector of the field's very type (a view :func:`decode` made, in
+    either byte order) is converted in C; anything else goes through struct,
+    which refuses a sequence of another length or a value out of range.
     """
     if _LITTLE_HOST and type(value) is array and value.typecode == code and len(value) == count:
         return value.tobytes()
+    dtype = getattr(value, "dtype", None)
+    if dtype is not None and dtype.str[1:] == _NUMPY[code] and value.ndim == 1 and len(value) == count:
+        return value.astype("<" + _NUMPY[code], copy=False).tobytes()
     return _sequence_struct(f"<{count}{code}").pack(*value)
+
+
+def _octets(value: Any, fixed: bool = False) -> Any:
+    """A ``uint8[]``/``byte[]`` value as the encoder appends it: bytes-like as is, a uint8 numpy vector's memory.
+
+    ``fixed``: for struct's ``s`` in a run, which takes bytes and bytearray only.
+    """
+    if isinstance(value, (bytes, bytearray, memoryview)):
+        return bytes(value) if fixed and type(value) is memoryview else value
+    if getattr(getattr(value, "dtype", None), "str", None) == "|u1" and value.ndim == 1:
+        return value.tobytes() if fixed or not value.flags.c_contiguous else memoryview(value)
+    raise TypeError(f"expected bytes or a 1-D uint8 numpy array, got {type(value).__name__}")
 
 
 def _fixed_size(type_: FieldType) -> bool:
@@ -309,6 +351,7 @@ def _compile_encoder(lay: MessageLayout, padding: int, *, top: bool) -> Callable
     src.namespace.update(
         PAD=tuple(bytes([padding]) * n for n in range(8)),
         RAW=_raw,
+        OCTETS=_octets,
         U32=struct.Struct("<I").pack,
         ST=_sequence_struct,
         padding=padding,
@@ -338,7 +381,11 @@ def _encode_fields(src: _Source, lay: MessageLayout, expr: str, path: str) -> No
             if type_.array == "fixed" and type_.base in OCTETS:
                 _flush_encode(src)
                 src.mark(where)
-                src.emit(f"if len({value}) != {type_.size}: raise _Bad")
+                local = src.name("o")  # the run's argument: struct's "s" takes bytes and bytearray only
+                src.emit(f"{local} = {value}")
+                src.emit(f"if type({local}) is not bytes: {local} = OCTETS({local}, True)")
+                src.emit(f"if len({local}) != {type_.size}: raise _Bad")
+                value = local
             src.run.append(_scalar_item(type_, value, where))
         else:
             _flush_encode(src)
@@ -409,20 +456,21 @@ def _encode_array(src: _Source, type_: FieldType, value: str, nested: MessageLay
         src.phase = None  # each item moves it
         _encode_string(src, type_, "e", 2)
     elif type_.base in OCTETS:
+        src.emit("if type(v) is not bytes: v = OCTETS(v)")
         src.emit(f"if len(v) > {_SPILL}: buf.spill(v)")
         src.emit("else: buf += v")
     elif type_.base == "bool":
         src.emit("buf += bytes(map(bool, v))")
     else:  # a sequence of numbers (fixed arrays of them are part of runs)
         code, size = _PRIMITIVES[type_.base]
-        src.emit("if v:")
+        src.emit("if len(v):")  # a numpy vector has no truth value
         src.phase = None
         src.align(size, 2)
         if _LITTLE_HOST:  # an array of the field's own typecode is its CDR bytes already
             src.emit(f"if type(v) is array and v.typecode == {code!r}: a = v.tobytes()", 2)
-            src.emit(f"else: a = ST(f'<{{len(v)}}{code}').pack(*v)", 2)
+            src.emit(f"else: a = RAW(v, {code!r}, len(v))", 2)
         else:
-            src.emit(f"a = ST(f'<{{len(v)}}{code}').pack(*v)", 2)
+            src.emit(f"a = RAW(v, {code!r}, len(v))", 2)
         src.emit(f"if len(a) > {_SPILL}: buf.spill(a)", 2)
         src.emit("else: buf += a", 2)
     src.phase = None
@@ -431,7 +479,7 @@ def _encode_array(src: _Source, type_: FieldType, value: str, nested: MessageLay
 # ----- decoders
 
 
-def _compile_decoder(lay: MessageLayout, endian: str, *, top: bool) -> Callable[..., Any]:
+def _compile_decoder(lay: MessageLayout, endian: str, *, top: bool, views: bool = False) -> Callable[..., Any]:
     src = _Source(lay, top, "pos += {}", "pos += (4 - pos) & {}")
     src.namespace.update(
         U32=struct.Struct(endian + "I").unpack_from,
@@ -439,19 +487,37 @@ def _compile_decoder(lay: MessageLayout, endian: str, *, top: bool) -> Callable[
         endian=endian,
         swap=(endian == "<") != _LITTLE_HOST,
         SWAPPED=_swapped,
+        views=views,
     )
+    if views:
+        import numpy  # a core dependency, imported by the first decoder that makes views
+
+        src.namespace.update(VIEW=numpy.frombuffer, SET=_set_fields)
     constructor = _decode_fields(src, lay, "$")
     _flush_decode(src)
     for token, value in src.values.items():
         constructor = constructor.replace(token, value)
-    return src.compile("d, pos", [f"    return {constructor}, pos"], f"<cdr decoder {lay.ros_type}>")
+    kind = "view decoder" if views else "decoder"
+    return src.compile("d, pos", [f"    return {constructor}, pos"], f"<cdr {kind} {lay.ros_type}>")
 
 
-def _element_decoder(lay: MessageLayout, endian: str) -> Callable[..., Any]:
-    key = (lay.cls, endian)
+def _element_decoder(lay: MessageLayout, endian: str, views: bool) -> Callable[..., Any]:
+    key = (lay.cls, endian, views)
     if key not in _element_decoders:
-        _element_decoders[key] = _compile_decoder(lay, endian, top=False)
+        _element_decoders[key] = _compile_decoder(lay, endian, top=False, views=views)
     return _element_decoders[key]
+
+
+def _viewed(type_: FieldType) -> bool:
+    """True for a field that a decoder with views makes a numpy view: numbers in an array, bool aside."""
+    return type_.array is not None and not type_.is_nested and type_.base not in STRINGS and type_.base != "bool"
+
+
+def _set_fields(msg: T, names: tuple[str, ...], *values: Any) -> T:
+    """``msg`` with ``values`` set as they are: its ``__post_init__`` would copy a numpy view into an array."""
+    for name, value in zip(names, values):
+        setattr(msg, name, value)
+    return msg
 
 
 def _decode_fields(src: _Source, lay: MessageLayout, path: str) -> str:
@@ -459,13 +525,14 @@ def _decode_fields(src: _Source, lay: MessageLayout, path: str) -> str:
     if lay.placeholder:
         src.run.append(("B", 1, 1, "", path))
         return f"{src.name('C', lay.cls)}()"
-    arguments = []
+    arguments, late = [], []
+    views = src.namespace["views"]
     for field in lay.fields:
         type_, where = field.type, f"{path}.{field.name}"
         if type_.array is None and type_.is_nested:
             assert field.nested is not None
             arguments.append(f"{field.name}={_decode_fields(src, field.nested, where)}")
-        elif _fixed_size(type_):
+        elif _fixed_size(type_) and not (views and _viewed(type_)):
             src.run.append(_scalar_item(type_, "", where))
             token = f"@{len(src.pending)}@{len(src.values)}@"  # replaced once the run is unpacked
             src.pending.append((token, type_, len(src.run) - 1))
@@ -475,8 +542,15 @@ def _decode_fields(src: _Source, lay: MessageLayout, path: str) -> str:
             src.mark(where)
             value = src.name("v")
             _decode_array(src, type_, value, field.nested)
-            arguments.append(f"{field.name}={value}")
-    return f"{src.name('C', lay.cls)}({', '.join(arguments)})"
+            if views and typecode(type_):  # set after the constructor, whose __post_init__ would copy it
+                late.append((field.name, value))
+            else:
+                arguments.append(f"{field.name}={value}")
+    made = f"{src.name('C', lay.cls)}({', '.join(arguments)})"
+    if late:
+        names = tuple(name for name, _ in late)
+        made = f"SET({made}, {src.name('N', names)}, {', '.join(value for _, value in late)})"
+    return made
 
 
 def _flush_decode(src: _Source) -> None:
@@ -560,15 +634,19 @@ def _decode_array(src: _Source, type_: FieldType, target: str, nested: MessageLa
         src.emit("for i in range(n):")
         src.phase = None  # each item moves it
         if nested is not None:
-            src.emit(f"e, pos = {src.name('D', _element_decoder(nested, src.namespace['endian']))}(d, pos)", 2)
+            element = _element_decoder(nested, src.namespace["endian"], src.namespace["views"])
+            src.emit(f"e, pos = {src.name('D', element)}(d, pos)", 2)
         else:
             _decode_string(src, type_, "e", 2)
         src.emit(f"{target}.append(e)", 2)
         src.emit("i = -1")  # out of the loop: errors after it are not in an item
         src.phase = None
         return
-    # A sequence of primitives (fixed arrays of them are part of runs).
+    # A sequence of primitives (fixed arrays of them are part of runs, unless made views).
     code, size = _PRIMITIVES[type_.base]
+    if src.namespace["views"] and _viewed(type_):
+        _decode_view(src, type_, target, code, size)
+        return
     src.emit("if n:")
     src.phase = None
     src.align(size, 2)
@@ -585,6 +663,30 @@ def _decode_array(src: _Source, type_: FieldType, target: str, nested: MessageLa
     src.emit("else:")
     empty = {"bool": "[]", **dict.fromkeys(OCTETS, 'b""')}.get(type_.base, f"array({code!r})")
     src.emit(f"{target} = {empty}", 2)
+    src.phase = None
+
+
+def _decode_view(src: _Source, type_: FieldType, target: str, code: str, size: int) -> None:
+    """Emit the making of a read-only numpy view of ``n`` items at ``pos``, checked against the bytes left."""
+    import numpy
+
+    dtype = src.name("T", numpy.dtype(src.namespace["endian"] + code))
+    fixed = type_.array == "fixed"
+    depth = 1 if fixed else 2
+    if not fixed:
+        src.emit("if n:")
+        src.phase = None
+    src.align(size, depth)
+    src.emit(f"end = pos + {size} * n", depth)
+    src.emit(f"if end > len(d): raise _Bad(f'{{n}} items of {size} bytes, {{len(d) - pos}} bytes left')", depth)
+    src.emit(f"{target} = VIEW(d, {dtype}, n, pos); pos = end", depth)
+    if fixed:
+        assert type_.size is not None  # a fixed array has its size
+        if src.phase is not None:
+            src.phase = (src.phase + size * type_.size) % 8
+        return
+    src.emit("else:")
+    src.emit(f"{target} = VIEW(b'', {dtype})", 2)
     src.phase = None
 
 
@@ -664,8 +766,8 @@ def _problem(lay: MessageLayout, value: Any, path: str) -> tuple[str, str] | Non
         item, where, type_ = getattr(value, field.name), f"{path}.{field.name}", field.type
         if type_.array is None:
             found = _item_problem(type_, field.nested, item, where)
-        elif type_.base in OCTETS and not isinstance(item, (bytes, bytearray, memoryview)):
-            found = where, f"expected bytes, got {type(item).__name__}"
+        elif type_.base in OCTETS and not _is_octets(item):
+            found = where, f"expected bytes, got {_kind(item)}"
         elif not hasattr(item, "__len__") or (isinstance(item, (str, bytes)) and type_.base not in OCTETS):
             found = where, f"expected a sequence, got {type(item).__name__}"
         elif type_.array == "fixed" and len(item) != type_.size:
@@ -675,12 +777,28 @@ def _problem(lay: MessageLayout, value: Any, path: str) -> tuple[str, str] | Non
         elif type_.base in OCTETS:
             found = None
         else:
+            if hasattr(item, "dtype"):  # a numpy vector: its items as Python numbers, as the checks expect
+                item = item.tolist()
             found = next(
                 (p for i, e in enumerate(item) if (p := _item_problem(type_, field.nested, e, f"{where}[{i}]"))), None
             )
         if found:
             return found
     return None
+
+
+def _is_octets(value: Any) -> bool:
+    try:
+        _octets(value)
+    except TypeError:
+        return False
+    return True
+
+
+def _kind(value: Any) -> str:
+    """``value``'s type name, with its dtype for a numpy array."""
+    dtype = getattr(value, "dtype", None)
+    return f"{type(value).__name__} of {dtype}" if dtype is not None else type(value).__name__
 
 
 def _item_problem(type_: FieldType, nested: MessageLayout | None, value: Any, path: str) -> tuple[str, str] | None:
