@@ -10,6 +10,12 @@ actors, see :mod:`bench.cdr_rclpy`).
 Each side's message is built by decoding actors' bytes, so all three handle
 the same values.  Each sample times a loop; the table shows the median µs
 per message and the ratios to rclpy and rosbags (higher is better).
+
+Decoding is compared like with like: rclpy's deserialize (arrays copied
+into ``array.array``) with actors' default decode, rosbags' (numeric arrays
+as zero-copy numpy views of the input) with ``decode_cdr(..., views=True)``,
+the row "actors decode, zero-copy views".  actors and rosbags take turns
+sample by sample (:func:`bench.harness.side_by_side`).
 """
 
 from __future__ import annotations
@@ -23,16 +29,17 @@ from typing import Any
 from actors import codec
 from bench import codec as codec_bench
 from bench import ros
-from bench.harness import Result, micros_per_call, repeat, run_child, standalone
+from bench.harness import Result, micros_per_call, run_child, side_by_side, standalone
 from interfaces.geometry_msgs.msg import Point, Pose, PoseWithCovariance, Quaternion, TwistWithCovariance
 from interfaces.nav_msgs.msg import Odometry
 from interfaces.sensor_msgs.msg import Image, PointCloud2, PointField
 from interfaces.std_msgs.msg import Header
 
-__all__ = ["samples", "run"]
+__all__ = ["samples", "run", "actors_case", "worst_ratio"]
 
 SCENARIO = "i. CDR"
 ROSBAGS_HINT = "rosbags: not installed — pip install -e '.[bench-ros]'"
+VIEWS = "decode, zero-copy views"  # actors' decode_cdr(..., views=True), beside "decode"
 
 
 def samples() -> dict[str, Any]:
@@ -78,28 +85,29 @@ def loops_for(name: str, quick: bool) -> int:
     return max(1, loops // 20) if quick else loops
 
 
-def _measure(
-    encode: Callable[[], bytes], decode: Callable[[], object], loops: int, reps: int
-) -> dict[str, list[float]]:
+def actors_case(baseline: str, verb: str) -> str:
+    """The actors row ``baseline``'s ``verb`` row is compared with: a decode with the one that holds the same."""
+    return f"actors {VIEWS}" if (baseline, verb) == ("rosbags", "decode") else f"actors {verb}"
+
+
+def _same(data: bytes, msg: Any, views: bool = False) -> bool:
+    """Whether ``data`` holds ``msg``'s values (float32 fields rounded as CDR carries them)."""
+    return codec.encode_cdr(codec.decode_cdr(data, type(msg), views=views)) == codec.encode_cdr(msg)
+
+
+def _actors(msg: Any) -> dict[str, Callable[[], object]]:
+    """actors' CDR encode, decode and decode with views of ``msg``, by verb."""
+    data, cls = codec.encode_cdr(msg), type(msg)
+    assert _same(data, msg) and _same(data, msg, views=True)
     return {
-        verb: repeat(lambda: micros_per_call(fn, loops), reps) for verb, fn in (("encode", encode), ("decode", decode))
+        "encode": lambda: codec.encode_cdr(msg),
+        "decode": lambda: codec.decode_cdr(data, cls),
+        VIEWS: lambda: codec.decode_cdr(data, cls, views=True),
     }
 
 
-def _same(data: bytes, msg: Any) -> bool:
-    """Whether ``data`` holds ``msg``'s values (float32 fields rounded as CDR carries them)."""
-    return codec.encode_cdr(codec.decode_cdr(data, type(msg))) == codec.encode_cdr(msg)
-
-
-def measure_actors(name: str, msg: Any, loops: int, reps: int) -> dict[str, list[float]]:
-    """actors' CDR encode and decode of ``msg``."""
-    data, cls = codec.encode_cdr(msg), type(msg)
-    assert _same(data, msg)
-    return _measure(lambda: codec.encode_cdr(msg), lambda: codec.decode_cdr(data, cls), loops, reps)
-
-
-def measure_rosbags(name: str, msg: Any, loops: int, reps: int) -> dict[str, list[float]] | str:
-    """rosbags' CDR serializer on the same message, or why it cannot run."""
+def _rosbags(msg: Any) -> dict[str, Callable[[], object]] | str:
+    """rosbags' CDR serializer on the same message, by verb, or why it cannot run."""
     try:
         from rosbags.typesys import Stores, get_typestore
     except ImportError:
@@ -109,9 +117,20 @@ def measure_rosbags(name: str, msg: Any, loops: int, reps: int) -> dict[str, lis
     theirs = store.deserialize_cdr(codec.encode_cdr(msg), ros_type)
     data = store.serialize_cdr(theirs, ros_type)
     assert _same(data, msg)
-    return _measure(
-        lambda: store.serialize_cdr(theirs, ros_type), lambda: store.deserialize_cdr(data, ros_type), loops, reps
-    )
+    return {
+        "encode": lambda: store.serialize_cdr(theirs, ros_type),
+        "decode": lambda: store.deserialize_cdr(data, ros_type),
+    }
+
+
+def measure(msg: Any, loops: int, reps: int) -> dict[str, dict[str, list[float]] | str]:
+    """µs per call of actors' and rosbags' coders of ``msg``, taking turns: side -> verb -> samples."""
+    sides = {"actors": _actors(msg), "rosbags": _rosbags(msg)}
+    calls = {(side, verb): fn for side, fns in sides.items() if not isinstance(fns, str) for verb, fn in fns.items()}
+    timed = side_by_side({key: lambda fn=fn: micros_per_call(fn, loops) for key, fn in calls.items()}, reps)
+    return {
+        side: fns if isinstance(fns, str) else {verb: timed[side, verb] for verb in fns} for side, fns in sides.items()
+    }
 
 
 def measure_rclpy(quick: bool, reps: int) -> dict[str, dict[str, list[float]]] | str:
@@ -145,15 +164,13 @@ def run(quick: bool) -> list[Result]:
     rclpy_rows = measure_rclpy(quick, reps)
     results = []
     for name, msg in samples().items():
-        loops = loops_for(name, quick)
-        sides: dict[str, dict[str, list[float]] | str] = {
-            "actors": measure_actors(name, msg, loops, reps),
-            "rosbags": measure_rosbags(name, msg, loops, reps),
-            "rclpy": rclpy_rows if isinstance(rclpy_rows, str) else rclpy_rows[name],
-        }
+        sides = measure(msg, loops_for(name, quick), reps)
+        sides["rclpy"] = rclpy_rows if isinstance(rclpy_rows, str) else rclpy_rows[name]
         size = len(codec.encode_cdr(msg))
-        for verb in ("encode", "decode"):
+        for verb in ("encode", "decode", VIEWS):
             for side, rows in sides.items():
+                if verb == VIEWS and side != "actors":
+                    continue
                 result = Result(f"{SCENARIO} {name}", f"{side} {verb}", "µs/msg", [], higher_better=False)
                 if isinstance(rows, str):
                     result.note = rows
@@ -161,20 +178,29 @@ def run(quick: bool) -> list[Result]:
                     result.samples = rows[verb]
                     result.note = f"{1e6 / result.median:,.0f} msg/s, {size:,} B"
                 if side == "actors":
-                    result.baselines = {"rclpy": f"rclpy {verb}", "rosbags": f"rosbags {verb}"}
+                    result.baselines = {
+                        base: f"{base} {base_verb}"
+                        for base in ("rclpy", "rosbags")
+                        for base_verb in ("encode", "decode")
+                        if actors_case(base, base_verb) == result.case
+                    }
                 results.append(result)
     return results
 
 
 def worst_ratio(get: Callable[[str, str], Result | None], baseline: str) -> tuple[float, str] | None:
-    """The smallest ratio of actors to ``baseline`` over every sample and verb, and where it is."""
+    """The smallest ratio of actors to ``baseline`` over every sample and verb, and where it is.
+
+    Each of ``baseline``'s rows is compared with the actors row that holds the same (:func:`actors_case`).
+    """
     found = []
     for name in samples():
         for verb in ("encode", "decode"):
-            ours, theirs = get(f"{SCENARIO} {name}", f"actors {verb}"), get(f"{SCENARIO} {name}", f"{baseline} {verb}")
+            scenario = f"{SCENARIO} {name}"
+            ours, theirs = get(scenario, actors_case(baseline, verb)), get(scenario, f"{baseline} {verb}")
             if ours is None or theirs is None or not ours.samples or not theirs.samples:
                 return None
-            found.append((ours.ratio(theirs), f"{name} {verb}"))
+            found.append((ours.ratio(theirs), f"{name} {ours.case.removeprefix('actors ')}"))
     return min(found) if found else None
 
 

@@ -253,7 +253,11 @@ TARGETS = (
         "CDR encode and decode ≥ rclpy's serialize/deserialize (Twist, LaserScan, Odometry, Image, PointCloud2)",
         _cdr("rclpy", 1),
     ),
-    Target("i", "CDR encode and decode ≥ rosbags' serializer (the same five; issue 33)", _cdr("rosbags", 1)),
+    Target(
+        "i",
+        "CDR encode and decode ≥ rosbags' serializer (the same five, decoded to numpy views, as rosbags'; issue 33)",
+        _cdr("rosbags", 1),
+    ),
     Target("i", "CDR encode and decode ≥ 2× rosbags' serializer (the same five)", _cdr("rosbags", 2)),
 )
 

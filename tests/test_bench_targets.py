@@ -63,3 +63,29 @@ def test_recording_and_cross_process_targets_read_their_rows() -> None:
     assert _row(table, "≥ 0.8× the bare-zenoh floor").endswith("| 0.90×, 0.80×, 0.50× | **not met** |")
     assert _row(table, "recorder on ≥ 0.5× off").endswith("| 0.60× | met |")
     assert _row(table, "LaserScan writing").endswith("| not measured | — |")
+
+
+def _cdr_rows(copying_decode: float, views_decode: float) -> list[Result]:
+    """Scenario i's rows: each sample's encode and rclpy's decode at 1 µs against 2 µs, the decodes as given."""
+    from bench.cdr import SCENARIO, VIEWS, samples
+
+    rows = {"rclpy encode": 2.0, "rosbags encode": 2.0, "rclpy decode": 2.0, "rosbags decode": 2.0}
+    rows |= {"actors encode": 1.0, "actors decode": copying_decode, f"actors {VIEWS}": views_decode}
+    return [
+        Result(f"{SCENARIO} {name}", case, "µs/msg", [value], higher_better=False)
+        for name in samples()
+        for case, value in rows.items()
+    ]
+
+
+def test_the_rosbags_decode_target_reads_the_views_row_and_rclpys_the_copying_one():
+    # Copying decode slow (as an Image's against rosbags' views), views fast: rosbags met, rclpy not.
+    table = check(_cdr_rows(copying_decode=8.0, views_decode=0.5), "i")
+    assert _row(table, "≥ rosbags' serializer").endswith("| worst 2.00× (Image 640×480 rgb8 encode) | met |")
+    assert _row(table, "≥ rclpy's serialize").endswith("| worst 0.25× (Image 640×480 rgb8 decode) | **not met** |")
+    # The other way round: the copying row alone can never meet the rosbags target.
+    table = check(_cdr_rows(copying_decode=0.5, views_decode=8.0), "i")
+    assert _row(table, "≥ rosbags' serializer").endswith(
+        "| worst 0.25× (Image 640×480 rgb8 decode, zero-copy views) | **not met** |"
+    )
+    assert _row(table, "≥ rclpy's serialize").endswith("| worst 2.00× (Image 640×480 rgb8 encode) | met |")
