@@ -514,3 +514,43 @@ def test_a_runtime_runs_on_uvloop():
                 await node.third.wait()
 
     anyio.run(main, backend_options={"loop_factory": uvloop_loop})
+
+
+def _reads(clock: ROSClock) -> tuple[int, int, int]:
+    """now_ns(), then the reader's time as ROS time, then now_ns() again."""
+    before = clock.now_ns()
+    (read,) = clock.ns_at([clock.reader()()])
+    return before, read, clock.now_ns()
+
+
+def test_the_clocks_reader_reads_what_now_ns_reads_on_virtual_time():
+    async def main() -> tuple[tuple[int, int, int], float]:
+        clock = ROSClock(asyncio.get_running_loop())
+        await asyncio.sleep(2.5)
+        return _reads(clock), clock.reader()()
+
+    with asyncio.Runner(loop_factory=lambda: VirtualTimeLoop(epoch=1000.0)) as runner:
+        assert runner.run(main()) == ((1_002_500_000_000,) * 3, 2.5)
+    with pytest.raises(RuntimeError, match="unbound ROSClock"):
+        ROSClock().reader()
+
+
+def test_the_clocks_reader_on_uvloop_moves_within_a_callback_as_now_ns_does():
+    # A recorder stamps with the reader (ROSClock.reader): on uvloop it must not be loop.time(),
+    # the millisecond of the loop's last turn.
+    pytest.importorskip("uvloop")
+
+    async def main() -> tuple[tuple[int, int, int], float, float]:
+        clock = ROSClock(asyncio.get_running_loop())
+        read = clock.reader()
+        first = later = read()
+        for _ in range(10_000_000):  # the clock moves within microseconds: no wait for time to pass
+            later = read()
+            if later != first:
+                break
+        return _reads(clock), first, later
+
+    (before, read, after), first, later = anyio.run(main, backend_options={"use_uvloop": True})
+    assert before <= read <= after
+    assert later > first
+    assert round((later - first) * 1e9) % 1_000_000, f"the reader moved by whole milliseconds: {later - first} s"

@@ -29,7 +29,6 @@ from __future__ import annotations
 import asyncio
 import re
 import threading
-import time
 from collections import deque
 from collections.abc import Iterator, Sequence
 from pathlib import Path
@@ -157,11 +156,9 @@ class Recorder:
             # not for every turn of the loop that published something.
             self._handoff = max(1, min(_HANDOFF, self.max_pending // 4))
         self._now_ns = runtime.clock.now_ns
-        # Off virtual time the loop's clock is the monotonic clock: asyncio's loop reads it (read
-        # here, a frame less), uvloop's keeps it to the millisecond as of its last turn, which
-        # would give a whole burst one log time.  Each message gets its own receive time.
-        loop_time = runtime.loop.time if runtime.clock.virtual else time.monotonic
-        self._loop_time, self._ns_at = loop_time, runtime.clock.ns_at
+        # The clock's own reader (never uvloop's millisecond loop.time: each message its own
+        # receive time), a quarter of now_ns()'s cost in publish(); ROS time when written.
+        self._loop_time, self._ns_at = runtime.clock.reader(), runtime.clock.ns_at
         self._runtime = runtime
         try:
             self._taps.start(runtime)
@@ -264,7 +261,7 @@ class Recorder:
             items = self._items
         if not items or len(items) == self._handoff - 1:
             self._wake()  # the first sets the writer task's deadline; a whole batch goes at once
-        items.append((tap, self._loop_time(), msg))  # a quarter of now_ns()'s cost, in publish()
+        items.append((tap, self._loop_time(), msg))
 
     # -- the writer side ------------------------------------------------------------
 

@@ -23,7 +23,7 @@ from __future__ import annotations
 import asyncio
 import math
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from enum import IntEnum
 from typing import Any
 
@@ -387,6 +387,15 @@ class ROSClock(Clock):
             return [self._override_ns] * len(loop_times)
         epoch = self._epoch_ns
         return [epoch + round(t * _NS) for t in loop_times]
+
+    def reader(self) -> Callable[[], float]:
+        """The function that reads the seconds :meth:`now_ns` adds its epoch to: the loop's
+        virtual time, else ``time.monotonic`` itself (on uvloop too, whose ``loop.time()`` is
+        that clock to the millisecond as of its last turn).  For whoever stamps many messages
+        and converts a batch later (:meth:`ns_at`); RuntimeError for an unbound clock."""
+        if self._loop is None:
+            raise RuntimeError("an unbound ROSClock has no loop time; use a runtime's clock")
+        return self._time
 
     def monotonic(self) -> float:
         """The loop's time in seconds: what timers and deadlines are measured in."""
