@@ -22,6 +22,7 @@ from actors.recording import Recorder
 from actors.recording.mcap_writer import McapWriter
 from actors.recording.reader import Bag
 from actors.recording.tap import Tap
+from actors.ros.topics import PublisherState
 from interfaces.std_msgs.msg import String
 
 mcap_reader = pytest.importorskip("mcap.reader")
@@ -564,3 +565,60 @@ async def test_what_a_transport_lost_on_the_way_is_not_counted_as_the_recorders_
         assert {tap.topic_name: tap.dropped for tap in recorder._taps.all()}["/burst"] == 0
     assert recorder.dropped == 0
     assert "dropped" not in format_info(Bag(path)).lower()
+
+
+class Heard(Node):
+    """Subscribes to /burst and keeps what it hears."""
+
+    def __init__(self, name: str) -> None:
+        super().__init__(name)
+        self.heard: list[str] = []
+        self.sub = self.create_subscription(String, "burst", lambda msg: self.heard.append(msg.data), 100)
+
+
+@pytest.mark.virtual_time
+async def test_a_recorded_topic_keeps_its_publishers_paths_and_every_message_reaches_all(tmp_path):
+    # A tap is no feed: the publisher hands it each snapshot as it makes it, and keeps its one
+    # queue or its batch for the subscriptions (a tap among the feeds used to take both away).
+    path = tmp_path / "paths.mcap"
+    async with Runtime(attach=[Recorder(path, topics=["/burst"])]) as rt:
+        first = rt.spawn(Heard, "first")
+        pub = rt.spawn(Burst, 0).pub
+        pub.publish(String(data="m0"))
+        assert pub._only is first.sub  # one subscription: fed inline, as without a recorder
+        second = rt.spawn(Heard, "second")
+        for i in range(1, 30):
+            pub.publish(String(data=f"m{i}"))
+            assert pub.state is PublisherState.BATCH_OPEN  # two: one append to the batch they hold
+        assert pub.invariant_violations() == []
+        await anyio.sleep(1)
+    assert first.heard == [f"m{i}" for i in range(30)]
+    assert second.heard == [f"m{i}" for i in range(1, 30)]
+    assert _recorded(path, "/burst") == [f"m{i}" for i in range(30)]
+
+
+@pytest.mark.virtual_time
+async def test_a_publisher_that_trusts_its_fields_once_tapped_is_still_recorded(tmp_path):
+    path = tmp_path / "trust.mcap"
+    async with Runtime(attach=[Recorder(path, topics=["/burst"])]) as rt:
+        rt.spawn(Heard, "heard")
+        pub = rt.spawn(Burst, 0).pub
+        pub.publish(String(data="m0"))
+        pub.trust()  # new snapshot functions: the tap wraps them again
+        pub.publish(String(data="m1"))
+        await anyio.sleep(1)
+    assert _recorded(path, "/burst") == ["m0", "m1"]
+
+
+@pytest.mark.virtual_time
+async def test_a_destroyed_publisher_is_not_recorded(tmp_path):
+    path = tmp_path / "gone.mcap"
+    async with Runtime(attach=[Recorder(path, topics=["/burst"])]) as rt:
+        rt.spawn(Heard, "heard")
+        node = rt.spawn(Burst, 0)
+        pub = node.pub
+        pub.publish(String(data="m0"))
+        node.destroy_publisher(pub)
+        pub.publish(String(data="late"))  # nobody receives it: the recorder no more than the rest
+        await anyio.sleep(1)
+    assert _recorded(path, "/burst") == ["m0"]

@@ -4,7 +4,8 @@
 --record run.mcap``) records every topic, or those named, from the moment it
 appears, through a :class:`~actors.recording.tap.TapSet`: each tapped message
 is stamped with the runtime clock when it is published and put on the
-recorder's buffer.
+recorder's buffer, inside the publisher's snapshot function (one call more
+per message, see :meth:`Recorder._wrap`).
 
 A writer task takes the buffer a batch at a time, encodes each message as CDR
 and writes it into the MCAP file (:mod:`actors.recording.mcap_writer`).  On the
@@ -30,7 +31,7 @@ import asyncio
 import re
 import threading
 from collections import deque
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -102,8 +103,13 @@ class Recorder:
         self.flush_interval = flush_interval
         self.path: Path | None = None  # the MCAP file, once open
         self._writer: BagWriter | None = None
-        self._taps = TapSet(RECORDER_NODE, self._takes, self._take, depth=max_pending, label="recorder")
+        self._taps = TapSet(
+            RECORDER_NODE, self._takes, self._take, depth=max_pending, label="recorder", wrap=self._wrap
+        )
         self._items: list[tuple[Tap, float, Any]] = []
+        # While the buffer is shorter than this, a message only goes on it; at this length there
+        # is something else to do first (see _take): 0 while empty (the first sets the deadline).
+        self._room = 0
         # Batches taken from the buffer, written in order by whichever thread holds the lock.
         self._batches: deque[list[tuple[Tap, float, Any]]] = deque()
         self._lock = threading.Lock()
@@ -188,8 +194,7 @@ class Recorder:
                     await self._waiter
                 if due.cancelled_caught:
                     break
-            self._batches.append(self._items)
-            self._items = []
+            self._take_buffer()
             if inline:
                 failures = self._write_batches()
             else:
@@ -219,8 +224,7 @@ class Recorder:
         writer = self._writer
         if writer is None:
             return
-        self._batches.append(self._items)
-        self._items = []
+        self._take_buffer()
         self._write_batches()  # with a batch the cancelled writer task had taken but not written
         for tap in self._taps.all():
             if tap.channel is None and writer.error is None:
@@ -248,6 +252,25 @@ class Recorder:
     def _takes(self, topic: str) -> bool:
         return self.wants(topic) and self._writer is not None and self._writer.error is None
 
+    def _wrap(self, tap: Tap, snapshot: Callable[[Any], Any]) -> Callable[[Any], Any]:
+        """A publisher's snapshot function that also stamps and buffers each snapshot for ``tap``.
+
+        publish() calls it once per message, whatever its path to the other subscriptions:
+        this is all that recording adds to a publish while the buffer has room.
+        """
+        stamp = self._loop_time
+
+        def tapped(msg: Any) -> Any:
+            msg = snapshot(msg)
+            items = self._items
+            if len(items) < self._room:
+                items.append((tap, stamp(), msg))
+            else:
+                self._take(tap, msg)
+            return msg
+
+        return tapped
+
     def _take(self, tap: Tap, msg: Any) -> None:
         """Stamp a tapped message and buffer it for the writer; when the buffer is full,
         write it now (the publisher waits for the disk), or drop the message if lossy."""
@@ -262,6 +285,14 @@ class Recorder:
         if not items or len(items) == self._handoff - 1:
             self._wake()  # the first sets the writer task's deadline; a whole batch goes at once
         items.append((tap, self._loop_time(), msg))
+        waking = self._handoff - 1
+        self._room = waking if len(items) < waking else self.max_pending
+
+    def _take_buffer(self) -> None:
+        """Queue the buffer as a batch for the writer; a new one starts."""
+        self._batches.append(self._items)
+        self._items = []
+        self._room = 0
 
     # -- the writer side ------------------------------------------------------------
 
@@ -274,8 +305,7 @@ class Recorder:
 
     def _write_now(self) -> None:
         """Write the full buffer in the loop's thread (after the worker's batch in progress)."""
-        self._batches.append(self._items)
-        self._items = []
+        self._take_buffer()
         failures = self._write_batches()
         if self._runtime is not None:
             self._after_batch(self._runtime, failures)

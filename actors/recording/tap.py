@@ -1,12 +1,15 @@
 """Taps: subscriptions that hand every message published on a topic to a sink, and the set that follows the graph.
 
-A tap is a subscription that never runs a callback: ``publish()`` delivers to
-it as to any subscription, and its queue hands the message at once to the
-tap set's ``deliver(tap, msg)``.  So a graph with no recorder and no live view
-pays nothing (``publish()`` has no branch for them), and the sink sees each
-message when it is published (to stamp it with the runtime clock).  The
-messages are the snapshots ``publish()`` gives every subscriber, so a sink may
-encode them later.
+A tap is a subscription that never runs a callback and is never fed: each
+publisher matched to it wraps its snapshot function (``Subscription._wrap``)
+in one that hands every snapshot at once to the tap set's ``deliver(tap,
+msg)``, or to what its ``wrap(tap, snapshot)`` makes of it (the recorder's
+stamps and buffers the message in that one function).  So a graph with no
+recorder and no live view pays nothing (``publish()`` has no branch for them),
+a tapped publisher keeps its path to its subscriptions (one queue, a batch),
+and the sink sees each message when it is published (to stamp it with the
+runtime clock).  The messages are the snapshots ``publish()`` gives every
+subscriber, so a sink may encode them later.
 
 A :class:`TapSet` hears of topics through the topic table's graph events
 (``TopicTable.listeners``) and taps each wanted topic from its first
@@ -30,6 +33,8 @@ if TYPE_CHECKING:
 __all__ = ["Tap", "TapSet", "latched"]
 
 Deliver = Callable[["Tap", Any], None]
+Snapshot = Callable[[Any], Any]
+Wrap = Callable[["Tap", Snapshot], Snapshot]
 
 
 class TapSet:
@@ -37,7 +42,10 @@ class TapSet:
 
     ``node`` is the hidden owner's name (``topic info`` shows it), ``depth``
     the taps' QoS depth, ``label`` what the log calls the sink; ``tapped(tap)``
-    is told of each new tap before its first message.  :meth:`start`
+    is told of each new tap before its first message.  ``wrap(tap, snapshot)``,
+    if given, returns a publisher's snapshot function that also takes each
+    snapshot for ``tap`` (it stands for ``deliver``, which still takes what a
+    late subscriber would get).  :meth:`start`
     taps what exists and follows the graph; :meth:`stop` removes every tap
     (:meth:`all` still lists them).  A topic that comes back with its type gets
     its old tap's ``channel``, so a sink keeps one channel per topic.
@@ -52,12 +60,14 @@ class TapSet:
         depth: int = 1000,
         label: str = "tap",
         tapped: Callable[[Tap], None] | None = None,
+        wrap: Wrap | None = None,
     ) -> None:
         self.node = node
         self.label = label
         self.tapped = tapped
         self.wants = wants
         self.deliver = deliver
+        self.wrap = wrap or _delivering(deliver)
         self.depth = depth
         self.taps: dict[str, Tap] = {}
         self._retired: list[Tap] = []  # taps of topics that went away
@@ -124,7 +134,7 @@ class TapSet:
             return
         previous = next((t for t in self._retired if t.topic_name == topic.name and t.msg_type is topic.msg_type), None)
         try:
-            tap = Tap(owner, topic, self.deliver, self.depth)
+            tap = Tap(owner, topic, self.deliver, self.wrap, self.depth)
         except Exception as exc:  # a type with no ROS definition: say so once, tap the rest
             runtime.logger.warning(f"{self.label}: leaving out {topic.name}: {exc}")
             return
@@ -137,6 +147,20 @@ class TapSet:
         runtime.topics.add_subscription(tap, replay=False)
         for msg in latched(topic, runtime.loop.time()):  # as a late subscriber gets them
             tap._push(msg)
+
+
+def _delivering(deliver: Deliver) -> Wrap:
+    """The wrap of a sink that only has ``deliver``: the snapshot, then ``deliver(tap, snapshot)``."""
+
+    def wrap(tap: Tap, snapshot: Snapshot) -> Snapshot:
+        def tapped(msg: Any) -> Any:
+            msg = snapshot(msg)
+            deliver(tap, msg)
+            return msg
+
+        return tapped
+
+    return wrap
 
 
 def latched(topic: Topic, now: float) -> list[Any]:
@@ -167,7 +191,11 @@ class TapOwner:
 
 
 class _Handover:
-    """A tap's queue: ``append`` hands the message to the sink at once; nothing is ever queued."""
+    """A tap's queue: ``append`` hands the message to the sink at once; nothing is ever queued.
+
+    Publishers never feed a tap through it (they wrap their snapshot function, see ``Tap._wrap``);
+    it stands in for the deque that code reading every subscription's queue expects.
+    """
 
     __slots__ = ("tap", "deliver")
 
@@ -192,7 +220,7 @@ class _Handover:
 
 
 class Tap(Subscription):
-    """A tap on one topic: never scheduled, its queue hands each message to the sink.
+    """A tap on one topic: never scheduled nor fed; its publishers hand it each snapshot they make.
 
     Best effort and volatile, so it matches every publisher (as rosbag2 adapts
     its subscription to what publishers offer).  ``channel`` is the sink's
@@ -202,9 +230,9 @@ class Tap(Subscription):
     message could not be taken.
     """
 
-    __slots__ = ("channel", "encode", "offers", "ros_type", "definition", "type_hash", "failed", "_deliver")
+    __slots__ = ("channel", "encode", "offers", "ros_type", "definition", "type_hash", "failed", "_deliver", "_wraps")
 
-    def __init__(self, owner: TapOwner, topic: Topic, deliver: Deliver, depth: int) -> None:
+    def __init__(self, owner: TapOwner, topic: Topic, deliver: Deliver, wrap: Wrap, depth: int) -> None:
         self.ros_type = type_name(topic.msg_type)
         self.definition = codec.definition_text(topic.msg_type)
         self.type_hash = codec.type_hash(topic.msg_type)
@@ -216,6 +244,7 @@ class Tap(Subscription):
         self.offers: tuple[QoSSnapshot, ...] = tuple(p.qos for p in topic.publishers)
         self.failed = False
         self._deliver = deliver
+        self._wraps = wrap
         self._queue = _Handover(self, deliver)  # type: ignore[assignment]  # stands in for the deque: only append() is used
         self._limit = sys.maxsize
         self._scheduled = True  # never on the actor's ready queue
@@ -225,10 +254,12 @@ class Tap(Subscription):
         disk could not keep up"); what a transport lost before the topic, it reports itself."""
         return None
 
+    def _wrap(self, snapshot: Snapshot) -> Snapshot:
+        """A publisher's snapshot function that also hands this tap each snapshot (Publisher._refeed)."""
+        return self._wraps(self, snapshot)
+
     def _push(self, msg: Any) -> None:
-        # publish() feeding several subscriptions: straight to the sink.  Subscription._push
-        # has nothing to do for a tap (its queue never fills, it is never woken, and no batch is
-        # open on its topic: a publisher that feeds a tap does not batch), only three calls to make.
+        # What a late subscriber gets (TapSet._consider): straight to the sink.
         self._deliver(self, msg)
 
 

@@ -9,7 +9,7 @@ publisher does with its object afterwards, as in rclpy.  Each
 subscription keeps its own queue, bounded by its QoS depth as in ROS: a full
 KEEP_LAST queue drops its oldest message and counts the drop.
 
-A publisher that feeds one subscription (or a tap, a transport's outlet...)
+A publisher that feeds one subscription (or a transport's outlet...)
 appends to each queue itself and wakes the owning node once per batch.  One
 that feeds several ordinary subscriptions appends each snapshot once to its
 own open *batch*, a list that every one of those subscriptions holds (one
@@ -28,6 +28,15 @@ A round iterates the messages queued when it began; what arrives meanwhile
 (a callback publishing on its own topic, or anything during an ``async``
 callback) is fed directly and counts the round's rest against the depth, so
 depth and drops are exactly those of per-message delivery.
+
+A *tap* (a recorder's subscription, :mod:`actors.recording.tap`) is no feed:
+it takes each message as the publisher makes its snapshot.  A subscription
+whose ``_wrap`` is set wraps the publisher's snapshot function (``_refeed``)
+in one that also hands the snapshot over, so a tapped publisher keeps the
+path it takes to its other subscriptions (one queue, a batch), and an
+untapped one has nothing more to do: every path of ``publish()`` calls
+``_snapshot`` (or, with nobody else to feed, ``_check``) exactly once per
+message.
 
 A publisher and a subscription are *matched* (connected) only when their QoS is
 compatible, as in ROS (``actors.ros.qos``): a best-effort publisher does not feed a
@@ -203,6 +212,7 @@ class Publisher:
         "_pending",
         "_bound",
         "_only",
+        "_plain",
         "__weakref__",
     )
 
@@ -221,6 +231,7 @@ class Publisher:
         # CPython 3.11 leaves ``self._snapshot(msg)`` (a method call on a slot) unspecialised.
         self._snapshot = snapshotter(msg_type)
         self._check = checker(msg_type)
+        self._plain = self._snapshot, self._check  # the same, with no tap wrapped around them (_refeed)
         self._events: Any = None  # an actors.ros.qos_events.EndpointEvents, for endpoints with event callbacks
         self._subs: dict[Subscription, None] = {}  # matched subscriptions, in match order
         # The same as a tuple, made again by the first publish after a change (None): a loop
@@ -269,6 +280,8 @@ class Publisher:
                 found.append("batching into a feed that is not a plain subscription of its topic")
             elif self._bound != max(s._depth for s in feeds):
                 found.append("a batch bound other than the deepest feed's depth")
+        if any(sub._wrap is not None for sub in feeds):
+            found.append("a tap among the feeds: it takes the snapshots (_refeed)")
         is_dirty = topic is not None and topic.dirty is self
         if (state is PublisherState.BATCH_OPEN) != is_dirty:
             found.append("a batch open but not the topic's dirty publisher, or the reverse")
@@ -329,7 +342,7 @@ class Publisher:
         msg = snapshot(msg)
         if self._history is not None:
             self._history.append(msg)
-        for sub in feeds:  # the rarer cases: a tap or an outlet among several feeds, a history...
+        for sub in feeds:  # the rarer cases: an outlet among several feeds, a history...
             sub._push(msg)
         if self._tracked:  # rare: subscriptions that refused messages (Subscription.track_senders)
             for sub in self._tracked:
@@ -342,10 +355,22 @@ class Publisher:
 
         It batches when it feeds two or more ordinary subscriptions of its topic
         (run by nodes' actors), keeps no history and tracks no senders.  Anything
-        else (a tap, a transport's outlet, an action client's feedback, a single
-        subscription) is fed directly, message by message, as before.
+        else (a transport's outlet, an action client's feedback, a single
+        subscription) is fed directly, message by message, as before.  Taps are
+        not fed: each wraps the snapshot function (and, for a message nobody
+        else receives, the check) that every path calls once per message.
         """
-        feeds = self._feeds = tuple(self._subs)
+        subs = self._subs
+        snapshot, check = self._plain
+        if any(sub._wrap is not None for sub in subs):
+            feeds = self._feeds = tuple(sub for sub in subs if sub._wrap is None)
+            for sub in subs:
+                if sub._wrap is not None:
+                    snapshot = sub._wrap(snapshot)
+            check = snapshot  # with no feed, publish() checks instead of copying: the taps still want it
+        else:
+            feeds = self._feeds = tuple(subs)
+        self._snapshot, self._check = snapshot, check
         # The single feed that publish() serves first, when nothing else needs doing per message.
         self._only = feeds[0] if len(feeds) == 1 and self._history is None and not self._tracked else None
         topic = self._topic
@@ -457,8 +482,11 @@ class Publisher:
         ValueError for a path that names no field of the message type.
         """
         trusted = frozenset(fields or ("",))
-        self._check = checker(self.msg_type, trusted)
+        self._settle()
         self._snapshot = snapshotter(self.msg_type, trusted)
+        self._check = checker(self.msg_type, trusted)
+        self._plain = self._snapshot, self._check
+        self._unfeed()  # the next publish wraps them for the taps again, if any
 
     def get_subscription_count(self) -> int:
         """How many subscriptions this publisher feeds."""
@@ -498,6 +526,10 @@ class Subscription(Mailbox):
         "_expiring",
         "__weakref__",
     )
+
+    #: Set on a tap (a class that defines it): ``_wrap(snapshot)`` is the publisher's snapshot
+    #: function that also hands this tap each snapshot it makes (see the module's docstring).
+    _wrap: Callable[[Callable[[Any], Any]], Callable[[Any], Any]] | None = None
 
     def __init__(
         self,
@@ -939,6 +971,7 @@ class TopicTable:
             pub._subs = {}
             pub._feeds = ()
             pub._pending = pub._only = None
+            pub._snapshot, pub._check = pub._plain  # no tap hears it any more
             pub._tracked = None
             for listener in self.listeners:
                 listener.endpoint_removed(topic, pub)
