@@ -622,3 +622,22 @@ async def test_a_destroyed_publisher_is_not_recorded(tmp_path):
         pub.publish(String(data="late"))  # nobody receives it: the recorder no more than the rest
         await anyio.sleep(1)
     assert _recorded(path, "/burst") == ["m0"]
+
+
+@pytest.mark.virtual_time
+async def test_large_and_small_messages_in_one_batch_are_recorded_as_encode_cdr_makes_them(tmp_path):
+    # The writer encodes every message of a batch into one buffer; an array over 64 KiB is kept
+    # aside (a spill) and spends it.  Each recorded message must still be exactly its own CDR.
+    from interfaces.std_msgs.msg import Float64MultiArray
+
+    path = tmp_path / "arrays.mcap"
+    sizes = [10_000, 3, 20_000, 0, 5, 9_000, 1]
+    sent = [Float64MultiArray(data=[float(i + n) for i in range(n)]) for n in sizes]
+    async with Runtime(attach=[Recorder(path)]) as rt:
+        node = rt.spawn(Node, "arrays")
+        pub = node.create_publisher(Float64MultiArray, "arrays", 10)
+        for msg in sent:
+            pub.publish(msg)
+        await anyio.sleep(1)
+    recorded = [bytes(m.data) for _, _, m in read_bag(path).iter_messages(topics=["/arrays"])]
+    assert recorded == [codec.encode_cdr(msg) for msg in sent]

@@ -332,7 +332,12 @@ class Recorder:
         self, batch: list[tuple[Tap, float, Any]], failures: list[tuple[Tap, Exception]]
     ) -> Iterator[tuple[int, int, int, bytes | bytearray]]:
         """The batch's messages as the writer takes them, each encoded as it is taken; what
-        cannot be encoded goes into ``failures`` instead."""
+        cannot be encoded goes into ``failures`` instead.
+
+        One buffer serves every message: the writer copies each into its chunk before it
+        takes the next (a new Buffer costs as much as framing the message).
+        """
+        buf = Buffer(HEADER)
         for (tap, _, msg), stamp in zip(batch, self._ns_at([stamp for _, stamp, _ in batch])):
             fill = tap.encode
             if fill is None:  # kept on the tap, not here: a topic that goes and comes back has a new tap
@@ -340,13 +345,18 @@ class Recorder:
                     self._register(tap)
                 fill = tap.encode = encoder(tap.msg_type)
             channel = tap.channel
-            buf = Buffer(HEADER)
+            del buf[4:]  # the header stays
             try:
                 fill(buf, msg)
             except Exception as exc:  # a message its type cannot carry: counted, never fatal
                 failures.append((tap, _named(msg, exc)))
+                buf = Buffer(HEADER)  # it may have spilled
                 continue
-            yield channel, stamp, stamp, buf.result() if buf.chunks else buf
+            if buf.chunks:  # a large array kept aside: the buffer is spent
+                data, buf = buf.result(), Buffer(HEADER)
+                yield channel, stamp, stamp, data
+            else:
+                yield channel, stamp, stamp, buf
 
     def _register(self, tap: Tap) -> None:
         assert self._writer is not None
