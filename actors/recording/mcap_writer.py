@@ -24,7 +24,9 @@ from __future__ import annotations
 
 import errno
 import struct
+import sys
 import zlib
+from array import array
 from collections.abc import Iterable, Mapping
 from typing import Any, BinaryIO
 
@@ -75,6 +77,14 @@ def _compressor(name: str) -> Any:
     raise ValueError(f"unknown chunk compression {name!r}; choose one of zstd, lz4 or ''")
 
 
+def _u64s(values: list[int]) -> bytes:
+    """``values`` as little-endian unsigned 64-bit integers (an index's times and offsets)."""
+    packed = array("Q", values)  # one C loop; struct.pack(*values) passes each as an argument
+    if sys.byteorder == "big":  # pragma: no cover - every machine this runs on is little-endian
+        packed.byteswap()
+    return packed.tobytes()
+
+
 def _stored(data: bytearray) -> bytearray:
     """An uncompressed chunk's records: the chunk in progress itself (a new one is started after it)."""
     return data
@@ -90,9 +100,7 @@ class McapWriter:
     later message is counted in :attr:`lost` instead of written.
     """
 
-    _chunk_start: int  # log times of the first and last message in the chunk in progress
-    _chunk_end: int
-    _chunk_messages: int
+    _chunk_end: int  # log time of the last message in the chunk in progress
 
     def __init__(
         self,
@@ -165,8 +173,10 @@ class McapWriter:
         """Add ``(channel id, log time, publish time, data)`` messages in order, as :meth:`add_message` does.
 
         A recorder's batch in one call, which may be a generator that encodes each
-        message as it is taken: no list of them all is made.  The per-message work
-        stays in this loop's locals (the chunk's count and first time are settled per chunk).
+        message as it is taken: no list of them all is made.  Per message, this loop
+        keeps only what the message index needs (the chunk's count and first time are
+        read off the indexes when it is written), and looks the channel's index up only
+        when the channel changes.
         """
         messages = iter(messages)
         if self.error is not None:
@@ -174,29 +184,24 @@ class McapWriter:
             return
         chunk, indexes, size = self._chunk, self._chunk_index, self._chunk_size
         pack = _MESSAGE.pack
-        count = self._chunk_messages
-        start = self._chunk_start if count else None
         log_time = self._chunk_end
+        channel: int | None = None
+        index: list[int] = []
         for channel_id, log_time, publish_time, data in messages:
-            if start is None:
-                start = log_time
-            index = indexes.get(channel_id)
-            if index is None:
-                index = indexes[channel_id] = []
+            if channel_id != channel:
+                channel = channel_id
+                index = indexes.setdefault(channel_id, [])
             index += (log_time, len(chunk))
             chunk += pack(_OP_MESSAGE, _MESSAGE_FIELDS + len(data), channel_id, 0, log_time, publish_time)
             chunk += data
-            count += 1
             if len(chunk) >= size:
-                self._chunk_messages, self._chunk_start, self._chunk_end = count, start, log_time
+                self._chunk_end = log_time
                 self._finish_chunk()
                 if self.error is not None:
                     self.lost += sum(1 for _ in messages)
                     return
                 chunk, indexes = self._chunk, self._chunk_index
-                count, start = 0, None
-        if start is not None:
-            self._chunk_messages, self._chunk_start = count, start
+                channel = None
         self._chunk_end = log_time
 
     def add_metadata(self, name: str, data: Mapping[str, str]) -> None:
@@ -212,13 +217,20 @@ class McapWriter:
 
     def _new_chunk(self) -> None:
         self._chunk = bytearray()
-        self._chunk_index: dict[int, list[int]] = {}
-        self._chunk_messages = 0
-        self._chunk_start = self._chunk_end = 0
+        self._chunk_index: dict[int, list[int]] = {}  # per channel: log time, offset, log time, offset...
+        self._chunk_end = 0
+
+    def _chunk_counts(self) -> tuple[int, int]:
+        """The chunk in progress's message count and first log time (0, 0 when empty)."""
+        pairs = self._chunk_index.values()
+        if not pairs:
+            return 0, 0
+        return sum(len(p) for p in pairs) // 2, min(p[0] for p in pairs)
 
     def _finish_chunk(self) -> None:
         """Compress the chunk and write it with its message indexes in one write."""
-        if not self._chunk_messages or self.error is not None:
+        messages, first = self._chunk_counts()
+        if not messages or self.error is not None:
             return
         # The chunk record's head is packed here, and the chunk and its indexes go out as they
         # are: copying a megabyte of fresh memory costs as much as compressing it.
@@ -229,7 +241,7 @@ class McapWriter:
             _CHUNK.pack(
                 _OP_CHUNK,
                 8 + 8 + 8 + 4 + 4 + len(name) + 8 + len(compressed),
-                self._chunk_start,
+                first,
                 self._chunk_end,
                 len(data),
                 zlib.crc32(data),
@@ -245,15 +257,15 @@ class McapWriter:
         for channel_id, pairs in self._chunk_index.items():
             offsets[channel_id] = start + chunk_length + len(indexes)
             indexes += _MESSAGE_INDEX.pack(_OP_MESSAGE_INDEX, 2 + 4 + 8 * len(pairs), channel_id, 8 * len(pairs))
-            indexes += struct.pack(f"<{len(pairs)}Q", *pairs)
+            indexes += _u64s(pairs)
         if not self._write(head, compressed, indexes):
-            self.lost += self._chunk_messages
+            self.lost += messages
             self._new_chunk()
             return
         r = self._records
         builder = self._builder_class()
         r.ChunkIndex(
-            message_start_time=self._chunk_start,
+            message_start_time=first,
             message_end_time=self._chunk_end,
             chunk_start_offset=start,
             chunk_length=chunk_length,
@@ -266,9 +278,9 @@ class McapWriter:
         self._chunk_index_records += builder.end()
         self._chunk_count += 1
         if not self._messages:
-            self._start = self._chunk_start
+            self._start = first
         self._end = self._chunk_end
-        self._messages += self._chunk_messages
+        self._messages += messages
         for channel_id, pairs in self._chunk_index.items():
             self._counts[channel_id] += len(pairs) // 2
         self._new_chunk()
@@ -323,7 +335,8 @@ class McapWriter:
     @property
     def pending_since(self) -> int | None:
         """Log time of the oldest message not yet in the file (in the chunk in progress), if any."""
-        return self._chunk_start if self._chunk_messages else None
+        messages, first = self._chunk_counts()
+        return first if messages else None
 
     def flush_older_than(self, log_time: int) -> None:
         """Write the chunk in progress if its oldest message is older than ``log_time``.
@@ -332,7 +345,8 @@ class McapWriter:
         the file holds every whole chunk, and no chunk stays open for longer
         than its writer's interval.
         """
-        if self._chunk_messages and self._chunk_start <= log_time:
+        messages, first = self._chunk_counts()
+        if messages and first <= log_time:
             self._finish_chunk()
 
     def close(self) -> None:
