@@ -204,6 +204,31 @@ async def test_an_inlet_feeds_every_local_subscription_and_is_not_shown():
         assert late.heard == []  # no local replay: history is the transport's business
 
 
+async def test_an_inlet_hands_its_subscribers_the_decoded_message_itself():
+    # What a transport decoded belongs to nobody else: no copy, however often the topic's
+    # subscriptions change (each change rebuilds the publisher's path).
+    class Keeper(Node):
+        def __init__(self) -> None:
+            super().__init__("keeper", start_parameter_services=False)
+            self.kept: list[String] = []
+            self.create_subscription(String, "chatter", self.kept.append, 10)
+
+    async with Runtime() as rt:
+        first = rt.spawn(Keeper)
+        inlet = Inlet(Hub("/_transport", rt.loop, rt.logger), "/chatter", String)
+        rt.topics.add_publisher(inlet)
+        before = String(data="before")
+        inlet.publish(before)
+        await anyio.sleep(0.1)
+        second = rt.spawn(Keeper, name="second")
+        await anyio.sleep(0.1)
+        after = String(data="after")
+        inlet.publish(after)
+        await anyio.sleep(0.1)
+        assert first.kept[0] is before
+        assert first.kept[1] is after and second.kept[0] is after
+
+
 async def test_a_remote_service_forwards_calls_and_gives_way_to_a_local_server():
     forwarded: list[tuple[int, int]] = []
 

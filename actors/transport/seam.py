@@ -151,6 +151,7 @@ class Inlet(Publisher):
         super().__init__(hub, topic_name, msg_type, _OFFERS_ALL)
         self._history = None
         self._snapshot = _fresh
+        self._plain = _fresh, self._check  # what each rebuild of its path starts from
 
 
 class RemoteService(Service):
