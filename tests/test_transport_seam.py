@@ -161,6 +161,7 @@ async def test_an_outlet_sends_only_its_publishers_messages_in_order_inside_publ
         await anyio.sleep(0.1)
     assert sent == [("/one", "one 0"), ("/one", "one 1"), ("/one", "one 2")]
     assert rt.graph.topic("/chatter") is None  # nothing left behind
+    assert hub.actor.pending == 0  # nothing waits for a round of the hub's actor, which nothing runs
 
 
 async def test_an_outlet_sends_every_message_whatever_the_depth_beside_a_local_subscription():
@@ -177,6 +178,7 @@ async def test_an_outlet_sends_every_message_whatever_the_depth_beside_a_local_s
         await anyio.sleep(0.1)
         # The local subscription is fed as before: its depth keeps the newest ten.
         assert listener.heard == [str(i) for i in range(5, 15)]
+        assert hub.actor.pending == 0
 
 
 async def test_an_inlet_feeds_every_local_subscription_and_is_not_shown():
@@ -202,6 +204,7 @@ async def test_an_inlet_feeds_every_local_subscription_and_is_not_shown():
         late = rt.spawn(Latched, name="late")
         await anyio.sleep(0.1)
         assert late.heard == []  # no local replay: history is the transport's business
+        assert hub.actor.pending == 0
 
 
 async def test_an_inlet_hands_its_subscribers_the_decoded_message_itself():
@@ -257,6 +260,7 @@ async def test_a_remote_service_forwards_calls_and_gives_way_to_a_local_server()
         assert (forwarded, response.sum) == ([(2, 3)], 5)
         rt.services.remove(proxy)  # the transport forgetting its stand-in leaves the local server alone
         assert rt.services.servers["/add_two_ints"].node.fqn == "/adder"
+        assert hub.actor.pending == 0
 
 
 async def test_the_graph_view_shows_remote_nodes_beside_local_ones():

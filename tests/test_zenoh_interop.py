@@ -34,6 +34,11 @@ def sdk_tokens(node: str) -> list[str]:
     return [t for t in SDK["tokens"] if parse_token(t).node == f"/{node}"]
 
 
+def hub_idle(transport: ZenohTransport) -> bool:
+    """Whether nothing waits for a round of the transport's hub actor, which nothing runs (each test checks)."""
+    return transport.hub is not None and transport.hub.actor.pending == 0
+
+
 class Hearer(Node):
     def __init__(self) -> None:
         super().__init__("hearer")
@@ -71,7 +76,7 @@ class Asker(Node):
 
 async def test_the_sdks_talker_is_seen_and_heard():
     port = free_port()
-    async with Runtime(attach=[ZenohTransport(section(port))]) as rt, peer(port) as sdk:
+    async with Runtime(attach=[transport := ZenohTransport(section(port))]) as rt, peer(port) as sdk:
         tokens = [sdk.liveliness().declare_token(t) for t in sdk_tokens("sdk_talker")]
         hearer = rt.spawn(Hearer)
         pub = await matched(sdk, TOPIC_KEY)
@@ -83,13 +88,14 @@ async def test_the_sdks_talker_is_seen_and_heard():
         await until(lambda: any(n.name == "/sdk_talker" for n in rt.graph.nodes()))
         (remote,) = [p for p in rt.graph.topic("/topic").publishers if p.process]
         assert (remote.node, remote.type, remote.why) == ("/sdk_talker", "std_msgs/msg/String", "")
+        assert hub_idle(transport)
         for token in tokens:
             token.undeclare()
 
 
 async def test_the_sdks_listener_gets_our_samples_as_it_would_its_own():
     port = free_port()
-    async with Runtime(attach=[ZenohTransport(section(port))]) as rt, peer(port) as sdk:
+    async with Runtime(attach=[transport := ZenohTransport(section(port))]) as rt, peer(port) as sdk:
         got: list[Any] = []
         subscriber = sdk.declare_subscriber(TOPIC_KEY, got.append)
         tokens = [sdk.liveliness().declare_token(t) for t in sdk_tokens("sdk_listener")]
@@ -104,6 +110,7 @@ async def test_the_sdks_listener_gets_our_samples_as_it_would_its_own():
         assert sequence == 1  # rmw_zenoh counts a publisher's samples from 1 (the SDK from 0)
         publisher_token = next(str(r.ok.key_expr) for r in sdk.liveliness().get("@ros2_lv/0/**/MP/**/sayer/**"))
         assert gid == gid_of(publisher_token)
+        assert hub_idle(transport)
         for token in tokens:
             token.undeclare()
         subscriber.undeclare()
@@ -112,7 +119,7 @@ async def test_the_sdks_listener_gets_our_samples_as_it_would_its_own():
 async def test_the_sdks_client_is_answered_as_its_own_server_answers():
     port = free_port()
     query = SDK["queries"][0]
-    async with Runtime(attach=[ZenohTransport(section(port))]) as rt, peer(port) as sdk:
+    async with Runtime(attach=[transport := ZenohTransport(section(port))]) as rt, peer(port) as sdk:
         tokens = [sdk.liveliness().declare_token(t) for t in sdk_tokens("sdk_caller")]
         rt.spawn(Adder)
         with anyio.fail_after(10):
@@ -136,6 +143,7 @@ async def test_the_sdks_client_is_answered_as_its_own_server_answers():
         sequence, _, gid = unpack(reply.ok.attachment.to_bytes())
         sdk_sequence, _, sdk_gid = unpack(bytes.fromhex(sdk_reply["attachment"]))
         assert (sequence, gid) == (sdk_sequence, sdk_gid) == unpack(bytes.fromhex(query["attachment"]))[::2]
+        assert hub_idle(transport)
         for token in tokens:
             token.undeclare()
 
@@ -151,7 +159,7 @@ async def test_our_client_is_answered_by_the_sdks_server():
         q.reply(sdk_reply["key"], bytes.fromhex(sdk_reply["payload"]), attachment=pack(sequence, 0, gid))
         q.drop()
 
-    async with Runtime(attach=[ZenohTransport(section(port))]) as rt, peer(port) as sdk:
+    async with Runtime(attach=[transport := ZenohTransport(section(port))]) as rt, peer(port) as sdk:
         queryable = sdk.declare_queryable(SERVICE_KEY, answer, complete=True)
         tokens = [sdk.liveliness().declare_token(t) for t in sdk_tokens("sdk_adder")]
         asker = rt.spawn(Asker)
@@ -164,6 +172,7 @@ async def test_our_client_is_answered_by_the_sdks_server():
         assert payload.hex() == SDK["queries"][0]["payload"]  # the same request, the same bytes
         assert unpack(attachment)[0] == 1  # a client counts its requests from 1, as the SDK's does
         assert codec.decode_cdr(payload, AddTwoInts.Request) == AddTwoInts.Request(a=20, b=22)
+        assert hub_idle(transport)
         for token in tokens:
             token.undeclare()
         queryable.undeclare()

@@ -64,8 +64,10 @@ class Hub:
     """The hidden owner of a transport's endpoints: a name, an actor, a logger.
 
     It quacks like the node core its endpoints expect (``fqn``, ``actor``,
-    ``loop``, ``logger``) without being a node of the graph; the transport runs
-    its actor (:meth:`Actor.run`) for as long as it runs.
+    ``loop``, ``logger``) without being a node of the graph.  Nothing runs
+    its actor: each of its endpoints runs where it is woken (an outlet inside
+    ``publish()``, an inlet publishes, a remote service forwards in ``_push``),
+    so an entity queued there would wait for ever; ``actor.pending`` stays 0.
     """
 
     def __init__(self, fqn: str, loop: asyncio.AbstractEventLoop, logger: NodeLogger) -> None:

@@ -65,7 +65,8 @@ class ZenohTransport:
     or the runtime is on virtual time.  ``zid`` is the session's id once
     started; ``warnings`` holds the bounded warnings about what other
     processes sent (see :mod:`.peer_warnings`), ``ignored_tokens`` counts
-    the liveliness tokens left out at the discovery's limit.
+    the liveliness tokens left out at the discovery's limit; ``hub`` owns its
+    endpoints once started.
     """
 
     def __init__(self, section: TransportSection | None = None) -> None:
@@ -76,6 +77,7 @@ class ZenohTransport:
         self._topics: TopicBridge | None = None
         self._services: ServiceBridge | None = None
         self.warnings: PeerWarnings | None = None
+        self.hub: Hub | None = None
 
     async def __call__(
         self, runtime: Runtime, *, task_status: anyio.abc.TaskStatus[Any] = anyio.TASK_STATUS_IGNORED
@@ -94,7 +96,7 @@ class ZenohTransport:
         except Exception as exc:
             raise TransportError(f"cannot open the zenoh session: {exc}") from None
         logger = runtime.make_logger("zenoh")
-        hub = Hub(f"/_zenoh_{runtime.name}".replace("-", "_"), runtime.loop, logger)
+        hub = self.hub = Hub(f"/_zenoh_{runtime.name}".replace("-", "_"), runtime.loop, logger)
         handoff = Handoff(
             runtime.loop, runtime.scheduler, lambda exc: logger.error(f"zenoh transport: {exc!r}", exc_info=exc)
         )
@@ -116,7 +118,7 @@ class ZenohTransport:
                     discovery.put(key)
                 self._join(runtime)
                 task_status.started()
-                await hub.actor.run()
+                await anyio.sleep_forever()  # the hub's endpoints run where they are woken, not here
             finally:
                 self._leave(runtime)
                 handoff.close()
