@@ -16,6 +16,7 @@ import pytest
 from zenoh_procs import free_port, matched, peer, section, until
 
 from actors import Node, Runtime, codec
+from actors.ros.endpoint_info import wire_gids
 from actors.transport.zenoh import ZenohTransport
 from actors.transport.zenoh.attachment import gid_of, pack, unpack
 from actors.transport.zenoh.keys import parse_token
@@ -85,6 +86,11 @@ async def test_the_sdks_talker_is_seen_and_heard():
         with anyio.fail_after(10):
             await hearer.two.wait()
         assert hearer.heard == ["SDK says 0", "SDK says 1"]
+        # Our subscription shows the GID the SDK gives it: the xxh3 of its token.
+        (ours,) = [str(r.ok.key_expr) for r in sdk.liveliness().get("@ros2_lv/0/**/MS/**/hearer/**")]
+        assert [s.gid for s in rt.graph.topic("/topic").subscriptions] == [[*gid_of(ours)]]
+        (info,) = hearer.get_subscriptions_info_by_topic("/topic")
+        assert info.endpoint_gid == [*gid_of(ours)]
         await until(lambda: any(n.name == "/sdk_talker" for n in rt.graph.nodes()))
         (remote,) = [p for p in rt.graph.topic("/topic").publishers if p.process]
         assert (remote.node, remote.type, remote.why) == ("/sdk_talker", "std_msgs/msg/String", "")
@@ -111,6 +117,13 @@ async def test_the_sdks_listener_gets_our_samples_as_it_would_its_own():
         publisher_token = next(str(r.ok.key_expr) for r in sdk.liveliness().get("@ros2_lv/0/**/MP/**/sayer/**"))
         assert gid == gid_of(publisher_token)
         assert hub_idle(transport)
+        # Here it shows the GID it has there, while the transport announces it.
+        (info,) = sayer.get_publishers_info_by_topic("/topic")
+        (shown,) = rt.graph.topic("/topic").publishers
+        assert info.endpoint_gid == shown.gid == [*gid]
+        pub = sayer.pub
+        sayer.destroy_publisher(pub)
+        assert pub not in wire_gids
         for token in tokens:
             token.undeclare()
         subscriber.undeclare()

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import copy
+import weakref
 from enum import IntEnum
 from typing import Any
 
@@ -13,7 +14,7 @@ from actors.ros.qos import QoSProfile, QoSSnapshot
 from actors.ros.time import Infinite
 from actors.ros.topics import type_name
 
-__all__ = ["TopicEndpointTypeEnum", "TopicEndpointInfo", "endpoint_info", "gid_of", "reported_profile"]
+__all__ = ["TopicEndpointTypeEnum", "TopicEndpointInfo", "endpoint_info", "gid_of", "wire_gids", "reported_profile"]
 
 
 class TopicEndpointTypeEnum(IntEnum):
@@ -27,7 +28,8 @@ class TopicEndpointTypeEnum(IntEnum):
 class TopicEndpointInfo(msgspec.Struct, kw_only=True):
     """A publisher or subscription of a topic, with the fields rclpy's has.
 
-    ``endpoint_gid`` is an opaque id, unique among the endpoints alive in the
+    ``endpoint_gid`` is the endpoint's GID on a transport's wire while one
+    announces it, else an opaque id unique among the endpoints alive in the
     process (as a GID is in a ROS graph); ``topic_type_hash`` is the type's
     RIHS01 hash ("" when unknown, printed INVALID as rclpy does).
     """
@@ -83,8 +85,19 @@ def endpoint_info(endpoint: Any, kind: TopicEndpointTypeEnum) -> TopicEndpointIn
     )
 
 
+wire_gids: weakref.WeakKeyDictionary[Any, bytes] = weakref.WeakKeyDictionary()
+"""The GIDs local endpoints have on a transport's wire, by endpoint, set by the transport while it announces them.
+
+A ROS 2 peer names an endpoint by what the transport tells it (rmw_zenoh:
+the xxh3 of its liveliness token); this process then prints the same.
+"""
+
+
 def gid_of(endpoint: Any) -> list[int]:
-    """An endpoint's GID: 16 bytes unique among the endpoints alive in this process."""
+    """An endpoint's GID: its GID on the wire while a transport announces it, else 16 bytes unique in this process."""
+    wire = wire_gids.get(endpoint)
+    if wire is not None:
+        return list(wire)
     return list(id(endpoint).to_bytes(8, "little")) + [0] * 8
 
 

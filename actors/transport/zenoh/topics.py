@@ -39,6 +39,7 @@ from collections import deque
 from typing import Any
 
 from actors import codec
+from actors.ros.endpoint_info import wire_gids
 from actors.ros.qos import DurabilityPolicy, HistoryPolicy, ReliabilityPolicy
 from actors.ros.topics import Publisher, Subscription, Topic, TopicTable
 from actors.transport.seam import Inlet, Outlet
@@ -112,6 +113,7 @@ class TopicBridge:
         endpoint = link.declare(pub.node.fqn, "MP", pub.topic_name, pub.msg_type, pub.qos)
         if endpoint is None:
             return
+        wire_gids[pub] = endpoint.gid  # what a ROS 2 peer calls it, shown here too
         zenoh, qos = link.zenoh, pub.qos
         reliable = qos.reliability == ReliabilityPolicy.RELIABLE
         options: dict[str, Any] = {
@@ -176,6 +178,7 @@ class TopicBridge:
         out = self._outs.pop(pub, None)
         if out is None:
             return
+        wire_gids.pop(pub, None)
         out.outlet.detach()
         if out.listener is not None:
             self._link.undeclare(out.listener)
@@ -189,6 +192,7 @@ class TopicBridge:
         endpoint = self._link.declare(sub.node.fqn, "MS", sub.topic_name, sub.msg_type, sub.qos)
         if endpoint is None:
             return
+        wire_gids[sub] = endpoint.gid
         self._subs.setdefault(topic.name, {})[sub] = endpoint
         incoming = self._ins.get(topic.name)
         if incoming is None:
@@ -292,11 +296,11 @@ class TopicBridge:
     def remove_subscription(self, topic: Topic, sub: Subscription) -> None:
         """Withdraw ``sub``; a topic left with no local subscription stops listening."""
         tracked = self._subs.get(topic.name, {})
-        if sub in tracked:
-            self._link.withdraw(tracked.pop(sub))
-        else:  # a restarted node's subscription, which replaced its predecessor unheard
-            for old in [s for s in tracked if s not in topic.subscriptions]:
-                self._link.withdraw(tracked.pop(old))
+        # ``sub``, or else what a restarted node's subscription replaced unheard
+        gone = [sub] if sub in tracked else [s for s in tracked if s not in topic.subscriptions]
+        for old in gone:
+            self._link.withdraw(tracked.pop(old))
+            wire_gids.pop(old, None)
         if not tracked:
             self._subs.pop(topic.name, None)
             # Not from inside the table's own removal: the table is still dropping ``sub``.
@@ -315,8 +319,9 @@ class TopicBridge:
         for pub in list(self._outs):
             self.remove_publisher(pub)
         for tracked in self._subs.values():
-            for endpoint in tracked.values():
+            for sub, endpoint in tracked.items():
                 self._link.withdraw(endpoint)
+                wire_gids.pop(sub, None)
         self._subs.clear()
         for name in list(self._ins):
             incoming = self._ins.pop(name)
