@@ -28,9 +28,10 @@ time (after a string), a table holds one ``Struct`` per possible alignment.
 
 ``decode(..., views=True)`` has its own generated decoders: there a numeric
 array (``uint8[]`` included) is a ``numpy.frombuffer`` view of the input, in
-its byte order, made after the same length check; fixed-size ones leave the
-runs, and fields the class's ``__post_init__`` would copy into an
-``array.array`` are set after construction.  The encoders take such views
+its byte order, made after the same length check; a run steps over a
+fixed-size one (struct's pad bytes) and views it at its offset, and fields
+the class's ``__post_init__`` would copy into an ``array.array`` are set
+after construction.  The encoders take such views
 (and any 1-D numpy vector of the field's type) in C.
 
 Decoding refuses anything malformed with :class:`CdrError` naming the type
@@ -289,6 +290,11 @@ def _struct_format(items: list[tuple[str, int, int, str, str]], phase: int, endi
     return "".join(parts), offset % 8
 
 
+def _offsets(items: list[tuple[str, int, int, str, str]], phase: int) -> tuple[int, ...]:
+    """Each item's start from the run's start, when the run starts at ``phase``."""
+    return tuple(end - size for (_, size, _, _, _), (_, end) in zip(items, _run_items(items, phase)))
+
+
 def _run_items(items: list[tuple[str, int, int, str, str]], phase: int) -> list[tuple[str, int]]:
     """Each item's path and its end offset from the run's start, when the run starts at ``phase``."""
     ends = []
@@ -299,10 +305,13 @@ def _run_items(items: list[tuple[str, int, int, str, str]], phase: int) -> list[
     return ends
 
 
-def _scalar_item(type_: FieldType, argument: str, path: str) -> tuple[str, int, int, str, str]:
+def _scalar_item(type_: FieldType, argument: str, path: str, skip: bool = False) -> tuple[str, int, int, str, str]:
+    """A run's item for a fixed-size field; ``skip``: a fixed array the run steps over (a decoder's view of it)."""
     code, size = _PRIMITIVES[type_.base]
     if type_.array == "fixed":
         assert type_.size is not None  # a fixed array has its size
+        if skip:
+            return f"{size * type_.size}x", size * type_.size, size, argument, path
         if type_.base in OCTETS:
             return f"{type_.size}s", type_.size, 1, argument, path
         if typecode(type_):  # an array.array: its bytes in the run, not a Python number per item
@@ -492,7 +501,7 @@ def _compile_decoder(lay: MessageLayout, endian: str, *, top: bool, views: bool 
     if views:
         import numpy  # a core dependency, imported by the first decoder that makes views
 
-        src.namespace.update(VIEW=numpy.frombuffer, SET=_set_fields)
+        src.namespace.update(VIEW=numpy.frombuffer)
     constructor = _decode_fields(src, lay, "$")
     _flush_decode(src)
     for token, value in src.values.items():
@@ -513,13 +522,6 @@ def _viewed(type_: FieldType) -> bool:
     return type_.array is not None and not type_.is_nested and type_.base not in STRINGS and type_.base != "bool"
 
 
-def _set_fields(msg: T, names: tuple[str, ...], *values: Any) -> T:
-    """``msg`` with ``values`` set as they are: its ``__post_init__`` would copy a numpy view into an array."""
-    for name, value in zip(names, values):
-        setattr(msg, name, value)
-    return msg
-
-
 def _decode_fields(src: _Source, lay: MessageLayout, path: str) -> str:
     """Emit the decoding of ``lay``'s fields; return the expression that builds the message."""
     if lay.placeholder:
@@ -532,24 +534,29 @@ def _decode_fields(src: _Source, lay: MessageLayout, path: str) -> str:
         if type_.array is None and type_.is_nested:
             assert field.nested is not None
             arguments.append(f"{field.name}={_decode_fields(src, field.nested, where)}")
-        elif _fixed_size(type_) and not (views and _viewed(type_)):
-            src.run.append(_scalar_item(type_, "", where))
+        elif _fixed_size(type_):
+            viewed = views and _viewed(type_)
+            src.run.append(_scalar_item(type_, "", where, skip=viewed))
             token = f"@{len(src.pending)}@{len(src.values)}@"  # replaced once the run is unpacked
             src.pending.append((token, type_, len(src.run) - 1))
-            arguments.append(f"{field.name}={token}")
+            if viewed and typecode(type_):
+                late.append((field.name, token))
+            else:
+                arguments.append(f"{field.name}={token}")
         else:
             _flush_decode(src)
             src.mark(where)
             value = src.name("v")
             _decode_array(src, type_, value, field.nested)
-            if views and typecode(type_):  # set after the constructor, whose __post_init__ would copy it
+            if views and typecode(type_):
                 late.append((field.name, value))
             else:
                 arguments.append(f"{field.name}={value}")
     made = f"{src.name('C', lay.cls)}({', '.join(arguments)})"
-    if late:
-        names = tuple(name for name, _ in late)
-        made = f"SET({made}, {src.name('N', names)}, {', '.join(value for _, value in late)})"
+    if late:  # set as they are after the constructor: its __post_init__ would copy a numpy view into an array
+        made_as = src.name("m")
+        sets = ", ".join(f"setattr({made_as}, {name!r}, {value})" for name, value in late)
+        made = f"({made_as} := {made}, {sets})[0]"
     return made
 
 
@@ -562,23 +569,39 @@ def _flush_decode(src: _Source) -> None:
     endian = src.namespace["endian"]
     widest = max(item[2] for item in items)
     values = src.name("t")
+    # A view's place: the run's start (in a local, as the views are made in the return) plus its offset.
+    skips = any(code.endswith("x") for code, *_ in items)
+    origin = src.name("r") if skips else ""
+    if skips:
+        src.emit(f"{origin} = pos")
     if src.phase is not None:
+        offsets: Any = _offsets(items, src.phase)
         fmt, src.phase = _struct_format(items, src.phase, endian)
         unpacker = struct.Struct(fmt)
         src.emit(f"{values} = {src.name('S', unpacker.unpack_from)}(d, pos); pos += {unpacker.size}")
     elif widest == 1:
+        offsets = _offsets(items, 0)
         unpacker = struct.Struct(_struct_format(items, 0, endian)[0])
         src.emit(f"{values} = {src.name('S', unpacker.unpack_from)}(d, pos); pos += {unpacker.size}")
     else:
         table = tuple(struct.Struct(_struct_format(items, phase, endian)[0]) for phase in range(widest))
+        if skips:  # the offsets depend on the phase too
+            offsets = src.name("o")
+            table_of_offsets = tuple(_offsets(items, phase) for phase in range(widest))
+            src.emit(f"{offsets} = {src.name('O', table_of_offsets)}[(pos - 4) & {widest - 1}]")
         src.emit(f"s = {src.name('S', table)}[(pos - 4) & {widest - 1}]")
         src.emit(f"{values} = s.unpack_from(d, pos); pos += s.size")
-    # Each item's position in the unpacked tuple: a fixed numeric array spans several.
+    # Each item's position in the unpacked tuple: a fixed numeric array spans several, a skipped one none.
     starts, index = [], 0
     for code, _, _, _, _ in items:
         starts.append(index)
-        index += 1 if code.endswith("s") or len(code) == 1 else int(code[:-1])
+        index += 0 if code.endswith("x") else 1 if code.endswith("s") or len(code) == 1 else int(code[:-1])
     for token, type_, item in pending:
+        if items[item][0].endswith("x"):
+            at = f"{offsets}[{item}]" if isinstance(offsets, str) else offsets[item]
+            dtype = src.name("T", _dtype(endian, type_))
+            src.values[token] = f"VIEW(d, {dtype}, {type_.size}, {origin} + {at})"
+            continue
         start = starts[item]
         if type_.array == "fixed" and type_.base not in OCTETS:
             assert type_.size is not None  # a fixed array has its size
@@ -642,10 +665,10 @@ def _decode_array(src: _Source, type_: FieldType, target: str, nested: MessageLa
         src.emit("i = -1")  # out of the loop: errors after it are not in an item
         src.phase = None
         return
-    # A sequence of primitives (fixed arrays of them are part of runs, unless made views).
+    # A sequence of primitives (fixed arrays of them are part of runs).
     code, size = _PRIMITIVES[type_.base]
     if src.namespace["views"] and _viewed(type_):
-        _decode_view(src, type_, target, code, size)
+        _decode_view(src, type_, target, size)
         return
     src.emit("if n:")
     src.phase = None
@@ -666,25 +689,25 @@ def _decode_array(src: _Source, type_: FieldType, target: str, nested: MessageLa
     src.phase = None
 
 
-def _decode_view(src: _Source, type_: FieldType, target: str, code: str, size: int) -> None:
-    """Emit the making of a read-only numpy view of ``n`` items at ``pos``, checked against the bytes left."""
+def _dtype(endian: str, type_: FieldType) -> Any:
+    """The numpy dtype of a view of ``type_``'s numbers in CDR of ``endian`` byte order."""
     import numpy
 
-    dtype = src.name("T", numpy.dtype(src.namespace["endian"] + code))
-    fixed = type_.array == "fixed"
-    depth = 1 if fixed else 2
-    if not fixed:
-        src.emit("if n:")
-        src.phase = None
-    src.align(size, depth)
-    src.emit(f"end = pos + {size} * n", depth)
-    src.emit(f"if end > len(d): raise _Bad(f'{{n}} items of {size} bytes, {{len(d) - pos}} bytes left')", depth)
-    src.emit(f"{target} = VIEW(d, {dtype}, n, pos); pos = end", depth)
-    if fixed:
-        assert type_.size is not None  # a fixed array has its size
-        if src.phase is not None:
-            src.phase = (src.phase + size * type_.size) % 8
-        return
+    return numpy.dtype(endian + _PRIMITIVES[type_.base][0])
+
+
+def _decode_view(src: _Source, type_: FieldType, target: str, size: int) -> None:
+    """Emit the making of a read-only numpy view of a sequence's ``n`` items, checked against the bytes left.
+
+    Fixed-size arrays are viewed by the run that steps over them (:func:`_flush_decode`).
+    """
+    dtype = src.name("T", _dtype(src.namespace["endian"], type_))
+    src.emit("if n:")
+    src.phase = None
+    src.align(size, 2)
+    src.emit(f"end = pos + {size} * n", 2)
+    src.emit(f"if end > len(d): raise _Bad(f'{{n}} items of {size} bytes, {{len(d) - pos}} bytes left')", 2)
+    src.emit(f"{target} = VIEW(d, {dtype}, n, pos); pos = end", 2)
     src.emit("else:")
     src.emit(f"{target} = VIEW(b'', {dtype})", 2)
     src.phase = None
