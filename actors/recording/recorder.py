@@ -52,6 +52,9 @@ __all__ = ["Recorder", "RECORDER_NODE"]
 _HANDOFF = 1024
 """On the wall clock, the most messages the buffer holds before it goes to the worker thread."""
 
+_WIDTH = 3
+"""Entries per message in the buffer and its batches: tap, stamp, message."""
+
 RECORDER_NODE = "/_actors_recorder"
 """The hidden owner of the recorder's subscriptions, as ``topic info`` and doctor name it."""
 
@@ -106,12 +109,14 @@ class Recorder:
         self._taps = TapSet(
             RECORDER_NODE, self._takes, self._take, depth=max_pending, label="recorder", wrap=self._wrap
         )
-        self._items: list[tuple[Tap, float, Any]] = []
+        # Flat: tap, stamp, message, tap, stamp, message...  A tuple per message kept until written
+        # was a tracked object more for the garbage collector to count and traverse, per message.
+        self._items: list[Any] = []
         # While the buffer is shorter than this, a message only goes on it; at this length there
         # is something else to do first (see _take): 0 while empty (the first sets the deadline).
         self._room = 0
         # Batches taken from the buffer, written in order by whichever thread holds the lock.
-        self._batches: deque[list[tuple[Tap, float, Any]]] = deque()
+        self._batches: deque[list[Any]] = deque()
         self._lock = threading.Lock()
         self._runtime: Runtime | None = None
         self._waiter: asyncio.Future[None] | None = None
@@ -180,11 +185,11 @@ class Recorder:
         assert writer is not None
         interval = round(self.flush_interval * 1e9)
         while writer.error is None:
-            while len(self._items) < self._handoff:
+            while len(self._items) < _WIDTH * self._handoff:
                 self._waiter = loop.create_future()
                 oldest = writer.pending_since
                 if oldest is None and self._items:
-                    oldest = self._ns_at([self._items[0][1]])[0]
+                    oldest = self._ns_at([self._items[1]])[0]
                 if oldest is None:
                     await self._waiter
                     continue
@@ -264,7 +269,7 @@ class Recorder:
             msg = snapshot(msg)
             items = self._items
             if len(items) < self._room:
-                items.append((tap, stamp(), msg))
+                items += (tap, stamp(), msg)
             else:
                 self._take(tap, msg)
             return msg
@@ -275,18 +280,18 @@ class Recorder:
         """Stamp a tapped message and buffer it for the writer; when the buffer is full,
         write it now (the publisher waits for the disk), or drop the message if lossy."""
         items = self._items
-        if len(items) >= self.max_pending:
+        if len(items) >= _WIDTH * self.max_pending:
             if self.lossy:
                 tap.dropped += 1
                 self.dropped += 1
                 return
             self._write_now()
             items = self._items
-        if not items or len(items) == self._handoff - 1:
+        waking = _WIDTH * (self._handoff - 1)
+        if not items or len(items) == waking:
             self._wake()  # the first sets the writer task's deadline; a whole batch goes at once
-        items.append((tap, self._loop_time(), msg))
-        waking = self._handoff - 1
-        self._room = waking if len(items) < waking else self.max_pending
+        items += (tap, self._loop_time(), msg)
+        self._room = waking if len(items) < waking else _WIDTH * self.max_pending
 
     def _take_buffer(self) -> None:
         """Queue the buffer as a batch for the writer; a new one starts."""
@@ -319,7 +324,7 @@ class Recorder:
                 failures += self._write(batches.popleft())
         return failures
 
-    def _write(self, batch: list[tuple[Tap, float, Any]]) -> list[tuple[Tap, Exception]]:
+    def _write(self, batch: list[Any]) -> list[tuple[Tap, Exception]]:
         """Encode and write one batch; returns the failures."""
         writer = self._writer
         assert writer is not None
@@ -329,7 +334,7 @@ class Recorder:
         return failures
 
     def _encoded(
-        self, batch: list[tuple[Tap, float, Any]], failures: list[tuple[Tap, Exception]]
+        self, batch: list[Any], failures: list[tuple[Tap, Exception]]
     ) -> Iterator[tuple[int, int, int, bytes | bytearray]]:
         """The batch's messages as the writer takes them, each encoded as it is taken; what
         cannot be encoded goes into ``failures`` instead.
@@ -338,7 +343,7 @@ class Recorder:
         takes the next (a new Buffer costs as much as framing the message).
         """
         buf = Buffer(HEADER)
-        for (tap, _, msg), stamp in zip(batch, self._ns_at([stamp for _, stamp, _ in batch])):
+        for tap, msg, stamp in zip(batch[0::_WIDTH], batch[2::_WIDTH], self._ns_at(batch[1::_WIDTH])):
             fill = tap.encode
             if fill is None:  # kept on the tap, not here: a topic that goes and comes back has a new tap
                 if tap.channel is None:
