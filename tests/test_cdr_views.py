@@ -94,6 +94,8 @@ def test_a_view_is_the_input_itself_not_a_copy():
     data = codec.encode_cdr(scan)
     msg = codec.decode_cdr(data, LaserScan, views=True)
     assert msg.ranges.base is data and msg.intensities.base is data
+    empty = codec.encode_cdr(LaserScan())
+    assert codec.decode_cdr(empty, LaserScan, views=True).ranges.base is empty  # an empty one too
     assert msg.ranges.dtype == np.dtype("<f4") and msg.ranges.tolist() == [1.0, 2.0, 3.0]
     image = codec.encode_cdr(Image(width=2, data=bytes(range(200)) * 500))
     tracemalloc.start()

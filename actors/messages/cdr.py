@@ -709,7 +709,7 @@ def _decode_view(src: _Source, type_: FieldType, target: str, size: int) -> None
     src.emit(f"if end > len(d): raise _Bad(f'{{n}} items of {size} bytes, {{len(d) - pos}} bytes left')", 2)
     src.emit(f"{target} = VIEW(d, {dtype}, n, pos); pos = end", 2)
     src.emit("else:")
-    src.emit(f"{target} = VIEW(b'', {dtype})", 2)
+    src.emit(f"{target} = VIEW(d, {dtype}, 0, pos)", 2)  # empty, and cheaper than a view of b''
     src.phase = None
 
 
