@@ -9,12 +9,14 @@ import pytest
 import actors.compat.rclpy as rclpy
 from actors.compat.rclpy.parameter import (
     Parameter,
+    ParameterType,
     get_parameter_value,
     parameter_dict_from_yaml_file,
     parameter_value_to_python,
 )
 from actors.compat.rclpy.parameter_client import AsyncParameterClient
 from actors.ros.node import Node as NativeNode
+from interfaces.rcl_interfaces.msg import ParameterValue
 
 PARAMS = """\
 /**:
@@ -107,6 +109,41 @@ def test_parameter_dict_from_yaml_file_as_rclpy_reads_it(tmp_path):
 )
 def test_get_parameter_value_reads_yaml(text, value):
     assert parameter_value_to_python(get_parameter_value(text)) == value
+
+
+@pytest.mark.parametrize(
+    ("text", "type_", "value"),
+    [
+        # What YAML reads as nothing, a list of mixed items or a mapping stays the text, a STRING.
+        ("", ParameterType.STRING, ""),
+        (" ", ParameterType.STRING, " "),
+        ("null", ParameterType.STRING, "null"),
+        ("[1, 2.5]", ParameterType.STRING, "[1, 2.5]"),
+        ("{a: 1}", ParameterType.STRING, "{a: 1}"),
+        ("2001-12-14", ParameterType.STRING, "2001-12-14"),
+        ("[]", ParameterType.BOOL_ARRAY, []),  # the first list type an empty list fits
+        ("[a, b]", ParameterType.STRING_ARRAY, ["a", "b"]),
+        ("[0.5, 1.5]", ParameterType.DOUBLE_ARRAY, [0.5, 1.5]),
+    ],
+)
+def test_get_parameter_value_types_text_as_rclpy_guesses(text, type_, value):
+    guessed = get_parameter_value(text)
+    assert guessed.type == type_
+    assert parameter_value_to_python(guessed) == value
+
+
+def test_get_parameter_value_equals_a_message_built_from_the_same_list():
+    assert get_parameter_value("[4, 5]") == ParameterValue(type=ParameterType.INTEGER_ARRAY, integer_array_value=[4, 5])
+
+
+def test_parameter_value_to_python_gives_lists_and_refuses_unknown_types():
+    ints = parameter_value_to_python(ParameterValue(type=ParameterType.INTEGER_ARRAY, integer_array_value=[7, 8]))
+    assert type(ints) is list and ints == [7, 8]
+    raw = ParameterValue(type=ParameterType.BYTE_ARRAY, byte_array_value=b"ok")
+    assert parameter_value_to_python(raw) == [b"o", b"k"]  # rclpy's byte[] items: one-byte bytes
+    assert parameter_value_to_python(ParameterValue()) is None
+    with pytest.raises(RuntimeError, match="unexpected parameter type 42"):
+        parameter_value_to_python(ParameterValue(type=42))
 
 
 def test_async_parameter_client_with_rclpy_futures(session, tmp_path):

@@ -126,13 +126,16 @@ def widen(value: Any, type_: ParameterType) -> Any:
 def value_to_msg(value: Any, type_: ParameterType | None = None) -> ParameterValue:
     """A Python value as ``rcl_interfaces/msg/ParameterValue``; TypeError for a value no parameter holds."""
     type_ = ParameterType.from_parameter_value(value) if type_ is None else type_
-    msg = ParameterValue(type=int(type_))
+    if type_ is ParameterType.NOT_SET:
+        return ParameterValue(type=0)
     if type_ is ParameterType.BYTE_ARRAY:
-        msg.byte_array_value = value if isinstance(value, bytes) else b"".join(value)
-    elif type_ is not ParameterType.NOT_SET:
+        value = value if isinstance(value, bytes) else b"".join(value)
+    else:
         value = widen(value, type_)
-        setattr(msg, _FIELDS[type_], list(value) if isinstance(value, tuple) else value)
-    return msg
+        value = list(value) if isinstance(value, tuple) else value
+    # Through the constructor, which stores a number list as the field's array (as a decoded message
+    # holds it), so the message equals one built or received with the same value.
+    return ParameterValue(type=int(type_), **{_FIELDS[type_]: value})
 
 
 def value_from_msg(msg: ParameterValue) -> Any:

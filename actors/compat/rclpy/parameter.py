@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from actors.codec import load_yaml
+from actors.ros.parameter import TYPES
 from actors.ros.parameter_store import (
     PARAMETER_SEPARATOR_STRING,
     Parameter,
@@ -26,15 +27,48 @@ __all__ = [
     "parameter_dict_from_yaml_file",
 ]
 
-parameter_value_to_python = value_from_msg
+# A list read from text is typed by what all its items are, checked in this order (an empty list
+# passes the first check, so "[]" is a BOOL_ARRAY, as rclpy reads it).
+_LIST_TYPES = (
+    (bool, ParameterType.BOOL_ARRAY),
+    (int, ParameterType.INTEGER_ARRAY),
+    (float, ParameterType.DOUBLE_ARRAY),
+    (str, ParameterType.STRING_ARRAY),
+)
 
 
 def get_parameter_value(string_value: str) -> ParameterValue:
-    """A ParameterValue from text, read as YAML (``"2"`` is an int); text no parameter type fits stays text."""
+    """A ParameterValue guessed from text read as YAML, as rclpy guesses it.
+
+    ``"2"`` is an INTEGER, ``"[1, 2]"`` an INTEGER_ARRAY, ``"[]"`` an empty
+    BOOL_ARRAY.  Everything else stays the text itself, a STRING: text YAML
+    cannot read, text YAML reads as nothing (``""``, ``" "``, ``"null"``), a
+    list of mixed items, a mapping.
+    """
     try:
-        return value_to_msg(load_yaml(string_value))
-    except (ValueError, TypeError):
-        return value_to_msg(string_value)
+        value = load_yaml(string_value)
+    except ValueError:
+        value = string_value
+    if isinstance(value, (bool, int, float)):
+        return value_to_msg(value)
+    if isinstance(value, list):
+        for item_type, list_type in _LIST_TYPES:
+            if all(isinstance(item, item_type) for item in value):
+                return value_to_msg(value, list_type)
+    return value_to_msg(value if isinstance(value, str) else string_value, ParameterType.STRING)
+
+
+def parameter_value_to_python(parameter_value: ParameterValue) -> Any:
+    """The Python value a ParameterValue holds, arrays as lists (a BYTE_ARRAY's items one-byte bytes).
+
+    None for NOT_SET; RuntimeError for a ``type`` that is no parameter type.
+    """
+    if parameter_value.type not in TYPES:
+        raise RuntimeError(f"unexpected parameter type {parameter_value.type}")
+    value = value_from_msg(parameter_value)
+    if isinstance(value, (bytes, bytearray)):  # rclpy's byte[] items are one-byte bytes
+        return [value[i : i + 1] for i in range(len(value))]
+    return list(value) if parameter_value.type >= ParameterType.BYTE_ARRAY else value
 
 
 def parameter_dict_from_yaml_file(
