@@ -387,12 +387,18 @@ def to_yaml(msg: Any) -> str:
     return dump_yaml(to_builtins(msg))
 
 
-def load_yaml(text: str) -> Any:
-    """The value of YAML (or JSON) ``text``; ValueError naming the problem in one line."""
+def load_yaml(text: str, *, merge_repeated_keys: bool = False) -> Any:
+    """The value of YAML (or JSON) ``text``; ValueError naming the problem in one line.
+
+    A key repeated in one mapping keeps its last value; with
+    ``merge_repeated_keys`` two mappings under the same key are merged instead
+    (the later one's keys winning), as rcl reads a parameter file: ``/**:``
+    written twice gives every node the parameters of both.
+    """
     import yaml
 
     try:
-        return yaml.safe_load(text)
+        return yaml.load(text, Loader=_MergingLoader()) if merge_repeated_keys else yaml.safe_load(text)
     except yaml.YAMLError as exc:
         raise ValueError(" ".join(str(getattr(exc, "problem", None) or exc).split())) from None
 
@@ -424,6 +430,35 @@ def _FlowSequences() -> type:  # a class, made once yaml is imported
 
     FlowSequences.add_representer(list, FlowSequences.represent_list)
     return FlowSequences
+
+
+@_cache
+def _MergingLoader() -> type:  # a class, made once yaml is imported
+    import yaml
+
+    class MergingLoader(yaml.SafeLoader):
+        def construct_mapping(self, node: Any, deep: bool = False) -> dict[Any, Any]:
+            self.flatten_mapping(node)
+            mapping: dict[Any, Any] = {}
+            for key_node, value_node in node.value:
+                key = self.construct_object(key_node, deep=True)
+                value = self.construct_object(value_node, deep=True)
+                earlier = mapping.get(key)
+                if isinstance(earlier, dict) and isinstance(value, dict):
+                    value = _merged(earlier, value)
+                mapping[key] = value
+            return mapping
+
+    MergingLoader.add_constructor("tag:yaml.org,2002:map", MergingLoader.construct_mapping)
+    return MergingLoader
+
+
+def _merged(earlier: dict[Any, Any], later: dict[Any, Any]) -> dict[Any, Any]:
+    merged = dict(earlier)
+    for key, value in later.items():
+        before = merged.get(key)
+        merged[key] = _merged(before, value) if isinstance(before, dict) and isinstance(value, dict) else value
+    return merged
 
 
 @_cache

@@ -168,6 +168,29 @@ def test_params_file_rules_in_file_order(params_file):
     assert parameters_for(params_file, "/robot2/talker") == {"everyone": 1}
 
 
+def test_a_node_key_written_twice_keeps_both_entries(tmp_path):
+    # rcl reads a parameter file as a stream: a key repeated at the top (or a namespace repeated)
+    # adds to what the first one gave, where a plain YAML reading keeps only the last.
+    path = tmp_path / "twice.yaml"
+    path.write_text(
+        "/**:\n  ros__parameters: {rate: 5}\n"
+        "robots:\n  arm:\n    ros__parameters: {reach: 0.8}\n"
+        "/**:\n  gripper:\n    ros__parameters: {force: 2.0}\n"
+        "robots:\n  gripper:\n    ros__parameters: {force: 3.5, width: 0.1}\n"
+        "robots:\n  arm:\n    ros__parameters: {reach: 0.9}\n"
+    )
+    assert parameters_for(path, "/robots/arm") == {"rate": 5, "reach": 0.9}
+    assert parameters_for(path, "/robots/gripper") == {"rate": 5, "force": 3.5, "width": 0.1}
+    assert parameters_for(path, "/gripper") == {"rate": 5, "force": 2.0}
+    # The first place a key was written keeps its turn: /** first, so every node key after it wins.
+    assert [rule.node_key for rule in load_params_file(path)] == [
+        "/**",
+        "/**/gripper",
+        "/robots/arm",
+        "/robots/gripper",
+    ]
+
+
 def test_params_files_and_rules_later_win(params_file):
     ros, _ = parse(["--ros-args", "-p", "speed:=9.0", "--params-file", str(params_file), "-p", "everyone:=3"])
     assert ros.for_node("talker", None).params["speed"] == 0.5

@@ -284,7 +284,7 @@ def load_params_file(path: str | Path) -> list[ParamRule]:
     except OSError as exc:
         raise RosArgsError(f"{path}: cannot read the parameter file: {exc.strerror or exc}") from None
     try:
-        data = load_yaml(text)
+        data = load_yaml(text, merge_repeated_keys=True)
     except ValueError as exc:
         raise RosArgsError(f"{path}: not valid YAML: {exc}") from None
     if data is None:
