@@ -17,6 +17,8 @@ def session(rclpy_session):
 
 def test_each_entity_is_destroyed_when_its_block_ends(session):
     with rclpy.create_node("scoped") as node:
+        own = node.services  # ~/get_type_description, as every rclpy node has it
+        assert [s.service_name for s in own] == ["/scoped/get_type_description"]
         with node.create_publisher(String, "said", 10) as pub:
             assert node.publishers == [pub]
         assert node.publishers == []
@@ -27,10 +29,10 @@ def test_each_entity_is_destroyed_when_its_block_ends(session):
         with node.create_timer(1.0, lambda: None) as timer:
             assert node.timers == [timer]
         with node.create_service(AddTwoInts, "add", lambda req, res: res) as service:
-            assert node.services == [service]
+            assert node.services == [*own, service]
         with node.create_client(AddTwoInts, "add") as client:
             assert node.clients == [client]
-        assert (node.subscriptions, node.timers, node.services, node.clients) == ([], [], [], [])
+        assert (node.subscriptions, node.timers, node.services, node.clients) == ([], [], own, [])
     rclpy.create_node("scoped")  # the name is free again: the node was destroyed with its block
 
 

@@ -272,7 +272,16 @@ class ParameterStore:
         return list(self._values)
 
     def list_parameters(self, prefixes: Sequence[str] = (), depth: int = 0) -> ListParametersResult:
-        """Names under ``prefixes`` (all when empty) at most ``depth`` dots deep (0: any), and their prefixes."""
+        """Names under ``prefixes`` (all when empty) at most ``depth`` dots deep (0: any), and their prefixes.
+
+        Raises TypeError for ``prefixes`` that is not a sequence of str (a
+        lone str would be read letter by letter) or a ``depth`` not an int,
+        ValueError for a negative depth.
+        """
+        if isinstance(prefixes, str) or not all(isinstance(p, str) for p in prefixes):
+            raise TypeError(f"prefixes must be a list of str, got {prefixes!r}")
+        if not isinstance(depth, int):
+            raise TypeError(f"depth must be an int, got {depth!r}")
         if depth < 0:
             raise ValueError(f"depth must be >= 0, got {depth}")
         sep = PARAMETER_SEPARATOR_STRING

@@ -42,6 +42,7 @@ from actors.compat.rclpy.service import Service
 from actors.compat.rclpy.subscription import Subscription
 from actors.compat.rclpy.time_source import TimeSource
 from actors.compat.rclpy.timer import Rate, Timer
+from actors.compat.rclpy.type_description_service import TypeDescriptionService
 from actors.compat.rclpy.type_hash import TypeHash
 from actors.compat.rclpy.utilities import get_default_context
 from actors.errors import RosArgsError
@@ -210,6 +211,7 @@ class Node(NativeNode):
         session.call(build)
         state.time_source = TimeSource(node=self)
         state.time_source.attach_clock(state.clock)
+        self._type_description_service = TypeDescriptionService(self)
         context.track_node(self)
 
     def _callback_failed(self, error: BaseException) -> None:
