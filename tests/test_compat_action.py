@@ -362,3 +362,51 @@ def test_a_goal_is_held_until_its_result_expires(rclpy_session, serving, client)
         (3, 1, 0, 0),
         (0, 0, 3, 2),
     ]
+
+
+def _goal_request(first_byte: int) -> Any:
+    return Fibonacci.Impl.SendGoalService.Request(goal_id=UUID(uuid=bytes([first_byte, *range(15)])))
+
+
+def test_a_goal_is_answered_after_its_accepted_callback_has_run(rclpy_session):
+    # As rclpy's server, which answers and runs the accepted callback in one step: when the client
+    # sees the answer, the accepted callback has run, and an execute callback it started has
+    # published its first feedback.  (Server and client share one node and one executor here.)
+    node = rclpy.create_node("one_node")
+    executor = SingleThreadedExecutor()
+    events: list[Any] = []
+    send_goal = node.create_client(Fibonacci.Impl.SendGoalService, "/counting/_action/send_goal")
+    feedback_topic = "/counting/_action/feedback"
+    node.create_subscription(Fibonacci.Impl.FeedbackMessage, feedback_topic, lambda m: events.append("feedback"), 10)
+
+    def accepted(goal: ServerGoalHandle) -> None:
+        events.append(("accepted", goal.status))
+        if goal.request.order:
+            goal.execute()
+
+    def execute(goal: ServerGoalHandle) -> Fibonacci.Result:
+        goal.publish_feedback(Fibonacci.Feedback(sequence=[1]))
+        goal.succeed()
+        return Fibonacci.Result()
+
+    def goal_callback(goal: Any) -> GoalResponse:
+        return GoalResponse.REJECT if goal.order < 0 else GoalResponse.ACCEPT
+
+    ActionServer(node, Fibonacci, "counting", execute, goal_callback=goal_callback, handle_accepted_callback=accepted)
+    executing = _goal_request(1)
+    executing.goal.order = 3
+    sent = send_goal.call_async(executing)
+    rclpy.spin_until_future_complete(node, sent, executor)
+    assert sent.result().accepted
+    assert events == [("accepted", GoalStatus.STATUS_ACCEPTED), "feedback"]
+    events.clear()
+    deferred = send_goal.call_async(_goal_request(2))  # order 0: the accepted callback keeps it waiting
+    rclpy.spin_until_future_complete(node, deferred, executor)
+    assert deferred.result().accepted and events == [("accepted", GoalStatus.STATUS_ACCEPTED)]
+    events.clear()
+    refused = _goal_request(3)
+    refused.goal.order = -1
+    answer = send_goal.call_async(refused)
+    rclpy.spin_until_future_complete(node, answer, executor)
+    assert not answer.result().accepted and events == []
+    executor.shutdown()

@@ -5,11 +5,15 @@ goal, cancel and accepted callbacks are the overlay's *catchers*, which run on
 the runtime's thread and only queue the script's callback here, on this
 waitable of the node, in its callback group.  So the script's goal, cancel and
 accepted callbacks run while the node is spun, on the spinning thread or an
-executor's pool, as in rclpy; the native server waits for their answers.
+executor's pool, as in rclpy; the native server waits for their answers.  As
+in rclpy, a goal's accepted callback runs in the same step as its goal
+callback, right after the server took the goal and before the executor can
+hand the client its answer.
 
 An accepted goal's execute callback is a task of the node's executor
-(``executor.create_task``), as rclpy makes it: it runs outside every callback
-group, on a pool thread of a MultiThreadedExecutor, and may block there
+(``executor.create_task``), made as the goal is told to execute, as rclpy
+makes it: it runs outside every callback group, on a pool thread of a
+MultiThreadedExecutor, and may block there
 (``time.sleep`` between feedback messages) without holding anything else up.
 The native goal's own task waits for that task and takes what it returns as
 the result.  Everything a goal handle does from a script thread (``execute``,
@@ -88,8 +92,7 @@ class ServerGoalHandle(GoalHandle):
         Raises RCLError for a goal that has ended or already executes.
         """
         callback = self._server._execute_callback if execute_callback is None else execute_callback
-        executor = self._server._node.executor
-        self._transition(self._native.execute, partial(self._server._executing, self, callback, executor))
+        self._transition(self._server._execute, self, callback)
 
     def publish_feedback(self, feedback: Any) -> None:
         """Publish ``feedback`` (the action's Feedback) for this goal; TypeError for anything else."""
@@ -172,6 +175,8 @@ class ActionServer(ActionWork):
         self.register_cancel_callback(cancel_callback)
         self.register_execute_callback(execute_callback)
         self._handles: dict[bytes, ServerGoalHandle] = {}
+        # Goals (by id of the request's goal) whose callback said ACCEPT, awaiting the server's word.
+        self._accepting: dict[int, asyncio.Future[NativeGoal | None]] = {}
         self._logger = node.get_logger().get_child("action_server")
         self._native: NativeServer
         self._session.call(self._build, action_name, result_timeout)
@@ -209,9 +214,14 @@ class ActionServer(ActionWork):
     # -- the catchers: on the runtime's thread, they queue the script's callbacks here -------
 
     async def _catch_goal(self, goal: Any) -> GoalResponse:
-        answer: asyncio.Future[GoalResponse] = asyncio.get_running_loop().create_future()
+        loop = asyncio.get_running_loop()
+        answer: asyncio.Future[GoalResponse] = loop.create_future()
         self._queue(partial(self._ask, self._goal_callback, goal, answer))
-        return await answer
+        try:
+            return await answer
+        finally:
+            # Runs once the native server has decided on the goal (it does so as this returns).
+            loop.call_soon(self._refused, goal)
 
     async def _catch_cancel(self, native: NativeGoal) -> CancelResponse:
         answer: asyncio.Future[CancelResponse] = asyncio.get_running_loop().create_future()
@@ -219,7 +229,25 @@ class ActionServer(ActionWork):
         return await answer
 
     def _catch_accepted(self, native: NativeGoal) -> None:
-        self._queue(partial(self._accepted, self._handle(native)))
+        acceptance = self._accepting.pop(id(native.request), None)
+        if acceptance is None:
+            self._queue(partial(self._accepted, self._handle(native)))
+        elif not acceptance.done():
+            acceptance.set_result(native)
+
+    def _refused(self, goal: Any) -> None:
+        # A goal its callback accepted that the server did not take (it was being destroyed).
+        if not any(native.request is goal for native in self._native.goals.values()):
+            acceptance = self._accepting.pop(id(goal), None)
+            if acceptance is not None and not acceptance.done():
+                acceptance.set_result(None)
+
+    async def _accept(self, goal: Any, answer: asyncio.Future[Any]) -> NativeGoal | None:
+        # On the loop: answer ACCEPT, and hand back the goal the native server then accepts.
+        acceptance: asyncio.Future[NativeGoal | None] = asyncio.get_running_loop().create_future()
+        self._accepting[id(goal)] = acceptance
+        _settle(answer, GoalResponse.ACCEPT, None)
+        return await acceptance
 
     def _handle(self, native: NativeGoal) -> ServerGoalHandle:
         # The one handle of a goal (scripts compare them); forgotten with the native goal.
@@ -233,17 +261,26 @@ class ActionServer(ActionWork):
             return handle
 
     async def _executing_default(self, native: NativeGoal) -> Any:
-        return await self._executing(self._handle(native), self._execute_callback, self._node.executor, native)
+        return await self._finished(self._start(self._handle(native), self._execute_callback))
 
-    async def _executing(
-        self, handle: ServerGoalHandle, callback: Callable[..., Any], executor: Any, native: NativeGoal
-    ) -> Any:
-        # The native goal's task: the script's execute callback runs as a task of the node's executor.
+    def _execute(self, handle: ServerGoalHandle, callback: Callable[..., Any]) -> None:
+        # With the turn held: EXECUTING, and (as rclpy's execute) the execute callback's task of the
+        # node's executor made at once, so the executor's next look finds it; the native goal's own
+        # task, which starts later, waits for it.
+        started: list[Task[Any] | None] = []
+        handle._native.execute(lambda native: self._finished(started[0]))
+        started.append(self._start(handle, callback))
+
+    def _start(self, handle: ServerGoalHandle, callback: Callable[..., Any]) -> Task[Any] | None:
+        executor = self._node.executor
+        return None if executor is None else executor.create_task(self._execute_goal, callback, handle)
+
+    async def _finished(self, task: Task[Any] | None) -> Any:
+        # The native goal's task: the script's execute callback's outcome is the goal's result.
         loop = asyncio.get_running_loop()
         done: asyncio.Future[Any] = loop.create_future()
-        if executor is None:  # as rclpy: nobody spins the node, so nothing executes the goal
+        if task is None:  # as rclpy: nobody spins the node, so nothing executes the goal
             return await done
-        task: Task[Any] = executor.create_task(self._execute_goal, callback, handle)
         task._add_resumer(lambda: _settle_threadsafe(loop, done, task))
         result, error = await done
         if error is not None:
@@ -270,6 +307,13 @@ class ActionServer(ActionWork):
         if callback is self._goal_callback and not isinstance(response, GoalResponse):
             self._logger.warning("Goal request callback did not return a GoalResponse type. Rejecting goal.")
             response = GoalResponse.REJECT
+        if callback is self._goal_callback and response is GoalResponse.ACCEPT and self._session.running:
+            # As rclpy's server, which sends the answer and awaits the accepted callback in one task:
+            # the accepted callback has run (to its first await) before the client can see the answer.
+            native = self._session.block(self._accept, request, answer)
+            if native is not None:
+                await await_or_execute(self._handle_accepted_callback, self._handle(native))
+            return
         self._settle(answer, response, None)
 
     async def _accepted(self, handle: ServerGoalHandle) -> None:
