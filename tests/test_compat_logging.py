@@ -36,6 +36,24 @@ def test_the_root_logger_is_what_others_fall_back_to():
         nodes.setLevel(before)
 
 
+def test_the_root_logger_set_to_unset_lets_every_record_through():
+    # rcutils: a named logger at UNSET asks its parent, the root at UNSET has threshold 0.
+    root = rclpy_logging._root_logger
+    nodes = logging.getLogger("actors.node")
+    before = nodes.level
+    try:
+        root.set_level(LoggingSeverity.UNSET)
+        assert root.get_effective_level() == LoggingSeverity.UNSET
+        leaf = rclpy_logging.get_logger("unset_leaf")
+        assert leaf.get_effective_level() == LoggingSeverity.UNSET
+        assert leaf.is_enabled_for(LoggingSeverity.DEBUG)
+        root.set_level(LoggingSeverity.WARN)
+        assert (root.get_effective_level(), leaf.get_effective_level()) == (LoggingSeverity.WARN,) * 2
+        assert not leaf.is_enabled_for(LoggingSeverity.INFO)
+    finally:
+        nodes.setLevel(before)
+
+
 def test_a_call_site_keeps_its_severity_name_and_options():
     logger = rclpy_logging.get_logger("strict_sites")
 

@@ -58,6 +58,12 @@ def _effective(logger: logging.Logger) -> int:
     return ours.level if ours.level != logging.NOTSET else LoggingSeverity.INFO
 
 
+# rcutils' root logger set to UNSET lets every record through (its threshold is then 0, where a
+# named logger's UNSET means "ask the parent"); Python's level 0 means the latter, so the root
+# holds this level, below DEBUG, instead, and reads it back as UNSET.
+_ROOT_UNSET = 1
+
+
 class RcutilsLogger(NodeLogger):
     """A logger as rclpy's: ``log(message, severity, **options)`` and the severity methods."""
 
@@ -66,8 +72,10 @@ class RcutilsLogger(NodeLogger):
     _internal_files = NodeLogger._internal_files | {__file__}
 
     def get_effective_level(self) -> LoggingSeverity:
-        """The threshold in force: this logger's, the nearest parent's, else actors' own level, else INFO."""
-        return LoggingSeverity(_effective(self._logger))
+        """The threshold in force: this logger's, the nearest parent's, else actors' own level, else INFO
+        (UNSET when that is the root logger's, set to UNSET)."""
+        level = _effective(self._logger)
+        return LoggingSeverity.UNSET if level == _ROOT_UNSET else LoggingSeverity(level)
 
     def is_enabled_for(self, level: int) -> bool:
         """Whether a record of ``level`` would be emitted."""
@@ -99,6 +107,12 @@ class _RootLogger(RcutilsLogger):
         super().__init__("_", Clock().now_ns)
         self.name = ""
         self._logger = logging.getLogger(_NODES)
+
+    def set_level(self, level: int | str) -> None:
+        """Set the level every logger without one of its own follows; UNSET lets every record through."""
+        super().set_level(level)
+        if self._logger.level == logging.NOTSET:
+            self._logger.setLevel(_ROOT_UNSET)
 
 
 _root_logger: RcutilsLogger = _RootLogger()
