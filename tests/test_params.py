@@ -398,6 +398,12 @@ async def test_reading_by_prefix_describing_and_listing():
         with pytest.raises(ParameterAlreadyDeclaredException):
             node.declare_parameters("arm", [("fresh", 1), ("speed", 1.0)])
         assert not node.has_parameter("arm.fresh")  # none declared when one is taken
+        # A name given twice in one call: declared once, with its last entry (where rclpy ends too).
+        twice = node.declare_parameters(
+            "arm", [("grip", 1), ("reach", 0.8), ("grip", 2, ParameterDescriptor(description="later"))]
+        )
+        assert [(p.name, p.value) for p in twice] == [("arm.grip", 2), ("arm.reach", 0.8), ("arm.grip", 2)]
+        assert node.describe_parameter("arm.grip").description == "later"
 
 
 async def test_set_descriptor_keeps_a_fitting_value_or_takes_the_alternative():

@@ -193,7 +193,12 @@ class ParameterStore:
     def declare_many(
         self, namespace: str, parameters: Sequence[tuple[Any, ...]], ignore_override: bool = False
     ) -> list[Parameter]:
-        """Declare ``(name[, value[, descriptor]])`` tuples under ``namespace.``, each in turn."""
+        """Declare ``(name[, value[, descriptor]])`` tuples under ``namespace.``, each in turn.
+
+        A name given twice is declared once, with its last entry's value and
+        descriptor (rclpy ends there too); the list returned has one
+        Parameter per entry.
+        """
         for index, entry in enumerate(parameters):
             if not isinstance(entry, tuple) or not 1 <= len(entry) <= 3:
                 raise TypeError(f"parameters[{index}] must be (name[, value[, descriptor]]), got {entry!r}")
@@ -201,15 +206,17 @@ class ParameterStore:
         already = [n for n in names if n in self._values]
         if already:
             raise ParameterAlreadyDeclaredException(f"parameters {already} of {self._core.fqn} are already declared")
-        return [
-            self.declare(
+        last = dict(zip(names, parameters))
+        declared = {
+            name: self.declare(
                 name,
                 entry[1] if len(entry) > 1 else None,
                 entry[2] if len(entry) > 2 else None,
                 ignore_override=ignore_override,
             )
-            for name, entry in zip(names, parameters)
-        ]
+            for name, entry in last.items()
+        }
+        return [declared[name] for name in names]
 
     def undeclare(self, name: str) -> None:
         """Forget ``name``; ParameterNotDeclaredException, ParameterImmutableException if read-only."""
