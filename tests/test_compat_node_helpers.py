@@ -7,6 +7,7 @@ import pytest
 import actors.compat.rclpy as rclpy
 from actors.compat.rclpy.exceptions import InvalidHandle
 from interfaces.example_interfaces.srv import AddTwoInts
+from interfaces.rcl_interfaces.msg import ParameterEvent
 from interfaces.std_msgs.msg import String
 
 
@@ -19,9 +20,11 @@ def test_each_entity_is_destroyed_when_its_block_ends(session):
     with rclpy.create_node("scoped") as node:
         own = node.services  # ~/get_type_description, as every rclpy node has it
         assert [s.service_name for s in own] == ["/scoped/get_type_description"]
+        (events,) = node.publishers  # and the publisher of its parameter changes
+        assert events.topic_name == "/parameter_events"
         with node.create_publisher(String, "said", 10) as pub:
-            assert node.publishers == [pub]
-        assert node.publishers == []
+            assert node.publishers == [events, pub]
+        assert node.publishers == [events]
         with pytest.raises(InvalidHandle):
             pub.publish(String(data="too late"))
         with node.create_subscription(String, "said", lambda msg: None, 10) as sub:
@@ -33,6 +36,15 @@ def test_each_entity_is_destroyed_when_its_block_ends(session):
         with node.create_client(AddTwoInts, "add") as client:
             assert node.clients == [client]
         assert (node.subscriptions, node.timers, node.services, node.clients) == ([], [], own, [])
+        assert node.destroy_publisher(events) and node.publishers == []
+        with pytest.raises(InvalidHandle):
+            events.publish(ParameterEvent())
+        # The runtime's publisher, which every node shares, still announces parameter changes.
+        heard: list[ParameterEvent] = []
+        node.create_subscription(ParameterEvent, "/parameter_events", heard.append, 10)
+        node.declare_parameter("announced", 1)
+        rclpy.spin_once(node, timeout_sec=1.0)
+        assert [p.name for event in heard for p in event.new_parameters] == ["announced"]
     rclpy.create_node("scoped")  # the name is free again: the node was destroyed with its block
 
 

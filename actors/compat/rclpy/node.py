@@ -201,6 +201,9 @@ class Node(NativeNode):
                 )
             child.core = self._core
             self._core.answers_own_calls = True  # its executor answers, as rclpy's (see NodeCore)
+            # rclpy's node lists the publisher of its parameter changes among its publishers; here it
+            # is the runtime's, which every node shares (destroying it only takes it off the list).
+            state.publishers.append(Publisher(self, self._core.parameter_events))
             native_logger = NativeNode.get_logger(self)
             # The node's own ROS clock on the runtime's time, which its time source can move to /clock.
             state.clock = ROSClock(session.loop)
@@ -549,7 +552,8 @@ class Node(NativeNode):
 
     def destroy_publisher(self, publisher: Any) -> bool:
         """Destroy ``publisher``; whether it was the node's."""
-        return self._destroy(self._rclpy.publishers, publisher, NativeNode.destroy_publisher)
+        shared = getattr(publisher, "_native", None) is self._core.parameter_events
+        return self._destroy(self._rclpy.publishers, publisher, None if shared else NativeNode.destroy_publisher)
 
     def destroy_subscription(self, subscription: Any) -> bool:
         """Destroy ``subscription``; whether it was the node's."""
