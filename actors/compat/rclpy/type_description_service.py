@@ -14,7 +14,7 @@ definition gives, those of the types it references, and with
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from actors.messages._fields import layout
 from actors.messages.typehash import type_description, type_hash
@@ -29,9 +29,6 @@ from interfaces.type_description_interfaces.msg import (
 )
 from interfaces.type_description_interfaces.srv import GetTypeDescription
 
-if TYPE_CHECKING:
-    from actors.compat.rclpy.node import Node
-
 __all__ = ["START_TYPE_DESCRIPTION_SERVICE_PARAM", "TypeDescriptionService"]
 
 START_TYPE_DESCRIPTION_SERVICE_PARAM = "start_type_description_service"
@@ -44,7 +41,7 @@ class TypeDescriptionService:
     service off, as rclpy does.
     """
 
-    def __init__(self, node: Node) -> None:
+    def __init__(self, node: Any) -> None:  # an rclpy Node (whose module imports this one)
         self._node = node
         self.service: Any = None
         if not node.has_parameter(START_TYPE_DESCRIPTION_SERVICE_PARAM):
