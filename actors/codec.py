@@ -24,7 +24,7 @@ import importlib
 import re
 import sys
 from array import array
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
 from pathlib import Path
 from types import ModuleType
 from typing import TYPE_CHECKING, Any, TypeVar, cast
@@ -442,6 +442,10 @@ def _MergingLoader() -> type:  # a class, made once yaml is imported
             mapping: dict[Any, Any] = {}
             for key_node, value_node in node.value:
                 key = self.construct_object(key_node, deep=True)
+                if not isinstance(key, Hashable):  # as SafeLoader says it: one YAMLError, not a TypeError
+                    raise yaml.constructor.ConstructorError(
+                        "while constructing a mapping", node.start_mark, "found unhashable key", key_node.start_mark
+                    )
                 value = self.construct_object(value_node, deep=True)
                 earlier = mapping.get(key)
                 if isinstance(earlier, dict) and isinstance(value, dict):

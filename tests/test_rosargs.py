@@ -191,6 +191,14 @@ def test_a_node_key_written_twice_keeps_both_entries(tmp_path):
     ]
 
 
+def test_a_params_file_with_an_unhashable_key_is_one_clear_error(tmp_path):
+    # Reading repeated keys as rcl does must not lose YAML's own refusal of a key that is a list.
+    path = tmp_path / "badkey.yaml"
+    path.write_text("/**:\n  ros__parameters:\n    [a, b]: 1\n")
+    with pytest.raises(RosArgsError, match="not valid YAML: found unhashable key"):
+        load_params_file(path)
+
+
 def test_params_files_and_rules_later_win(params_file):
     ros, _ = parse(["--ros-args", "-p", "speed:=9.0", "--params-file", str(params_file), "-p", "everyone:=3"])
     assert ros.for_node("talker", None).params["speed"] == 0.5
