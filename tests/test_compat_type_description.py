@@ -56,7 +56,9 @@ def test_a_topic_type_is_described_with_its_defaults_and_sources(session):
     assert fields["float64_value"] == (11, "1.125")
     assert answer.type_description.referenced_type_descriptions == []
     assert [(s.type_name, s.encoding) for s in answer.type_sources] == [("test_msgs/msg/Defaults", "msg")]
-    assert answer.type_sources[0].raw_file_contents.startswith("bool bool_value true\n")
+    text = answer.type_sources[0].raw_file_contents
+    assert text.startswith("bool bool_value true\n")
+    assert text.endswith("uint64 uint64_value 50000000")  # the file's last newline left out, as rcl gives it
 
 
 def test_nested_types_come_along_and_sources_only_when_asked(session):
@@ -89,6 +91,17 @@ def test_a_type_the_node_does_not_use_is_refused(session):
     answer = _ask(node, "test_msgs/msg/Defaults", type_hash(Defaults))
     assert not answer.successful
     assert answer.failure_reason == "Type not currently in use by this node"
+
+
+def test_a_hash_that_does_not_parse_is_refused_as_rcl_refuses_it(session, caplog):
+    node = rclpy.create_node("parser")
+    node.create_publisher(Defaults, "defaults", 1)
+    answer = _ask(node, "test_msgs/msg/Defaults", "garbage")
+    assert not answer.successful
+    assert answer.failure_reason == "Failed to parse type hash"
+    assert [(r.name, r.getMessage()) for r in caplog.records if r.levelname == "ERROR"] == [
+        ("actors.node.rcl", "Failed to parse type hash 'garbage'")
+    ]
 
 
 def test_the_switch_set_false_leaves_the_service_off(session):

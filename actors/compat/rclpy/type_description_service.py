@@ -13,9 +13,11 @@ definition gives, those of the types it references, and with
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 from typing import Any
 
+from actors.compat.rclpy.logging import get_logger
 from actors.messages._fields import layout
 from actors.messages.typehash import type_description, type_hash
 from actors.ros._param_services import ParameterServices
@@ -32,6 +34,7 @@ from interfaces.type_description_interfaces.srv import GetTypeDescription
 __all__ = ["START_TYPE_DESCRIPTION_SERVICE_PARAM", "TypeDescriptionService"]
 
 START_TYPE_DESCRIPTION_SERVICE_PARAM = "start_type_description_service"
+_HASH = re.compile(r"RIHS[0-9a-fA-F]{2}_[0-9a-fA-F]{64}")  # what rcl can parse (its version, then the hash)
 
 
 class TypeDescriptionService:
@@ -61,6 +64,11 @@ class TypeDescriptionService:
             self.service = node.create_service(GetTypeDescription, "~/get_type_description", self._answer)
 
     def _answer(self, request: Any, response: Any) -> Any:
+        if not _HASH.fullmatch(request.type_hash):
+            get_logger("rcl").error(f"Failed to parse type hash '{request.type_hash}'")
+            response.successful = False
+            response.failure_reason = "Failed to parse type hash"
+            return response
         found = next((t for t in self._types_in_use() if type_hash(t) == request.type_hash), None)
         if found is None:
             response.successful = False
@@ -77,7 +85,9 @@ class TypeDescriptionService:
             # (a service's request or an action's goal is part of its file, not one of its own).
             files = [found.__ros_type__, *sorted(name for name in classes if "/msg/" in name)]
             response.type_sources = [
-                TypeSource(type_name=name, encoding=kind, raw_file_contents=classes[name].__ros_definition__)
+                TypeSource(
+                    type_name=name, encoding=kind, raw_file_contents=classes[name].__ros_definition__.removesuffix("\n")
+                )
                 for name in dict.fromkeys(files)
                 for kind in [name.split("/")[1]]
             ]
