@@ -14,7 +14,7 @@ from actors import Node, Runtime, codec
 from actors.transport import Hub, Inlet, Outlet
 from actors.transport.zenoh.attachment import unpack
 from actors.transport.zenoh.handoff import Handoff, keep_thread_state
-from actors.transport.zenoh.link import Endpoint
+from actors.transport.zenoh.link import Endpoint, Link
 from actors.transport.zenoh.services import ServiceBridge, _Answer
 from actors.transport.zenoh.topics import TopicBridge, _Out
 from interfaces.example_interfaces.srv import AddTwoInts
@@ -215,3 +215,34 @@ def test_a_zenoh_thread_keeps_its_python_thread_state_from_one_callback_to_the_n
     finally:
         sender.close()
         receiver.close()
+
+
+def test_a_server_answers_before_its_token_tells_peers_it_is_there():
+    # A client may call as soon as it sees the server's token (wait_for_service returns then): the
+    # queryable must already be declared, as rmw_zenoh declares it first.
+    order: list[str] = []
+
+    class Liveliness:
+        def declare_token(self, key: str) -> str:
+            order.append("token" if "/SS/" in key else "node token")
+            return key
+
+    session = SimpleNamespace(
+        info=SimpleNamespace(zid=lambda: "0123456789abcdef"),
+        liveliness=Liveliness,
+        declare_queryable=lambda key, handler, **options: order.append("queryable"),
+    )
+    fake_zenoh = SimpleNamespace(
+        handlers=SimpleNamespace(Callback=lambda callback, indirect: callback),
+        Locality=SimpleNamespace(REMOTE=None),
+    )
+    hub = SimpleNamespace(loop=asyncio.new_event_loop())
+    logger = SimpleNamespace(warning=lambda *args: None)
+    link = Link(fake_zenoh, session, 0, hub, SimpleNamespace(put=None), lambda: 1, logger)  # type: ignore[arg-type]
+    bridge = ServiceBridge(link, table=None, discovery=None)  # type: ignore[arg-type]
+    server = SimpleNamespace(service_name="/add_two_ints", node=SimpleNamespace(fqn="/adder"), srv_type=AddTwoInts)
+    try:
+        bridge.add_service(server)  # type: ignore[arg-type]
+    finally:
+        hub.loop.close()
+    assert order == ["node token", "queryable", "token"]

@@ -17,6 +17,7 @@ from __future__ import annotations
 import asyncio
 import functools
 import heapq
+from collections.abc import Callable
 from typing import Any
 
 from actors import codec
@@ -93,8 +94,21 @@ class Link:
         self._next_id += 1
         return entity
 
-    def declare(self, fqn: str, kind: str, name: str, cls: type, qos: QoSSnapshot) -> Endpoint | None:
-        """Declare the token of an endpoint (``kind`` MP, MS, SS or SC); None for a non-ROS type."""
+    def declare(
+        self,
+        fqn: str,
+        kind: str,
+        name: str,
+        cls: type,
+        qos: QoSSnapshot,
+        ready: Callable[[Endpoint], object] | None = None,
+    ) -> Endpoint | None:
+        """Declare the token of an endpoint (``kind`` MP, MS, SS or SC); None for a non-ROS type.
+
+        ``ready(endpoint)`` runs before the token is declared: a peer that sees
+        the token may use what it announces at once (call a server), as
+        rmw_zenoh declares the queryable before the token.
+        """
         wire = wire_type(cls)
         if wire is None:
             return None
@@ -102,8 +116,11 @@ class Link:
         node_id = self._node_up(fqn)
         entity = self.next_id()
         key = endpoint_token(self.domain, self.zid, node_id, entity, kind, fqn, name, ros_type, hash_, qos)
-        token = self.session.liveliness().declare_token(key)
-        return Endpoint(fqn, entity, token, gid_of(key), data_key(self.domain, name, ros_type, hash_))
+        endpoint = Endpoint(fqn, entity, None, gid_of(key), data_key(self.domain, name, ros_type, hash_))
+        if ready is not None:
+            ready(endpoint)
+        endpoint.token = self.session.liveliness().declare_token(key)
+        return endpoint
 
     def withdraw(self, endpoint: Endpoint) -> None:
         """Undeclare an endpoint's token (and its node's, with the node's last endpoint)."""

@@ -123,10 +123,18 @@ class ServiceBridge:
         """Serve ``service`` to other processes; a stand-in of the same name gives way."""
         name = service.service_name
         self._forget_standin(name)
-        endpoint = self._link.declare(service.node.fqn, "SS", name, service.srv_type, _SERVICE_QOS)
-        if endpoint is None:
-            return
-        served = self._served[name] = _Served(service, endpoint)
+        self._link.declare(
+            service.node.fqn,
+            "SS",
+            name,
+            service.srv_type,
+            _SERVICE_QOS,
+            lambda endpoint: self._serve(service, endpoint),
+        )
+
+    def _serve(self, service: Service, endpoint: Endpoint) -> None:
+        # Before the token: a client that sees the server may call it at once.
+        served = self._served[service.service_name] = _Served(service, endpoint)
         zenoh, handoff, handle = self._link.zenoh, self._link.handoff, self._handle
         served.queryable = self._link.session.declare_queryable(
             endpoint.key,
