@@ -482,11 +482,14 @@ class Publisher:
         ValueError for a path that names no field of the message type.
         """
         trusted = frozenset(fields or ("",))
+        self._use(snapshotter(self.msg_type, trusted), checker(self.msg_type, trusted))
+
+    def _use(self, snapshot: Callable[[Any], Any], check: Callable[[Any], Any]) -> None:
+        """Copy and check each message with these from now on (the next publish wraps them for
+        the taps again, if any): the one way to change them once the publisher exists."""
         self._settle()
-        self._snapshot = snapshotter(self.msg_type, trusted)
-        self._check = checker(self.msg_type, trusted)
-        self._plain = self._snapshot, self._check
-        self._unfeed()  # the next publish wraps them for the taps again, if any
+        self._plain = self._snapshot, self._check = snapshot, check
+        self._unfeed()
 
     def get_subscription_count(self) -> int:
         """How many subscriptions this publisher feeds."""

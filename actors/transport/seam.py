@@ -152,8 +152,7 @@ class Inlet(Publisher):
     def __init__(self, hub: Hub, topic_name: str, msg_type: type[Any]) -> None:
         super().__init__(hub, topic_name, msg_type, _OFFERS_ALL)
         self._history = None
-        self._snapshot = _fresh
-        self._plain = _fresh, self._check  # what each rebuild of its path starts from
+        self._use(_fresh, self._check)
 
 
 class RemoteService(Service):
